@@ -1,0 +1,10 @@
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace vibra::cli {
+
+/// Each command adds its subcommand to the app; its callback does the work
+/// and throws UsageError / SolutionError / OutputError on failure.
+void add_solve_command(CLI::App& app);
+
+}  // namespace vibra::cli

@@ -1,0 +1,34 @@
+#include <csignal>
+#include <cstdio>
+
+#include "cli/commands.hpp"
+#include "core/error.hpp"
+#include "render/output_error.hpp"
+#include "render/stop_signal.hpp"
+
+int main(int argc, char** argv) {
+  // A closed pipe (`vibra solve ... | head`) shows up as a failed write that
+  // each command handles quietly, rather than killing us mid-buffer.
+  std::signal(SIGPIPE, SIG_IGN);
+  vibra::render::install_stop_handlers();
+
+  CLI::App app{"vibra: vibration ODEs from Linge & Langtangen chapter 1, solved, drawn, animated"};
+  app.require_subcommand(1);
+  vibra::cli::add_solve_command(app);
+  try {
+    app.parse(argc, argv);
+    return 0;
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::fprintf(stderr, "vibra: error: %s (see vibra --help)\n", e.what());
+    return 2;
+  } catch (const vibra::render::Interrupted& e) {
+    std::fprintf(stderr, "vibra: interrupted by signal %d; no partial output was kept\n", e.signal);
+    return 128 + e.signal;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "vibra: error: %s\n", e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,86 @@
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/model_help.hpp"
+#include "core/csv_writer.hpp"
+#include "core/error.hpp"
+#include "render/output_error.hpp"
+#include "render/stop_signal.hpp"
+#include "render/temporary_file.hpp"
+
+namespace vibra::cli {
+
+namespace {
+struct SolveOptions {
+  std::string model;
+  std::vector<std::string> settings;
+  std::string output;
+  long long every = 1;
+  bool help = false;
+};
+
+void run_solve(const SolveOptions& o) {
+  if (o.help || o.model.empty()) {
+    std::printf("Usage: vibra solve MODEL [--set KEY=VALUE]... [--output FILE] [--every K]\n\n%s",
+                o.model.empty() ? models_help().c_str() : model_keys_help(find_model(o.model)).c_str());
+    if (!o.help) throw UsageError("vibra solve needs a MODEL, e.g. vibra solve pendulum");
+    return;
+  }
+  if (o.every < 1) throw UsageError("--every must be >= 1");
+  Parameters p = model_settings(o.model, o.settings);
+  std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(p);
+
+  std::optional<render::TemporaryFile> file;
+  std::FILE* out = stdout;
+  if (!o.output.empty() && o.output != "-") {
+    file.emplace(o.output);
+    out = std::fopen(file->path().c_str(), "wb");
+    if (!out) throw render::OutputError("cannot write '" + o.output + "': choose a writable path");
+  }
+  auto close = [&] {
+    if (out != stdout) std::fclose(out), out = stdout;
+  };
+  try {
+    CsvWriter csv(out, trajectory->info().columns);
+    std::vector<double> row(trajectory->width());
+    do {
+      if (trajectory->index() % o.every == 0 || trajectory->done()) {
+        trajectory->row(row);
+        csv.write(row);
+      }
+      if ((trajectory->index() & 0xffff) == 0) render::throw_if_stop_requested();
+    } while (trajectory->advance());
+    if (!csv.flush()) {
+      if (!file) return;  // stdout closed by the reader (e.g. `| head`): end quietly
+      throw render::OutputError("writing '" + o.output + "' failed (disk full?): free space or choose another path");
+    }
+    if (file) {
+      if (std::fclose(out) != 0)
+        throw render::OutputError("writing '" + o.output + "' failed (disk full?): free space or choose another path");
+      out = stdout;
+      file->commit();
+    }
+  } catch (...) {
+    close();
+    throw;
+  }
+}
+}  // namespace
+
+void add_solve_command(CLI::App& app) {
+  auto options = std::make_shared<SolveOptions>();
+  CLI::App* cmd = app.add_subcommand("solve", "Solve a model and print its trajectory as CSV");
+  cmd->set_help_flag();  // our own help lists the model's keys
+  cmd->add_flag("-h,--help", options->help, "List models, or a model's keys with units and defaults");
+  cmd->add_option("MODEL", options->model, "Model name (vibra solve --help lists them)");
+  cmd->add_option("--set", options->settings, "KEY=VALUE, repeatable (vibra solve MODEL --help lists keys)")
+      ->allow_extra_args(false);
+  cmd->add_option("-o,--output", options->output, "CSV file (default: standard output)");
+  cmd->add_option("--every", options->every, "Write every K-th step (the last step is always written)");
+  cmd->callback([options] { run_solve(*options); });
+}
+
+}  // namespace vibra::cli

@@ -1,0 +1,28 @@
+#pragma once
+#include <cstdio>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace vibra {
+
+/// Writes rows of doubles as CSV in the shortest form that reads back to the
+/// same double (std::to_chars), through one large buffer.
+class CsvWriter {
+ public:
+  /// Writes the header line. `out` stays owned by the caller.
+  CsvWriter(std::FILE* out, const std::vector<std::string>& columns);
+  ~CsvWriter();
+  void write(std::span<const double> row);
+  /// Flushes; returns false if any write failed (disk full, closed pipe).
+  bool flush();
+
+ private:
+  void drain();
+  std::FILE* out_;
+  std::vector<char> buffer_;
+  size_t used_ = 0;
+  bool failed_ = false;
+};
+
+}  // namespace vibra

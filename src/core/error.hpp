@@ -1,0 +1,20 @@
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace vibra {
+
+/// Bad input from the user (unknown key, malformed value, dt above the
+/// stability limit...). The message is one line naming the problem and the
+/// fix; the CLI prints it and exits with code 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// The solution became non-finite or an implicit step did not converge.
+/// The message names the step and time; the CLI exits with code 2.
+struct SolutionError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace vibra

@@ -1,0 +1,57 @@
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/models/model.hpp"
+
+namespace vibra {
+
+// The elastic pendulum (1.132)-(1.148), scaled: pivot at (0, 1), equilibrium
+// at the origin, beta = L0 / (L0 + m g / k).
+ModelDefinition elastic_pendulum_model() {
+  ModelDefinition m;
+  m.name = "elastic-pendulum";
+  m.summary = "pendulum on an elastic wire (1.148), scaled, with optional air drag (Exercise 1.27)";
+  m.keys = {
+      {"beta", ValueKind::number, "0.9", "", "L0/(L0 + mg/k), 0 < beta < 1 (beta -> 1 is a rigid wire)", {}, {}},
+      {"Theta", ValueKind::angle, "30", "deg", "initial angle (suffix rad for radians)", {}, {}},
+      {"eps", ValueKind::number, "0", "", "initial extra stretch of the wire", {}, {}},
+      {"gamma", ValueKind::number, "0", "", "scaled air drag L0 rho C_D pi R^2 / (2 m)", {}, {}},
+  };
+  m.columns = {"t", "x", "y", "vx", "vy", "theta"};
+  m.time_defaults = {"rk4", "60", "10"};
+  m.build = [columns = m.columns, name = m.name](const Parameters& p) -> std::unique_ptr<Trajectory> {
+    const double beta = p.positive("beta"), Theta = p.angle("Theta"), eps = p.number("eps"), gamma = p.number("gamma");
+    if (beta >= 1) throw UsageError("beta must be < 1 (beta = 1 is the rigid wire: use model pendulum)");
+    if (gamma < 0) throw UsageError("gamma must be >= 0");
+    if (eps <= -1) throw UsageError("eps must be > -1 (the wire cannot have negative length)");
+    const double pendulum_w = std::sqrt(beta), spring_w = std::sqrt(beta / (1 - beta));
+
+    TrajectoryInfo info;
+    info.columns = columns;
+    info.mesh = resolve_time_mesh(p, 2 * M_PI / pendulum_w, std::max(pendulum_w, spring_w));
+    reject_adjusted_scheme(info.mesh, name);
+    info.amplitude_bound = (1 + std::abs(eps)) * std::abs(std::sin(Theta)) + std::abs(eps);
+
+    auto system = std::make_shared<SecondOrderSystem<2>>();
+    system->force = [beta](const Vec<2>& u, double) -> Vec<2> {
+      const double x = u[0], y = u[1];
+      const double L = std::hypot(x, y - 1);
+      // (1 - beta/L)/(1 - beta) = (L - 1)/(L (1 - beta)) + 1/L, with
+      // L - 1 = (x^2 + y^2 - 2y)/(L + 1) free of cancellation as beta -> 1.
+      const double stretch = (x * x + y * y - 2 * y) / (L + 1);
+      const double factor = beta * (stretch / (L * (1 - beta)) + 1 / L);
+      return Vec<2>(-factor * x, -factor * (y - 1) - beta);
+    };
+    system->damping = gamma > 0 ? Damping::quadratic : Damping::none;
+    system->damping_per_mass = gamma / beta;
+    const Vec<2> u0((1 + eps) * std::sin(Theta), 1 - (1 + eps) * std::cos(Theta));
+    return std::make_unique<SecondOrderTrajectory<2>>(
+        system, u0, Vec<2>::Zero(), info, [](const Sample<2>& s, std::span<double> out) {
+          out[0] = s.t, out[1] = s.u[0], out[2] = s.u[1], out[3] = s.v[0], out[4] = s.v[1];
+          out[5] = std::atan(s.u[0] / (1 - s.u[1]));
+        });
+  };
+  return m;
+}
+
+}  // namespace vibra

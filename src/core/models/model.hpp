@@ -1,0 +1,41 @@
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/parameters.hpp"
+#include "core/time_mesh.hpp"
+#include "core/trajectory.hpp"
+
+namespace vibra {
+
+/// A model of the chapter as the command line sees it: its keys with their
+/// defaults and units, its output columns, and how to build its trajectory.
+struct ModelDefinition {
+  std::string name;
+  std::string summary;
+  std::vector<KeySpec> keys;  ///< model keys; the time keys are added by the registry
+  std::vector<std::string> columns;
+  TimeDefaults time_defaults;
+  std::function<std::unique_ptr<Trajectory>(const Parameters&)> build;
+};
+
+/// Every model, in the order `--help` lists them.
+const std::vector<ModelDefinition>& all_models();
+/// Throws UsageError naming the valid models (and the closest one).
+const ModelDefinition& find_model(const std::string& name);
+/// Empty settings for a model: its keys plus the time keys.
+Parameters model_parameters(const ModelDefinition&);
+
+/// Throws UsageError when a model other than `undamped` is asked for centered-adjusted.
+void reject_adjusted_scheme(const TimeMesh&, const std::string& model);
+
+ModelDefinition undamped_model();
+ModelDefinition vibration_model();
+ModelDefinition pendulum_model();
+ModelDefinition physical_pendulum_model();
+ModelDefinition elastic_pendulum_model();
+ModelDefinition two_body_model();
+
+}  // namespace vibra

@@ -1,0 +1,32 @@
+#include "core/error.hpp"
+#include "core/models/model.hpp"
+
+namespace vibra {
+
+const std::vector<ModelDefinition>& all_models() {
+  static const std::vector<ModelDefinition> models = {undamped_model(),          vibration_model(),
+                                                      pendulum_model(),          physical_pendulum_model(),
+                                                      elastic_pendulum_model(), two_body_model()};
+  return models;
+}
+
+const ModelDefinition& find_model(const std::string& name) {
+  std::vector<std::string> names;
+  for (const auto& model : all_models()) {
+    if (model.name == name) return model;
+    names.push_back(model.name);
+  }
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  std::string near = closest_match(name, names);
+  throw UsageError("unknown model '" + name + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+                   ": choose one of " + list);
+}
+
+Parameters model_parameters(const ModelDefinition& model) {
+  std::vector<KeySpec> keys = model.keys;
+  for (auto& key : time_keys(model.time_defaults)) keys.push_back(std::move(key));
+  return Parameters("model " + model.name, std::move(keys));
+}
+
+}  // namespace vibra

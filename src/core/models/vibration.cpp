@@ -1,0 +1,50 @@
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/models/model.hpp"
+
+namespace vibra {
+
+// m u'' + f(u') + s(u) = F(t) (1.71), with s and F typed as formulas.
+ModelDefinition vibration_model() {
+  ModelDefinition m;
+  m.name = "vibration";
+  m.summary = "m u'' + f(u') + s(u) = F(t), the generalized model (1.71)";
+  m.keys = {
+      {"m", ValueKind::number, "1", "mass", "mass", {}, {}},
+      {"b", ValueKind::number, "0", "mass/time or mass/length", "damping coefficient", {}, {}},
+      {"damping", ValueKind::choice, "linear", "", "damping law f(u'): b u' (linear) or b |u'| u' (quadratic)",
+       {"none", "linear", "quadratic"}, {}},
+      {"s", ValueKind::formula, "u", "force", "restoring force s(u), a formula in u", {}, {"u"}},
+      {"F", ValueKind::formula, "0", "force", "external force F(t), a formula in t", {}, {"t"}},
+      {"I", ValueKind::number, "1", "length", "initial displacement u(0)", {}, {}},
+      {"V", ValueKind::number, "0", "length/time", "initial velocity u'(0)", {}, {}},
+  };
+  m.columns = {"t", "u", "v"};
+  m.time_defaults = {"centered", "40", "10"};
+  m.build = [columns = m.columns, name = m.name](const Parameters& p) -> std::unique_ptr<Trajectory> {
+    const double mass = p.positive("m"), b = p.number("b"), I = p.number("I"), V = p.number("V");
+    if (b < 0) throw UsageError("b=" + p.text("b") + " must be >= 0 (negative damping feeds energy in)");
+    const Expression s = p.formula("s"), F = p.formula("F");
+    // Small oscillations about u = 0 have w^2 = s'(0)/m.
+    const double h = 1e-6, stiffness = (s(h) - s(-h)) / (2 * h);
+    const double w = stiffness > 0 && std::isfinite(stiffness) ? std::sqrt(stiffness / mass) : 0;
+
+    TrajectoryInfo info;
+    info.columns = columns;
+    info.mesh = resolve_time_mesh(p, w > 0 ? 2 * M_PI / w : 0, w);
+    reject_adjusted_scheme(info.mesh, name);
+    auto system = std::make_shared<SecondOrderSystem<1>>();
+    system->force = [s, F, mass](const Vec<1>& u, double t) -> Vec<1> { return Vec<1>((F(t) - s(u[0])) / mass); };
+    const std::string law = p.choice("damping");
+    system->damping = b == 0 || law == "none" ? Damping::none : law == "linear" ? Damping::linear : Damping::quadratic;
+    system->damping_per_mass = b / mass;
+    return std::make_unique<SecondOrderTrajectory<1>>(
+        system, Vec<1>(I), Vec<1>(V), info, [](const Sample<1>& x, std::span<double> out) {
+          out[0] = x.t, out[1] = x.u[0], out[2] = x.v[0];
+        });
+  };
+  return m;
+}
+
+}  // namespace vibra

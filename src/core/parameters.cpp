@@ -1,0 +1,133 @@
+#include "core/parameters.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace vibra {
+
+namespace {
+std::string trim(std::string_view s) {
+  auto first = s.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return "";
+  auto last = s.find_last_not_of(" \t");
+  return std::string(s.substr(first, last - first + 1));
+}
+
+size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      size_t above = row[j];
+      bool same = std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+}  // namespace
+
+std::string closest_match(std::string_view word, const std::vector<std::string>& candidates) {
+  std::string best;
+  size_t best_distance = std::max<size_t>(1, word.size() / 3) + 1;  // accept at most this many edits, minus one
+  for (const auto& candidate : candidates) {
+    size_t d = edit_distance(word, candidate);
+    if (d < best_distance) best_distance = d, best = candidate;
+  }
+  return best;
+}
+
+Parameters::Parameters(std::string owner, std::vector<KeySpec> specs)
+    : owner_(std::move(owner)), specs_(std::move(specs)) {}
+
+const KeySpec& Parameters::spec(const std::string& key) const {
+  for (const auto& s : specs_)
+    if (s.name == key) return s;
+  std::vector<std::string> names;
+  for (const auto& s : specs_) names.push_back(s.name);
+  std::string near = closest_match(key, names);
+  throw UsageError("unknown key '" + key + "' for " + owner_ +
+                   (near.empty() ? "" : ": did you mean '" + near + "'?") + " (--help lists the keys)");
+}
+
+void Parameters::assign(std::string_view assignment) {
+  auto eq = assignment.find('=');
+  if (eq == std::string_view::npos || trim(assignment.substr(0, eq)).empty())
+    throw UsageError("'--set " + std::string(assignment) + "' is not KEY=VALUE: write e.g. --set dt=0.05");
+  set(trim(assignment.substr(0, eq)), trim(assignment.substr(eq + 1)));
+}
+
+void Parameters::set(const std::string& key, const std::string& value) {
+  const KeySpec& s = spec(key);
+  if (value.empty()) throw UsageError("empty value for " + key + ": write " + key + "=VALUE");
+  if (s.kind == ValueKind::choice && std::find(s.choices.begin(), s.choices.end(), value) == s.choices.end()) {
+    std::string list;
+    for (const auto& c : s.choices) list += (list.empty() ? "" : ", ") + c;
+    throw UsageError("'" + value + "' is not a valid " + key + " for " + owner_ + ": choose one of " + list);
+  }
+  values_[key] = value;
+}
+
+bool Parameters::given(const std::string& key) const {
+  spec(key);
+  return values_.count(key) != 0;
+}
+
+bool Parameters::has_value(const std::string& key) const { return given(key) || !spec(key).default_value.empty(); }
+
+std::string Parameters::text(const std::string& key) const {
+  const KeySpec& s = spec(key);
+  auto it = values_.find(key);
+  if (it != values_.end()) return it->second;
+  if (s.default_value.empty()) throw UsageError(owner_ + " needs a value for " + key + ": add --set " + key + "=VALUE");
+  return s.default_value;
+}
+
+double Parameters::number(const std::string& key) const {
+  double value = evaluate_constant(key, text(key));
+  if (std::isinf(value)) throw UsageError(key + " must be finite, not " + text(key));
+  return value;
+}
+
+double Parameters::positive(const std::string& key, bool allow_inf) const {
+  double value = evaluate_constant(key, text(key));
+  if (!(value > 0) || (!allow_inf && std::isinf(value)))
+    throw UsageError(key + "=" + text(key) + " must be a positive" + (allow_inf ? "" : " finite") + " number");
+  return value;
+}
+
+double Parameters::angle(const std::string& key) const {
+  std::string t = text(key);
+  double scale = M_PI / 180;
+  for (auto [suffix, factor] : {std::pair{"rad", 1.0}, std::pair{"deg", M_PI / 180}}) {
+    std::string_view sv(t), sx(suffix);
+    if (sv.size() > sx.size() && sv.substr(sv.size() - sx.size()) == sx) {
+      t = trim(sv.substr(0, sv.size() - sx.size()));
+      scale = factor;
+      break;
+    }
+  }
+  double value = evaluate_constant(key, t);
+  if (!std::isfinite(value)) throw UsageError(key + " must be a finite angle (degrees, or radians with a rad suffix)");
+  return value * scale;
+}
+
+Expression Parameters::formula(const std::string& key) const { return Expression(key, text(key), spec(key).variables); }
+
+std::string Parameters::choice(const std::string& key) const { return text(key); }
+
+std::vector<std::string> Parameters::given_assignments() const {
+  std::vector<std::string> out;
+  for (const auto& s : specs_) {
+    auto it = values_.find(s.name);
+    if (it != values_.end()) out.push_back(s.name + "=" + it->second);
+  }
+  return out;
+}
+
+}  // namespace vibra

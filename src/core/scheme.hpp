@@ -1,0 +1,79 @@
+#pragma once
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "core/schemes/centered.hpp"
+#include "core/schemes/euler_cromer.hpp"
+#include "core/schemes/pefrl.hpp"
+#include "core/schemes/runge_kutta.hpp"
+#include "core/schemes/staggered.hpp"
+#include "core/schemes/theta_method.hpp"
+#include "core/schemes/velocity_verlet.hpp"
+
+namespace vibra {
+
+enum class Scheme {
+  centered,
+  centered_adjusted,  ///< centered with w (1 - w^2 dt^2/24): 4th order, `undamped` only
+  backward_damping,   ///< centered with backward-difference damping (Problem 1.20)
+  euler_cromer,
+  euler_cromer_half,  ///< Euler-Cromer with the half-step start
+  staggered,
+  velocity_verlet,
+  pefrl,
+  rk2,
+  rk4,
+  forward_euler,
+  backward_euler,
+  crank_nicolson,
+};
+
+struct SchemeInfo {
+  Scheme scheme;
+  std::string_view name;     ///< as typed on the command line
+  int order;                 ///< theoretical convergence rate for smooth problems
+  std::string_view summary;
+};
+
+/// Every scheme, in the order `--help` lists them.
+const std::vector<SchemeInfo>& all_schemes();
+const SchemeInfo& scheme_info(Scheme);
+/// Throws UsageError naming the valid schemes.
+Scheme parse_scheme(std::string_view name);
+
+/// Largest stable dt for a problem whose fastest small oscillation has angular
+/// frequency w, or 0 when the scheme has no such limit (implicit schemes;
+/// Forward Euler and RK2, which grow slowly for every dt).
+double stability_limit(Scheme, double w);
+
+template <int D>
+using AnyStepper = std::variant<Centered<D>, EulerCromer<D>, Staggered<D>, VelocityVerlet<D>, Pefrl<D>,
+                                ForwardEuler<D>, RungeKutta2<D>, RungeKutta4<D>, ThetaMethod<D>>;
+
+/// The stepper for `scheme`, starting at u(0) = u0, v(0) = v0. The system must
+/// outlive the stepper. `centered_adjusted` must already be applied to the
+/// system by the model (it changes w); here it is the centered scheme.
+template <int D>
+AnyStepper<D> make_stepper(Scheme scheme, const SecondOrderSystem<D>& system, const Vec<D>& u0,
+                           const Vec<D>& v0, double dt) {
+  switch (scheme) {
+    case Scheme::centered:
+    case Scheme::centered_adjusted: return Centered<D>(system, u0, v0, dt);
+    case Scheme::backward_damping: return Centered<D>(system, u0, v0, dt, true);
+    case Scheme::euler_cromer: return EulerCromer<D>(system, u0, v0, dt);
+    case Scheme::euler_cromer_half: return EulerCromer<D>(system, u0, v0, dt, true);
+    case Scheme::staggered: return Staggered<D>(system, u0, v0, dt);
+    case Scheme::velocity_verlet: return VelocityVerlet<D>(system, u0, v0, dt);
+    case Scheme::pefrl: return Pefrl<D>(system, u0, v0, dt);
+    case Scheme::rk2: return RungeKutta2<D>(system, u0, v0, dt);
+    case Scheme::rk4: return RungeKutta4<D>(system, u0, v0, dt);
+    case Scheme::forward_euler: return ForwardEuler<D>(system, u0, v0, dt);
+    case Scheme::backward_euler: return ThetaMethod<D>(system, u0, v0, dt, 1.0);
+    case Scheme::crank_nicolson: return ThetaMethod<D>(system, u0, v0, dt, 0.5);
+  }
+  return Centered<D>(system, u0, v0, dt);
+}
+
+}  // namespace vibra

@@ -1,0 +1,76 @@
+#pragma once
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "core/error.hpp"
+#include "core/scheme.hpp"
+
+namespace vibra {
+
+/// The solution as a stream of samples t_0, t_1, ..., t_steps, one at a time,
+/// in constant memory: observers (CSV rows, frames, ASCII lines, analysis)
+/// consume it as it is computed. A non-finite value stops the stream with a
+/// SolutionError naming the step and time.
+template <int D>
+class SolutionStream {
+ public:
+  static constexpr long long unbounded = std::numeric_limits<long long>::max();
+
+  SolutionStream(AnyStepper<D> stepper, long long steps)
+      : stepper_(std::move(stepper)), steps_(steps) {
+    current_ = std::visit([](const auto& s) { return s.current(); }, stepper_);
+    check(current_);
+  }
+
+  const Sample<D>& current() const { return current_; }
+  long long index() const { return index_; }
+  long long steps() const { return steps_; }
+  bool done() const { return index_ >= steps_; }
+
+  /// Moves to the next sample; false (and no change) at the end.
+  bool advance() {
+    if (done()) return false;
+    current_ = std::visit([](auto& s) { s.step(); return s.current(); }, stepper_);
+    ++index_;
+    check(current_);
+    return true;
+  }
+
+  /// Calls `observer(sample)` for the current and every following sample
+  /// until the end or until the observer returns false. The scheme is chosen
+  /// once, outside the loop, so the loop is as tight as a hand-written one.
+  template <class Observer>
+  void for_each(Observer&& observer) {
+    std::visit(
+        [&](auto& s) {
+          if (!observer(current_)) return;
+          while (index_ < steps_) {
+            s.step();
+            current_ = s.current();
+            ++index_;
+            check(current_);
+            if (!observer(current_)) return;
+          }
+        },
+        stepper_);
+  }
+
+ private:
+  void check(const Sample<D>& s) const {
+    if (s.u.allFinite() && s.v.allFinite()) [[likely]]
+      return;
+    char time[32];
+    std::snprintf(time, sizeof time, "%.6g", s.t);
+    throw SolutionError("the solution became non-finite at step " + std::to_string(index_) + " (t = " + time +
+                        "): reduce dt or choose a stable scheme");
+  }
+
+  AnyStepper<D> stepper_;
+  long long steps_;
+  long long index_ = 0;
+  Sample<D> current_;
+};
+
+}  // namespace vibra

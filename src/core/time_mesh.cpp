@@ -1,0 +1,74 @@
+#include "core/time_mesh.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.hpp"
+#include "core/solution_stream.hpp"
+
+namespace vibra {
+
+std::vector<KeySpec> time_keys(const TimeDefaults& defaults) {
+  std::vector<std::string> scheme_names;
+  for (const auto& info : all_schemes()) scheme_names.emplace_back(info.name);
+  return {
+      {"scheme", ValueKind::choice, defaults.scheme, "", "time-stepping scheme", scheme_names, {}},
+      {"dt", ValueKind::number, "", "time", "time step (overrides steps_per_period)", {}, {}},
+      {"steps_per_period", ValueKind::number, defaults.steps_per_period, "", "time steps per small-oscillation period", {}, {}},
+      {"T", ValueKind::number, "", "time", "end time, inf for an endless run (overrides periods)", {}, {}},
+      {"periods", ValueKind::number, defaults.periods, "", "end time in small-oscillation periods", {}, {}},
+  };
+}
+
+namespace {
+std::string g(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+}  // namespace
+
+TimeMesh resolve_time_mesh(const Parameters& p, double period, double fastest_w) {
+  TimeMesh mesh;
+  mesh.scheme = parse_scheme(p.text("scheme"));
+  mesh.period = period;
+  const bool has_period = period > 0 && std::isfinite(period);
+
+  if (p.given("dt") && p.given("steps_per_period"))
+    throw UsageError("give either dt or steps_per_period, not both");
+  if (p.given("T") && p.given("periods")) throw UsageError("give either T or periods, not both");
+  if (p.given("dt")) {
+    mesh.dt = p.positive("dt");
+  } else if (has_period) {
+    mesh.dt = period / p.positive("steps_per_period");
+  } else {
+    throw UsageError(p.owner() + " has no oscillation period with these parameters: give dt");
+  }
+  if (p.given("T")) {
+    mesh.T = p.positive("T", true);
+  } else if (has_period) {
+    mesh.T = period * p.positive("periods", true);
+  } else {
+    throw UsageError(p.owner() + " has no oscillation period with these parameters: give T");
+  }
+
+  const double limit = stability_limit(mesh.scheme, fastest_w);
+  if (limit > 0 && mesh.dt > limit) {
+    std::string advice = "use dt <= " + g(limit);
+    if (has_period) advice += " (steps_per_period >= " + g(std::ceil(period / limit)) + ")";
+    throw UsageError("dt=" + g(mesh.dt) + " is above the stability limit " + g(limit) + " of scheme " +
+                     std::string(scheme_info(mesh.scheme).name) + " for this problem: " + advice);
+  }
+
+  if (std::isinf(mesh.T)) {
+    mesh.steps = SolutionStream<1>::unbounded;
+  } else {
+    const double steps = std::round(mesh.T / mesh.dt);
+    if (steps > 1e15) throw UsageError("T/dt = " + g(steps) + " steps is too many: use T=inf for an endless run");
+    mesh.steps = std::max(1LL, static_cast<long long>(steps));
+    mesh.T = mesh.steps * mesh.dt;
+  }
+  return mesh;
+}
+
+}  // namespace vibra

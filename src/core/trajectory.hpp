@@ -1,0 +1,95 @@
+#pragma once
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/solution_stream.hpp"
+#include "core/time_mesh.hpp"
+
+namespace vibra {
+
+/// What a model tells its observers besides the numbers.
+struct TrajectoryInfo {
+  std::vector<std::string> columns;  ///< first column is t, second the main quantity
+  TimeMesh mesh;
+  /// Largest |value| the main quantity can reach (from energy), 0 if unknown.
+  double amplitude_bound = 0;
+  /// Exact solution of the main quantity where known (empty otherwise).
+  std::function<double(double t)> exact;
+  std::string exact_label;  ///< e.g. "exact" or "small-angle"
+};
+
+/// A model's solution as a stream of table rows, with the scheme and the
+/// dimension erased: the CSV writer, frame sampler and ASCII plotter read it.
+class Trajectory {
+ public:
+  virtual ~Trajectory() = default;
+  const TrajectoryInfo& info() const { return info_; }
+  size_t width() const { return info_.columns.size(); }
+
+  virtual double t() const = 0;
+  virtual long long index() const = 0;
+  bool done() const { return index() >= info_.mesh.steps; }
+  /// Next time step; false at the end. Throws SolutionError on blow-up.
+  virtual bool advance() = 0;
+  /// The columns at the current sample.
+  virtual void row(std::span<double> out) const = 0;
+  /// The columns at time t between the previous and the current sample,
+  /// by cubic Hermite interpolation of u and v (4th order, like the best schemes).
+  virtual void row_at(double t, std::span<double> out) const = 0;
+
+ protected:
+  explicit Trajectory(TrajectoryInfo info) : info_(std::move(info)) {}
+  TrajectoryInfo info_;
+};
+
+/// The Trajectory of a SecondOrderSystem<D>; `to_row` turns a sample into the
+/// model's columns (t first).
+template <int D>
+class SecondOrderTrajectory final : public Trajectory {
+ public:
+  using RowFunction = std::function<void(const Sample<D>&, std::span<double>)>;
+
+  SecondOrderTrajectory(std::shared_ptr<const SecondOrderSystem<D>> system, const Vec<D>& u0, const Vec<D>& v0,
+                        TrajectoryInfo info, RowFunction to_row)
+      : Trajectory(std::move(info)),
+        system_(std::move(system)),
+        stream_(make_stepper<D>(info_.mesh.scheme, *system_, u0, v0, info_.mesh.dt), info_.mesh.steps),
+        previous_(stream_.current()),
+        to_row_(std::move(to_row)) {}
+
+  double t() const override { return stream_.current().t; }
+  long long index() const override { return stream_.index(); }
+  bool advance() override {
+    previous_ = stream_.current();
+    return stream_.advance();
+  }
+  void row(std::span<double> out) const override { to_row_(stream_.current(), out); }
+  void row_at(double t, std::span<double> out) const override { to_row_(interpolate(t), out); }
+
+  const SecondOrderSystem<D>& system() const { return *system_; }
+  SolutionStream<D>& stream() { return stream_; }
+
+ private:
+  Sample<D> interpolate(double t) const {
+    const Sample<D>& a = previous_;
+    const Sample<D>& b = stream_.current();
+    const double h = b.t - a.t;
+    if (h <= 0 || t >= b.t) return b;
+    if (t <= a.t) return a;
+    const double s = (t - a.t) / h, s2 = s * s, s3 = s2 * s;
+    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+    const Vec<D> acc_a = system_->acceleration(a.u, a.v, a.t), acc_b = system_->acceleration(b.u, b.v, b.t);
+    return {t, h00 * a.u + h10 * h * a.v + h01 * b.u + h11 * h * b.v,
+            h00 * a.v + h10 * h * acc_a + h01 * b.v + h11 * h * acc_b};
+  }
+
+  std::shared_ptr<const SecondOrderSystem<D>> system_;
+  SolutionStream<D> stream_;
+  Sample<D> previous_;
+  RowFunction to_row_;
+};
+
+}  // namespace vibra
