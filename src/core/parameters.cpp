@@ -70,6 +70,15 @@ void Parameters::set(const std::string& key, const std::string& value) {
     for (const auto& c : s.choices) list += (list.empty() ? "" : ", ") + c;
     throw UsageError("'" + value + "' is not a valid " + key + " for " + owner_ + ": choose one of " + list);
   }
+  // Parse now, so a bad value is reported where it was given, and not kept.
+  Parameters trial = *this;
+  trial.values_[key] = value;
+  switch (s.kind) {
+    case ValueKind::number: evaluate_constant(key, value); break;
+    case ValueKind::angle: trial.angle(key); break;
+    case ValueKind::formula: trial.formula(key); break;
+    case ValueKind::choice: break;
+  }
   values_[key] = value;
 }
 

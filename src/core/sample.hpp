@@ -8,6 +8,16 @@ namespace vibra {
 template <int D>
 using Vec = Eigen::Matrix<double, D, 1>;
 
+/// |v|: the length of a vector, written so that D = 1 costs an abs, not a sqrt.
+template <int D>
+inline double magnitude(const Vec<D>& v) {
+  if constexpr (D == 1) {
+    return v[0] < 0 ? -v[0] : v[0];
+  } else {
+    return v.norm();
+  }
+}
+
 /// The solution at one mesh point t_n: position u^n and velocity v^n.
 template <int D>
 struct Sample {

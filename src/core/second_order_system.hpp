@@ -16,8 +16,31 @@ enum class Damping { none, linear, quadratic };
 /// length of the velocity vector: f = c |v| v (air drag).
 template <int D>
 struct SecondOrderSystem {
-  /// (F(t) - s(u)) / m, in units of acceleration.
-  std::function<Vec<D>(const Vec<D>& u, double t)> force;
+  /// The velocity-free force per unit mass, (F(t) - s(u)) / m. The two laws
+  /// that most runs use are inlined into the steppers (a std::function call
+  /// would cost as much as the sine itself); anything else is a function.
+  enum class Law { spring, sine, general };
+  Law law = Law::general;
+  double stiffness = 0;  ///< spring: -stiffness u; sine: -stiffness sin(u)
+  std::function<Vec<D>(const Vec<D>& u, double t)> general_force;
+
+  Vec<D> force(const Vec<D>& u, double t) const {
+    switch (law) {
+      case Law::spring: return -stiffness * u;
+      case Law::sine:
+        if constexpr (D == 1) return Vec<D>(-stiffness * std::sin(u[0]));
+        else return -stiffness * u.array().sin().matrix();
+      case Law::general: break;
+    }
+    return general_force(u, t);
+  }
+
+  static SecondOrderSystem spring(double k) { return {Law::spring, k, {}}; }
+  static SecondOrderSystem sine(double k) { return {Law::sine, k, {}}; }
+  static SecondOrderSystem general(std::function<Vec<D>(const Vec<D>&, double)> f) {
+    return {Law::general, 0, std::move(f)};
+  }
+
   Damping damping = Damping::none;
   /// b / m: linear damping in 1/time, quadratic in 1/length.
   double damping_per_mass = 0;
@@ -26,7 +49,7 @@ struct SecondOrderSystem {
   Vec<D> damping_acceleration(const Vec<D>& v) const {
     switch (damping) {
       case Damping::linear: return -damping_per_mass * v;
-      case Damping::quadratic: return -damping_per_mass * v.norm() * v;
+      case Damping::quadratic: return -damping_per_mass * magnitude<D>(v) * v;
       case Damping::none: break;
     }
     return Vec<D>::Zero();
@@ -44,7 +67,7 @@ struct SecondOrderSystem {
       case Damping::linear: return rhs / (1 + c);
       // v parallel to rhs with |v| + c|v|^2 = |rhs|; the root in a form
       // without cancellation.
-      case Damping::quadratic: return rhs * (2 / (1 + std::sqrt(1 + 4 * c * rhs.norm())));
+      case Damping::quadratic: return rhs * (2 / (1 + std::sqrt(1 + 4 * c * magnitude<D>(rhs))));
       case Damping::none: break;
     }
     return rhs;

@@ -32,8 +32,7 @@ ModelDefinition elastic_pendulum_model() {
     reject_adjusted_scheme(info.mesh, name);
     info.amplitude_bound = (1 + std::abs(eps)) * std::abs(std::sin(Theta)) + std::abs(eps);
 
-    auto system = std::make_shared<SecondOrderSystem<2>>();
-    system->force = [beta](const Vec<2>& u, double) -> Vec<2> {
+    auto system = std::make_shared<SecondOrderSystem<2>>(SecondOrderSystem<2>::general([beta](const Vec<2>& u, double) -> Vec<2> {
       const double x = u[0], y = u[1];
       const double L = std::hypot(x, y - 1);
       // (1 - beta/L)/(1 - beta) = (L - 1)/(L (1 - beta)) + 1/L, with
@@ -41,7 +40,7 @@ ModelDefinition elastic_pendulum_model() {
       const double stretch = (x * x + y * y - 2 * y) / (L + 1);
       const double factor = beta * (stretch / (L * (1 - beta)) + 1 / L);
       return Vec<2>(-factor * x, -factor * (y - 1) - beta);
-    };
+    }));
     system->damping = gamma > 0 ? Damping::quadratic : Damping::none;
     system->damping_per_mass = gamma / beta;
     const Vec<2> u0((1 + eps) * std::sin(Theta), 1 - (1 + eps) * std::cos(Theta));

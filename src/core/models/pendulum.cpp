@@ -33,8 +33,7 @@ std::unique_ptr<Trajectory> pendulum_trajectory(const Parameters& p, const std::
     info.exact_label = "small-angle";
   }
   // Scaled (1.131): theta'' = -sin(theta) - alpha |theta'| theta'.
-  auto system = std::make_shared<SecondOrderSystem<1>>();
-  system->force = [](const Vec<1>& u, double) -> Vec<1> { return Vec<1>(-std::sin(u[0])); };
+  auto system = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::sine(1.0));
   system->damping = alpha > 0 ? Damping::quadratic : Damping::none;
   system->damping_per_mass = alpha;
   return std::make_unique<SecondOrderTrajectory<1>>(

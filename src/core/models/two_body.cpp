@@ -37,11 +37,10 @@ ModelDefinition two_body_model() {
       info.exact_label = "exact";
     }
     info.amplitude_bound = a > 0 ? 2 * a : 0;
-    auto system = std::make_shared<SecondOrderSystem<2>>();
-    system->force = [](const Vec<2>& x, double) -> Vec<2> {
+    auto system = std::make_shared<SecondOrderSystem<2>>(SecondOrderSystem<2>::general([](const Vec<2>& x, double) -> Vec<2> {
       const double r2 = x.squaredNorm();
       return -x / (r2 * std::sqrt(r2));
-    };
+    }));
     return std::make_unique<SecondOrderTrajectory<2>>(
         system, u0, v0, info, [](const Sample<2>& s, std::span<double> out) {
           out[0] = s.t, out[1] = s.u[0], out[2] = s.u[1], out[3] = s.v[0], out[4] = s.v[1];

@@ -28,8 +28,7 @@ ModelDefinition undamped_model() {
     info.exact_label = "exact";
     double w_scheme = w;
     if (info.mesh.scheme == Scheme::centered_adjusted) w_scheme = w * (1 - w * w * info.mesh.dt * info.mesh.dt / 24);
-    auto system = std::make_shared<SecondOrderSystem<1>>();
-    system->force = [k = w_scheme * w_scheme](const Vec<1>& u, double) -> Vec<1> { return -k * u; };
+    auto system = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::spring(w_scheme * w_scheme));
     return std::make_unique<SecondOrderTrajectory<1>>(
         system, Vec<1>(I), Vec<1>(V), info, [](const Sample<1>& s, std::span<double> out) {
           out[0] = s.t, out[1] = s.u[0], out[2] = s.v[0];

@@ -34,8 +34,8 @@ ModelDefinition vibration_model() {
     info.columns = columns;
     info.mesh = resolve_time_mesh(p, w > 0 ? 2 * M_PI / w : 0, w);
     reject_adjusted_scheme(info.mesh, name);
-    auto system = std::make_shared<SecondOrderSystem<1>>();
-    system->force = [s, F, mass](const Vec<1>& u, double t) -> Vec<1> { return Vec<1>((F(t) - s(u[0])) / mass); };
+    auto system = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::general(
+        [s, F, mass](const Vec<1>& u, double t) -> Vec<1> { return Vec<1>((F(t) - s(u[0])) / mass); }));
     const std::string law = p.choice("damping");
     system->damping = b == 0 || law == "none" ? Damping::none : law == "linear" ? Damping::linear : Damping::quadratic;
     system->damping_per_mass = b / mass;

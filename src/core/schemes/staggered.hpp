@@ -36,7 +36,7 @@ class Staggered {
       case Damping::linear:
         return (v_behind_ + dt_ * (f - 0.5 * c * v_behind_)) / (1 + 0.5 * c * dt_);
       case Damping::quadratic:
-        return (v_behind_ + dt_ * f) / (1 + c * v_behind_.norm() * dt_);
+        return (v_behind_ + dt_ * f) / (1 + c * magnitude<D>(v_behind_) * dt_);
       case Damping::none: break;
     }
     return v_behind_ + dt_ * f;
