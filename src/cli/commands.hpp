@@ -6,5 +6,7 @@ namespace vibra::cli {
 /// Each command adds its subcommand to the app; its callback does the work
 /// and throws UsageError / SolutionError / OutputError on failure.
 void add_solve_command(CLI::App& app);
+void add_render_command(CLI::App& app);
+void add_ascii_command(CLI::App& app);
 
 }  // namespace vibra::cli

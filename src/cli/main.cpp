@@ -1,5 +1,6 @@
 #include <csignal>
 #include <cstdio>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "core/error.hpp"
@@ -15,7 +16,22 @@ int main(int argc, char** argv) {
   CLI::App app{"vibra: vibration ODEs from Linge & Langtangen chapter 1, solved, drawn, animated"};
   app.require_subcommand(1);
   vibra::cli::add_solve_command(app);
+  vibra::cli::add_render_command(app);
+  vibra::cli::add_ascii_command(app);
   try {
+    if (argc > 1 && argv[1][0] != '-') {
+      std::string names;
+      bool known = false;
+      for (const CLI::App* sub : app.get_subcommands({})) {
+        known |= sub->get_name() == argv[1];
+        names += (names.empty() ? "" : ", ") + sub->get_name();
+      }
+      if (!known) {
+        std::fprintf(stderr, "vibra: error: unknown command '%s': choose one of %s (see vibra --help)\n", argv[1],
+                     names.c_str());
+        return 2;
+      }
+    }
     app.parse(argc, argv);
     return 0;
   } catch (const CLI::CallForHelp& e) {

@@ -52,7 +52,7 @@ void run_solve(const SolveOptions& o) {
         csv.write(row);
       }
       if ((trajectory->index() & 0xffff) == 0) render::throw_if_stop_requested();
-    } while (trajectory->advance());
+    } while (!csv.failed() && trajectory->advance());
     if (!csv.flush()) {
       if (!file) return;  // stdout closed by the reader (e.g. `| head`): end quietly
       throw render::OutputError("writing '" + o.output + "' failed (disk full?): free space or choose another path");

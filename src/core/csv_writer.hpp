@@ -16,6 +16,8 @@ class CsvWriter {
   void write(std::span<const double> row);
   /// Flushes; returns false if any write failed (disk full, closed pipe).
   bool flush();
+  /// A write has failed: stop producing rows.
+  bool failed() const { return failed_; }
 
  private:
   void drain();

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Render benchmarks beside the classic Python way, in one run (ratios are
+# stable on a shared machine; absolute times are not). Prints frames/s of the
+# whole process, peak memory and file sizes.
+#
+#   bench/render_bench.sh [FRAMES]        (default 300; run from the repo root after scripts/setup)
+#
+# Cases: PNG sequences (--layout fbd, the peers' scene) against
+# mpl_png_frames.py; MP4 and WebM against mpl_funcanim_ffmpeg.py and against
+# the ffmpeg CLI encoding the same frames from raw YUV in memory with the same
+# settings (the encoder's own ceiling); the moving window against
+# mpl_moving_window.py.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+FRAMES=${1:-300}
+VIBRA=${VIBRA:-build/vibra}
+PEERS=${PEERS:-../shared/peers}
+PY=/usr/bin/python3
+WORK=$(mktemp -d /dev/shm/vibra_bench.XXXXXX 2>/dev/null || mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+
+# The peers' scene: Theta = 40 deg, alpha = 0.8, dt = 2 pi/60, one frame per step.
+SCENE=(--set Theta=40 --set alpha=0.8 --set "dt=2*pi/60" --set "T=$((FRAMES - 1))*2*pi/60" --set scheme=centered --frame-per-step -q)
+
+# run NAME COMMAND...: prints frames/s, seconds and peak memory of the whole process.
+run() {
+  local name=$1; shift
+  local start end kib
+  start=$(date +%s.%N)
+  /usr/bin/time -f %M -o "$WORK/mem" "$@" >/dev/null 2>"$WORK/err" || { echo "$name: FAILED"; cat "$WORK/err"; return 1; }
+  end=$(date +%s.%N)
+  kib=$(tail -1 "$WORK/mem")
+  LAST_FPS=$(echo "$FRAMES / ($end - $start)" | bc -l)
+  printf "%-44s %8.1f frames/s %8.2f s %8d KiB peak\n" "$name" "$LAST_FPS" "$(echo "$end - $start" | bc -l)" "$kib"
+}
+size() { printf "%-44s %8d KiB\n" "  file size: $(basename "$1")" $(( $(stat -c %s "$1") / 1024 )); }
+ratio() { printf "  -> vibra / peer = %.1fx\n" "$(echo "$1 / $2" | bc -l)"; }
+
+echo "== PNG frames, --layout fbd, $FRAMES frames"
+for size in 720p 1080p; do
+  dims=$([ $size = 720p ] && echo 1280x720 || echo 1920x1080)
+  mkdir -p "$WORK/v_$size" "$WORK/p_$size"
+  run "vibra PNG $size" "$VIBRA" render "${SCENE[@]}" --layout fbd --size "$dims" -o "$WORK/v_$size"; ours=$LAST_FPS
+  run "matplotlib PNG $size (mpl_png_frames.py)" $PY "$PEERS/mpl_png_frames.py" --frames "$FRAMES" --size $size --out "$WORK/p_$size"
+  ratio "$ours" "$LAST_FPS"
+  rm -rf "$WORK/v_$size" "$WORK/p_$size"
+done
+
+echo
+echo "== Video, default layout (fbd+plot), $FRAMES frames"
+for size in 720p 1080p; do
+  dims=$([ $size = 720p ] && echo 1280x720 || echo 1920x1080)
+  run "vibra MP4 $size (x264 veryfast crf 23)" "$VIBRA" render "${SCENE[@]}" --size "$dims" -o "$WORK/v.mp4"; mp4=$LAST_FPS
+  size "$WORK/v.mp4"
+  ffmpeg -v error -i "$WORK/v.mp4" -f rawvideo -pix_fmt yuv420p -y "$WORK/raw.yuv"
+  run "ffmpeg CLI encoder only, same settings" ffmpeg -v error -f rawvideo -pix_fmt yuv420p -s "$dims" -r 30 \
+    -i "$WORK/raw.yuv" -c:v libx264 -preset veryfast -tune animation -crf 23 -f mp4 -y "$WORK/ceiling.mp4"
+  printf "  -> vibra's whole pipeline reaches %.0f%% of the encoder alone\n" "$(echo "100 * $mp4 / $LAST_FPS" | bc -l)"
+  run "vibra WebM $size (VP9 crf 32 realtime)" "$VIBRA" render "${SCENE[@]}" --size "$dims" -o "$WORK/v.webm"; webm=$LAST_FPS
+  size "$WORK/v.webm"
+  run "ffmpeg CLI VP9 encoder only, same settings" ffmpeg -v error -f rawvideo -pix_fmt yuv420p -s "$dims" -r 30 \
+    -i "$WORK/raw.yuv" -c:v libvpx-vp9 -crf 32 -b:v 0 -row-mt 1 -deadline realtime -cpu-used 8 -threads 2 -f webm -y "$WORK/ceiling.webm"
+  printf "  -> vibra's whole pipeline reaches %.0f%% of the encoder alone\n" "$(echo "100 * $webm / $LAST_FPS" | bc -l)"
+  run "matplotlib FuncAnimation MP4 $size" $PY "$PEERS/mpl_funcanim_ffmpeg.py" --frames "$FRAMES" --size $size --codec mp4 --out "$WORK/peer"
+  size "$WORK/peer.mp4"
+  ratio "$mp4" "$LAST_FPS"
+  rm -f "$WORK"/*.mp4 "$WORK"/*.webm "$WORK/raw.yuv"
+done
+
+echo
+echo "== Moving window (u against t, 4 periods), 720p, $FRAMES PNG frames"
+mkdir -p "$WORK/mw_v" "$WORK/mw_p"
+run "vibra moving window" "$VIBRA" render pendulum "${SCENE[@]}" --layout plot --window 4periods -o "$WORK/mw_v"; ours=$LAST_FPS
+run "matplotlib moving window (mpl_moving_window.py)" $PY "$PEERS/mpl_moving_window.py" --frames "$FRAMES" --size 720p --window 4 --out "$WORK/mw_p"
+ratio "$ours" "$LAST_FPS"

@@ -1,0 +1,48 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace vibra::render {
+
+enum class AxisScale { linear, logarithmic };
+
+/// A tick: its value and label (Pango markup; "" marks a grid line without a label).
+struct AxisTick {
+  double value;
+  std::string label;
+};
+
+/// One axis of a figure panel: the range it shows and where a value sits
+/// along it, linearly or by decades. Knows nothing of pixels.
+class Axis {
+ public:
+  explicit Axis(AxisScale scale = AxisScale::linear) : scale_(scale) {}
+  AxisScale scale() const { return scale_; }
+
+  /// Whether v can be placed: finite, and > 0 on a logarithmic axis.
+  bool shows(double v) const;
+  /// Shows exactly [lo, hi] (for a shared time axis: no margin).
+  void set_range(double lo, double hi);
+  /// Shows data in [lo, hi] with a 5% margin, so extremes do not touch the
+  /// frame; an empty or one-value range is widened.
+  void fit(double lo, double hi);
+  /// Widens the range about its middle by `factor` >= 1 (for equal aspect).
+  void widen(double factor);
+  /// The range's lower and upper end, as values.
+  double lo() const;
+  double hi() const;
+
+  /// 0 at lo(), 1 at hi() (in decades on a logarithmic axis).
+  double fraction(double v) const;
+
+  /// About `target` labelled ticks inside the range, and on a logarithmic axis
+  /// unlabelled minor ticks (2..9 times a power of ten) for the grid.
+  std::vector<AxisTick> ticks(int target) const;
+
+ private:
+  double to_axis(double v) const;
+  AxisScale scale_;
+  double lo_ = 0, hi_ = 1;  ///< in axis units: the value, or log10 of it
+};
+
+}  // namespace vibra::render

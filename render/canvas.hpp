@@ -1,0 +1,73 @@
+#pragma once
+#include <cairo.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+
+#include "render/color.hpp"
+
+namespace vibra::render {
+
+using Point = Eigen::Vector2d;
+
+/// A rectangle in pixels: x, y of the top-left corner, width, height.
+struct PixelRect {
+  double x = 0, y = 0, w = 0, h = 0;
+  Point center() const { return {x + w / 2, y + h / 2}; }
+};
+
+/// Pixels per 720p pixel for a picture `height` pixels high: line widths and
+/// fonts are multiplied by it. Never below 0.7, so labels stay readable on
+/// small frames such as 640x360.
+inline double scale_for_height(int height) { return std::max(0.7, height / 720.0); }
+
+/// A Cairo drawing surface: an ARGB32 image for frames, or an SVG/PDF file for
+/// vector stills. Line widths and font sizes are given at 720p and scaled with
+/// the canvas height, so a picture looks the same at 640x360 and 3840x2160.
+class Canvas {
+ public:
+  /// Throws OutputError for sizes outside 1..8192.
+  static Canvas image(int width, int height);
+  static Canvas svg(const std::filesystem::path& file, int width, int height);
+  static Canvas pdf(const std::filesystem::path& file, int width, int height);
+
+  cairo_t* cr() const { return cr_.get(); }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  double scale() const { return scale_for_height(height_); }
+  cairo_surface_t* surface() const { return surface_.get(); }
+
+  /// Image canvases only: the pixels (BGRA in memory on little-endian) after flush().
+  const std::uint8_t* data() const;
+  int stride() const;
+  void flush() const;
+  /// Vector canvases: finish writing the file; throws OutputError on failure.
+  void finish();
+
+  void clear(Color);
+
+ private:
+  Canvas(cairo_surface_t*, int width, int height);
+  std::shared_ptr<cairo_surface_t> surface_;
+  std::shared_ptr<cairo_t> cr_;
+  int width_, height_;
+};
+
+/// Maps world coordinates (y up, equal aspect) into a pixel rectangle (y down),
+/// fitting a world box and centring it.
+class WorldView {
+ public:
+  WorldView(const Eigen::AlignedBox2d& world, const PixelRect& pixels);
+  Point to_pixel(const Point& world) const { return transform_ * world; }
+  /// Pixels per world unit.
+  double zoom() const { return zoom_; }
+
+ private:
+  Eigen::Affine2d transform_;
+  double zoom_;
+};
+
+}  // namespace vibra::render

@@ -1,0 +1,30 @@
+#pragma once
+#include <string>
+
+namespace vibra::render {
+
+/// An RGBA colour with components in [0, 1].
+struct Color {
+  double r = 0, g = 0, b = 0, a = 1;
+  Color with_alpha(double alpha) const { return {r, g, b, alpha}; }
+};
+
+/// Parses "#rrggbb" or "#rrggbbaa"; throws std::invalid_argument otherwise.
+Color parse_color(const std::string& hex);
+
+/// A palette that reads well projected in a lecture hall and in print
+/// (Okabe-Ito colours, distinguishable with colour-blindness).
+namespace palette {
+inline constexpr Color ink{0.10, 0.10, 0.12};
+inline constexpr Color grid{0.88, 0.88, 0.90};
+inline constexpr Color faint{0.72, 0.72, 0.75};
+inline constexpr Color paper{1, 1, 1};
+inline constexpr Color blue{0.00, 0.45, 0.70};
+inline constexpr Color vermillion{0.84, 0.37, 0.00};
+inline constexpr Color green{0.00, 0.62, 0.45};
+inline constexpr Color purple{0.80, 0.47, 0.65};
+inline constexpr Color orange{0.90, 0.62, 0.00};
+inline constexpr Color sky{0.34, 0.71, 0.91};
+}  // namespace palette
+
+}  // namespace vibra::render

@@ -1,0 +1,51 @@
+#pragma once
+#include <vector>
+
+#include "render/canvas.hpp"
+
+namespace vibra::render {
+
+/// A curve decimated to one entry per pixel column: the first, last, smallest
+/// and largest value that fell in each column. Drawing it costs the same
+/// whatever the number of samples, and no peak is lost.
+class ColumnEnvelope {
+ public:
+  /// `columns` columns spanning x in [x0, x1].
+  ColumnEnvelope(int columns, double x0, double x1);
+
+  void add(double x, double y);
+  void clear();
+  int columns() const { return static_cast<int>(cells_.size()); }
+  double x0() const { return x0_; }
+  double x1() const { return x1_; }
+  /// Column of x, clamped to the range.
+  int column_of(double x) const;
+
+  /// Pixel polyline through columns [0, last_column], with `to_pixel(column, y)`.
+  template <class ToPixel>
+  std::vector<Point> polyline(int last_column, ToPixel&& to_pixel) const {
+    std::vector<Point> out;
+    for (int c = 0; c <= last_column && c < columns(); ++c) {
+      const Cell& k = cells_[c];
+      if (!k.used) continue;
+      out.push_back(to_pixel(c, k.first));
+      if (k.min != k.max) {
+        const bool rising = k.first <= k.last;
+        out.push_back(to_pixel(c, rising ? k.min : k.max));
+        out.push_back(to_pixel(c, rising ? k.max : k.min));
+      }
+      out.push_back(to_pixel(c, k.last));
+    }
+    return out;
+  }
+
+ private:
+  struct Cell {
+    bool used = false;
+    double first = 0, last = 0, min = 0, max = 0;
+  };
+  std::vector<Cell> cells_;
+  double x0_, x1_;
+};
+
+}  // namespace vibra::render

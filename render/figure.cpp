@@ -1,0 +1,333 @@
+#include "render/figure.hpp"
+
+#include <cairo.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "render/output_error.hpp"
+#include "render/shapes.hpp"
+#include "render/temporary_file.hpp"
+#include "render/text.hpp"
+
+namespace vibra::render {
+
+namespace {
+constexpr double kTickFont = 15, kLabelFont = 18, kTitleFont = 21, kLegendFont = 15;
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+/// A panel placed on the canvas: its axes with their final ranges and its plot area.
+struct Placed {
+  Axis x, y;
+  PixelRect area;
+  bool x_tick_labels = false;  ///< lowest panel of a group sharing the x axis
+  bool x_label = false;
+
+  Point to_pixel(double vx, double vy) const {
+    return {area.x + x.fraction(vx) * area.w, area.y + (1 - y.fraction(vy)) * area.h};
+  }
+  bool shows(double vx, double vy) const { return x.shows(vx) && y.shows(vy); }
+};
+
+/// Data extents of a panel's series on its axes (log axes count positive values only).
+struct Extents {
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  bool empty() const { return x0 > x1; }
+};
+
+Extents extents_of(const std::vector<std::unique_ptr<Series>>& series, const Axis& x, const Axis& y) {
+  Extents e;
+  for (const auto& s : series)
+    s->for_each_point([&](double vx, double vy) {
+      if (!x.shows(vx) || !y.shows(vy)) return;
+      e.x0 = std::min(e.x0, vx), e.x1 = std::max(e.x1, vx);
+      e.y0 = std::min(e.y0, vy), e.y1 = std::max(e.y1, vy);
+    });
+  return e;
+}
+
+int tick_target(double pixels, double spacing) { return std::clamp(static_cast<int>(pixels / spacing), 2, 10); }
+
+/// A polyline in pixels, split where the axes cannot show a point (log of <= 0).
+std::vector<std::vector<Point>> to_pixels(const Placed& p, const std::vector<Point>& line) {
+  std::vector<std::vector<Point>> runs(1);
+  for (const Point& q : line) {
+    if (p.shows(q.x(), q.y())) {
+      runs.back().push_back(p.to_pixel(q.x(), q.y()));
+    } else if (!runs.back().empty()) {
+      runs.emplace_back();
+    }
+  }
+  return runs;
+}
+
+void draw_marker(Canvas& canvas, const Point& at, const Color& color) {
+  cairo_t* cr = canvas.cr();
+  cairo_new_path(cr);
+  cairo_arc(cr, at.x(), at.y(), 4.5 * canvas.scale(), 0, 2 * M_PI);
+  cairo_set_source_rgba(cr, color.r, color.g, color.b, color.a);
+  cairo_fill_preserve(cr);
+  cairo_set_source_rgba(cr, palette::paper.r, palette::paper.g, palette::paper.b, 1);
+  cairo_set_line_width(cr, 1.2 * canvas.scale());
+  cairo_stroke(cr);
+}
+
+void draw_frame(Canvas& canvas, const PixelRect& area) {
+  cairo_t* cr = canvas.cr();
+  cairo_set_dash(cr, nullptr, 0, 0);
+  cairo_rectangle(cr, area.x, area.y, area.w, area.h);
+  cairo_set_source_rgba(cr, palette::ink.r, palette::ink.g, palette::ink.b, 0.7);
+  cairo_set_line_width(cr, 1.2 * canvas.scale());
+  cairo_stroke(cr);
+}
+
+/// How much of the panel's drawn data falls inside `box`: points sampled
+/// every few pixels along every polyline.
+int data_inside(const Placed& p, const std::vector<std::unique_ptr<Series>>& series, const PixelRect& box, double step) {
+  int count = 0;
+  auto inside = [&](const Point& q) { return q.x() >= box.x && q.x() <= box.x + box.w && q.y() >= box.y && q.y() <= box.y + box.h; };
+  for (const auto& s : series)
+    for (const auto& line : s->polylines())
+      for (const auto& run : to_pixels(p, line))
+        for (size_t i = 0; i < run.size(); ++i) {
+          count += inside(run[i]);
+          if (i == 0) continue;
+          const double length = (run[i] - run[i - 1]).norm();
+          for (double d = step; d < length; d += step) count += inside(run[i - 1] + (run[i] - run[i - 1]) * (d / length));
+        }
+  return count;
+}
+
+void draw_legend(Canvas& canvas, const Placed& p, const std::vector<std::unique_ptr<Series>>& series) {
+  std::vector<const Series*> entries;
+  for (const auto& s : series)
+    if (!s->label().empty()) entries.push_back(s.get());
+  if (entries.empty()) return;
+  const double s = canvas.scale(), pad = 8 * s, sample = 32 * s, gap = 8 * s;
+  const TextStyle style{kLegendFont, palette::ink};
+  double text_width = 0, row = 0;
+  for (const Series* e : entries) {
+    const Point size = text_size(canvas, e->label(), style);
+    text_width = std::max(text_width, size.x()), row = std::max(row, size.y());
+  }
+  row += 3 * s;
+  const double w = pad + sample + gap + text_width + pad, h = 2 * pad + row * entries.size() - 3 * s;
+  const double inset = 8 * s;
+  const PixelRect& a = p.area;
+  const PixelRect corners[] = {{a.x + a.w - inset - w, a.y + inset, w, h},
+                               {a.x + inset, a.y + inset, w, h},
+                               {a.x + a.w - inset - w, a.y + a.h - inset - h, w, h},
+                               {a.x + inset, a.y + a.h - inset - h, w, h}};
+  // The corner that hides the least data; top right when all are equal.
+  const PixelRect* best = &corners[0];
+  int least = -1;
+  for (const PixelRect& c : corners) {
+    const int covered = data_inside(p, series, c, 4 * s);
+    if (least < 0 || covered < least) least = covered, best = &c;
+  }
+  const PixelRect box = *best;
+  fill_pixel_rect(canvas, box, palette::paper.with_alpha(0.88));
+  cairo_t* cr = canvas.cr();
+  cairo_rectangle(cr, box.x, box.y, box.w, box.h);
+  cairo_set_source_rgba(cr, palette::faint.r, palette::faint.g, palette::faint.b, 1);
+  cairo_set_line_width(cr, 1 * s);
+  cairo_stroke(cr);
+  for (size_t i = 0; i < entries.size(); ++i) {
+    const SeriesStyle& st = entries[i]->style();
+    const double y = box.y + pad + (i + 0.5) * row - 1.5 * s;
+    const Point a0(box.x + pad, y), a1(box.x + pad + sample, y);
+    if (st.line_width > 0) draw_pixel_line(canvas, a0, a1, {st.color, st.line_width, st.dashed});
+    if (st.markers) draw_marker(canvas, (a0 + a1) / 2, st.color);
+    draw_text(canvas, {a1.x() + gap, y}, entries[i]->label(), style, Anchor::left);
+  }
+}
+
+void draw_series(Canvas& canvas, const Placed& p, const Series& series) {
+  const SeriesStyle& st = series.style();
+  cairo_save(canvas.cr());
+  cairo_rectangle(canvas.cr(), p.area.x, p.area.y, p.area.w, p.area.h);
+  cairo_clip(canvas.cr());
+  for (const auto& line : series.polylines())
+    for (const auto& run : to_pixels(p, line)) {
+      if (st.line_width > 0) draw_pixel_polyline(canvas, run, {st.color, st.line_width, st.dashed});
+      if (st.markers)
+        for (const Point& q : run) draw_marker(canvas, q, st.color);
+    }
+  cairo_restore(canvas.cr());
+}
+}  // namespace
+
+void require_picture_extension(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  if (ext != ".png" && ext != ".svg" && ext != ".pdf")
+    throw OutputError("cannot tell the picture format of '" + path.string() +
+                      "': end the file name in .png, .svg or .pdf");
+}
+
+Figure::Figure(int width, int height, std::string title) : width_(width), height_(height), title_(std::move(title)) {
+  if (width < 1 || height < 1 || width > 8192 || height > 8192)
+    throw OutputError("figure size " + std::to_string(width) + "x" + std::to_string(height) +
+                      " is out of range: width and height must be 1..8192, e.g. --size 1280x720");
+}
+
+int Figure::add_panel(PanelOptions options) {
+  panels_.push_back({std::move(options), {}});
+  return static_cast<int>(panels_.size()) - 1;
+}
+
+Series& Figure::add(int panel, std::unique_ptr<Series> series) {
+  auto& list = panels_.at(panel).series;
+  list.push_back(std::move(series));
+  return *list.back();
+}
+
+Series& Figure::add_points(int panel, std::string label, SeriesStyle style) {
+  return add(panel, std::make_unique<Series>(Series::Kind::points, std::move(label), style));
+}
+
+Series& Figure::add_curve(int panel, std::string label, SeriesStyle style, double x0, double x1) {
+  // One cell per device pixel across the whole width: at least one per column of the plot area.
+  return add(panel, std::make_unique<Series>(Series::Kind::curve, std::move(label), style, width_, x0, x1));
+}
+
+Series& Figure::add_path(int panel, std::string label, SeriesStyle style) {
+  return add(panel, std::make_unique<Series>(Series::Kind::path, std::move(label), style));
+}
+
+void Figure::draw(Canvas& canvas) const {
+  canvas.clear(palette::paper);
+  if (panels_.empty()) return;
+  const double s = canvas.scale();
+  const TextStyle tick_style{kTickFont, palette::ink.with_alpha(0.8)}, label_style{kLabelFont, palette::ink};
+  const double tick_h = text_size(canvas, "0", tick_style).y(), label_h = text_size(canvas, "Ag", label_style).y();
+
+  // Axes from the data; panels sharing an x axis share its range.
+  const size_t n = panels_.size();
+  std::vector<Placed> placed(n);
+  std::vector<Extents> data(n);
+  for (size_t i = 0; i < n; ++i) {
+    const PanelOptions& o = panels_[i].options;
+    placed[i].x = Axis(o.x_scale), placed[i].y = Axis(o.y_scale);
+    data[i] = extents_of(panels_[i].series, placed[i].x, placed[i].y);
+    placed[i].x_tick_labels = i + 1 == n || panels_[i + 1].options.x_label != o.x_label;
+    placed[i].x_label = placed[i].x_tick_labels && !o.x_label.empty();
+  }
+  for (size_t first = 0; first < n;) {
+    size_t last = first;
+    while (!placed[last].x_tick_labels) ++last;
+    std::optional<std::pair<double, double>> fixed;
+    double x0 = INFINITY, x1 = -INFINITY;
+    for (size_t i = first; i <= last; ++i) {
+      if (!fixed) fixed = panels_[i].options.x_range;
+      x0 = std::min(x0, data[i].x0), x1 = std::max(x1, data[i].x1);
+    }
+    for (size_t i = first; i <= last; ++i) {
+      if (fixed)
+        placed[i].x.set_range(fixed->first, fixed->second);
+      else
+        placed[i].x.fit(x0, x1);
+      const auto& y_range = panels_[i].options.y_range;
+      if (y_range)
+        placed[i].y.set_range(y_range->first, y_range->second);
+      else
+        placed[i].y.fit(data[i].y0, data[i].y1);
+    }
+    first = last + 1;
+  }
+
+  // Heights: the title, then per panel its y label band, the plot area, and
+  // for the lowest panel of a group the tick labels and the x label.
+  const double title_h = title_.empty() ? 6 * s : text_size(canvas, title_, {kTitleFont, palette::ink}).y() + 14 * s;
+  double fixed_h = title_h + 8 * s;
+  for (const Placed& p : placed)
+    fixed_h += label_h + 6 * s + (p.x_tick_labels ? tick_h + 8 * s : 4 * s) + (p.x_label ? label_h + 6 * s : 0);
+  const double area_h = std::max(10.0, (height_ - fixed_h) / n);
+  double top = title_h;
+  for (Placed& p : placed) {
+    top += label_h + 6 * s;
+    p.area = {0, top, 0, area_h};
+    top += area_h + (p.x_tick_labels ? tick_h + 8 * s : 4 * s) + (p.x_label ? label_h + 6 * s : 0);
+  }
+
+  // Widths: one left margin for all panels (wide enough for every y tick
+  // label) so the frames line up; on the right, room for half an x tick label.
+  const std::vector<Placed> base = placed;
+  double left = 0, right = 24 * s;
+  for (int pass = 0; pass < 2; ++pass) {
+    left = 0;
+    for (Placed& p : placed) {
+      for (const auto& tick : p.y.ticks(tick_target(p.area.h, 42 * s)))
+        left = std::max(left, text_size(canvas, tick.label, tick_style).x());
+    }
+    left += 16 * s;
+    for (size_t i = 0; i < n; ++i) {
+      Placed& p = placed[i];
+      p.area.x = left, p.area.w = std::max(10.0, width_ - left - right);
+      if (!panels_[i].options.equal_aspect) continue;
+      // Equal aspect: widen the axis whose units are shorter on screen.
+      p.x = base[i].x, p.y = base[i].y;
+      const double ux = (p.x.hi() - p.x.lo()) / p.area.w, uy = (p.y.hi() - p.y.lo()) / p.area.h;
+      if (ux > uy)
+        p.y.widen(ux / uy);
+      else
+        p.x.widen(uy / ux);
+    }
+  }
+
+  if (!title_.empty())
+    draw_text(canvas, {width_ / 2.0, 6 * s}, title_, {kTitleFont, palette::ink}, Anchor::top);
+  for (size_t i = 0; i < n; ++i) {
+    const Placed& p = placed[i];
+    const PanelOptions& o = panels_[i].options;
+    const auto x_ticks = p.x.ticks(tick_target(p.area.w, 110 * s));
+    const auto y_ticks = p.y.ticks(tick_target(p.area.h, 42 * s));
+    for (const auto& t : y_ticks) {
+      const double y = p.to_pixel(p.x.lo(), t.value).y();
+      draw_pixel_line(canvas, {p.area.x, y}, {p.area.x + p.area.w, y}, {t.label.empty() ? palette::grid.with_alpha(0.5) : palette::grid, 1});
+      if (!t.label.empty()) draw_text(canvas, {p.area.x - 6 * s, y}, t.label, tick_style, Anchor::right);
+    }
+    for (const auto& t : x_ticks) {
+      const double x = p.to_pixel(t.value, p.y.lo()).x();
+      draw_pixel_line(canvas, {x, p.area.y}, {x, p.area.y + p.area.h}, {t.label.empty() ? palette::grid.with_alpha(0.5) : palette::grid, 1});
+      if (p.x_tick_labels && !t.label.empty())
+        draw_text(canvas, {x, p.area.y + p.area.h + 4 * s}, t.label, tick_style, Anchor::top);
+    }
+    if (o.y_scale == AxisScale::linear && p.y.lo() < 0 && p.y.hi() > 0) {
+      const double y = p.to_pixel(p.x.lo(), 0).y();
+      draw_pixel_line(canvas, {p.area.x, y}, {p.area.x + p.area.w, y}, {palette::faint, 1.2});
+    }
+    for (const auto& series : panels_[i].series) draw_series(canvas, p, *series);
+    draw_frame(canvas, p.area);
+    draw_text(canvas, {p.area.x, p.area.y - 4 * s}, o.y_label, label_style, Anchor::bottom_left);
+    if (p.x_label)
+      draw_text(canvas, {p.area.x + p.area.w / 2, p.area.y + p.area.h + tick_h + 10 * s}, o.x_label, label_style,
+                Anchor::top);
+    draw_legend(canvas, p, panels_[i].series);
+  }
+}
+
+void Figure::write(const std::filesystem::path& path) const {
+  require_picture_extension(path);
+  const std::string ext = lower_extension(path);
+  TemporaryFile file(path);
+  if (ext == ".png") {
+    Canvas canvas = Canvas::image(width_, height_);
+    draw(canvas);
+    canvas.flush();
+    if (cairo_surface_write_to_png(canvas.surface(), file.path().c_str()) != CAIRO_STATUS_SUCCESS)
+      throw OutputError("writing '" + path.string() + "' failed (disk full? unwritable?): free space or choose another path");
+  } else {
+    Canvas canvas = ext == ".svg" ? Canvas::svg(file.path(), width_, height_) : Canvas::pdf(file.path(), width_, height_);
+    draw(canvas);
+    canvas.finish();
+  }
+  file.commit();
+}
+
+}  // namespace vibra::render

@@ -1,0 +1,116 @@
+#include "render/frame_sink.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "render/output_error.hpp"
+#include "render/png_sequence.hpp"
+#include "render/video_writer.hpp"
+
+namespace vibra::render {
+
+namespace {
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+VideoQuality parse_quality(const std::string& q) {
+  if (q == "draft") return VideoQuality::draft;
+  if (q == "medium" || q.empty()) return VideoQuality::medium;
+  if (q == "high") return VideoQuality::high;
+  throw OutputError("--quality " + q + " is not one of draft, medium, high");
+}
+
+class VideoSink final : public FrameSink {
+ public:
+  VideoSink(const std::string& path, const VideoOptions& options) : path_(path), writer_(path, options) {}
+  void write(const std::uint8_t* bgra, int stride) override { writer_.write(bgra, stride); }
+  void finish() override { writer_.finish(); }
+  std::vector<std::string> notes() const override { return writer_.notes(); }
+  std::string description() const override {
+    return path_ + " (" + std::to_string(writer_.frames_written()) + " frames)";
+  }
+
+ private:
+  std::string path_;
+  VideoWriter writer_;
+};
+
+class PngSink final : public FrameSink {
+ public:
+  PngSink(FramePattern pattern, int width, int height) : pattern_(pattern), writer_(std::move(pattern), width, height) {}
+  void write(const std::uint8_t* bgra, int stride) override { writer_.write(bgra, stride); }
+  void finish() override { writer_.finish(); }
+  std::string description() const override {
+    return std::to_string(writer_.frames_written()) + " frames " + pattern_.name(0).string() + " ... " +
+           pattern_.name(std::max(0LL, writer_.frames_written() - 1)).string();
+  }
+
+ private:
+  FramePattern pattern_;
+  PngSequenceWriter writer_;
+};
+class TeeSink final : public FrameSink {
+ public:
+  explicit TeeSink(std::vector<std::unique_ptr<FrameSink>> sinks) : sinks_(std::move(sinks)) {}
+  void write(const std::uint8_t* bgra, int stride) override {
+    for (auto& s : sinks_) s->write(bgra, stride);
+  }
+  void finish() override {
+    for (auto& s : sinks_) s->finish();
+  }
+  std::vector<std::string> notes() const override {
+    std::vector<std::string> all;
+    for (const auto& s : sinks_)
+      for (auto& n : s->notes())
+        if (std::find(all.begin(), all.end(), n) == all.end()) all.push_back(n);
+    return all;
+  }
+  std::string description() const override {
+    std::string d;
+    for (const auto& s : sinks_) d += (d.empty() ? "" : " and ") + s->description();
+    return d;
+  }
+
+ private:
+  std::vector<std::unique_ptr<FrameSink>> sinks_;
+};
+}  // namespace
+
+std::unique_ptr<FrameSink> make_tee_sink(std::vector<std::unique_ptr<FrameSink>> sinks) {
+  return std::make_unique<TeeSink>(std::move(sinks));
+}
+
+bool is_video_path(const std::string& output) {
+  const std::string ext = lower_extension(output);
+  return ext == ".mp4" || ext == ".webm" || ext == ".mkv" || ext == ".ogv" || ext == ".gif" || ext == ".flv";
+}
+
+bool is_frame_pattern(const std::string& output) {
+  std::error_code ec;
+  return output.find('%') != std::string::npos || std::filesystem::is_directory(output, ec) ||
+         (!output.empty() && output.back() == '/');
+}
+
+std::unique_ptr<FrameSink> make_frame_sink(const std::string& output, int width, int height, double fps,
+                                           long long frame_count, const VideoSettings& settings,
+                                           const std::map<std::string, std::string>& metadata) {
+  if (is_video_path(output)) {
+    VideoOptions options;
+    options.width = width;
+    options.height = height;
+    options.fps = static_cast<int>(std::lround(fps));
+    options.codec = settings.codec;
+    options.quality = parse_quality(settings.quality);
+    options.crf = settings.crf;
+    options.preset = settings.preset;
+    options.metadata = metadata;
+    return std::make_unique<VideoSink>(output, options);
+  }
+  return std::make_unique<PngSink>(parse_frame_pattern(output, frame_count), width, height);
+}
+
+}  // namespace vibra::render

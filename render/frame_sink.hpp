@@ -1,0 +1,46 @@
+#pragma once
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vibra::render {
+
+/// Where rendered frames go: a PNG sequence or a video file. write() takes
+/// Cairo ARGB32 pixels; finish() completes the output (flush, trailer,
+/// rename into place) and throws OutputError on failure. Destroying an
+/// unfinished sink removes what it wrote: no partial output remains.
+class FrameSink {
+ public:
+  virtual ~FrameSink() = default;
+  virtual void write(const std::uint8_t* bgra, int stride) = 0;
+  virtual void finish() = 0;
+  /// Things to tell the user once (e.g. a size rounded up for H.264).
+  virtual std::vector<std::string> notes() const { return {}; }
+  /// What was written, for the closing message.
+  virtual std::string description() const = 0;
+};
+
+/// Video settings from the command line.
+struct VideoSettings {
+  std::string codec;    ///< "" = from the extension
+  std::string quality = "medium";
+  int crf = -1;
+  std::string preset;
+};
+
+/// True when `output` names a video file (.mp4, .webm, .mkv, .ogv, .gif, .flv).
+bool is_video_path(const std::string& output);
+/// True when `output` is a PNG frame pattern (has %d) or a directory.
+bool is_frame_pattern(const std::string& output);
+
+/// The sink for `output`: a video file or a PNG frame pattern / directory.
+std::unique_ptr<FrameSink> make_frame_sink(const std::string& output, int width, int height, double fps,
+                                           long long frame_count, const VideoSettings&,
+                                           const std::map<std::string, std::string>& metadata);
+
+/// One sink that writes every frame to each of `sinks` (draw once, encode twice).
+std::unique_ptr<FrameSink> make_tee_sink(std::vector<std::unique_ptr<FrameSink>> sinks);
+
+}  // namespace vibra::render

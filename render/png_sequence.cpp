@@ -1,0 +1,197 @@
+#include "render/png_sequence.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <system_error>
+
+#include "render/output_error.hpp"
+#include "render/temporary_file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace vibra::render {
+
+namespace {
+constexpr int kMaxDigits = 18;  // a long long index has at most 19
+
+[[noreturn]] void bad_pattern(const std::string& pattern, const std::string& problem) {
+  throw OutputError("frame pattern '" + pattern + "' " + problem +
+                    ": use e.g. frames/tmp_%04d.png, or an existing directory");
+}
+
+bool ends_with_png(const std::string& text) {
+  if (text.size() < 4) return false;
+  std::string tail = text.substr(text.size() - 4);
+  for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return tail == ".png";
+}
+
+/// The width of the "%d" (1) or "%0Nd" (N) directive at text[at] == '%', and
+/// where it ends; 0 when it is neither.
+int directive_width(const std::string& text, size_t at, size_t& end) {
+  size_t pos = at + 1;
+  int width = 1;
+  if (pos < text.size() && text[pos] == '0') {
+    width = 0;
+    while (++pos < text.size() && std::isdigit(static_cast<unsigned char>(text[pos])) && width <= kMaxDigits)
+      width = width * 10 + (text[pos] - '0');
+    if (width < 1 || width > kMaxDigits) return 0;
+  }
+  if (pos >= text.size() || text[pos] != 'd') return 0;
+  end = pos + 1;
+  return width;
+}
+
+int decimal_digits(long long n) {
+  int digits = 1;
+  for (; n >= 10; n /= 10) ++digits;
+  return digits;
+}
+}  // namespace
+
+fs::path FramePattern::name(long long index) const {
+  char number[32];
+  std::snprintf(number, sizeof number, "%0*lld", digits, index);
+  return directory / (prefix + number + suffix);
+}
+
+FramePattern parse_frame_pattern(const std::string& pattern, long long frame_count) {
+  FramePattern p;
+  const size_t percent = pattern.find('%');
+  if (percent == std::string::npos) {
+    std::error_code ec;
+    if (pattern.empty()) bad_pattern(pattern, "is empty");
+    // "out.png" is more likely a forgotten %04d than a directory name.
+    if (ends_with_png(pattern) && !fs::is_directory(pattern, ec)) bad_pattern(pattern, "has no %d for the frame number");
+    p.directory = pattern;
+    p.prefix = "tmp_";
+    p.suffix = ".png";
+  } else {
+    const fs::path path(pattern);
+    const std::string file = path.filename().string();
+    const size_t at = file.find('%');
+    size_t end = 0;
+    const int width = at == std::string::npos ? 0 : directive_width(file, at, end);
+    if (width == 0 || pattern.find('%', percent + 1) != std::string::npos)
+      bad_pattern(pattern, "needs exactly one %d or %0Nd (N up to 18) in the file name");
+    p.directory = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    p.prefix = file.substr(0, at);
+    p.suffix = file.substr(end);
+    p.digits = width;
+    if (!ends_with_png(p.suffix)) bad_pattern(pattern, "must end in .png");
+  }
+  require_writable_directory(p.directory);
+  // Every index gets the same width, so the names sort in frame order.
+  p.digits = std::max(p.digits, decimal_digits(std::max(0LL, frame_count - 1)));
+  return p;
+}
+
+PngSequenceWriter::PngSequenceWriter(FramePattern pattern, int width, int height, int threads)
+    : pattern_(std::move(pattern)), width_(width), height_(height), capacity_(std::max(threads, 1)) {
+  if (width <= 0 || height <= 0 || threads <= 0)
+    throw std::invalid_argument("PngSequenceWriter needs a positive width, height and thread count");
+  try {
+    for (int i = 0; i < threads; ++i) workers_.emplace_back([this] { work(); });
+  } catch (...) {
+    stop_workers();
+    throw;
+  }
+}
+
+PngSequenceWriter::~PngSequenceWriter() {
+  stop_workers();
+  if (finished_) return;
+  std::error_code ec;
+  for (size_t i = 0; i < saved_.size(); ++i)
+    if (saved_[i]) fs::remove(pattern_.name(static_cast<long long>(i)), ec);
+}
+
+void PngSequenceWriter::write(const std::uint8_t* bgra, int stride) {
+  if (finished_) throw std::logic_error("PngSequenceWriter::write after finish");
+  // Copy outside the lock, so the workers keep encoding meanwhile.
+  const size_t row = size_t(width_) * 4;
+  auto pixels = std::make_unique_for_overwrite<std::uint8_t[]>(row * height_);
+  for (int y = 0; y < height_; ++y) std::memcpy(pixels.get() + row * y, bgra + size_t(stride) * y, row);
+
+  std::unique_lock lock(mutex_);
+  progress_.wait(lock, [&] { return jobs_.size() < capacity_ || !failure_.empty(); });
+  if (!failure_.empty()) throw OutputError(failure_);
+  jobs_.push_back({queued_++, std::move(pixels)});
+  saved_.push_back(false);
+  lock.unlock();
+  work_.notify_one();
+}
+
+void PngSequenceWriter::finish() {
+  {
+    std::unique_lock lock(mutex_);
+    progress_.wait(lock, [&] { return (jobs_.empty() && busy_ == 0) || !failure_.empty(); });
+    if (!failure_.empty()) throw OutputError(failure_);
+  }
+  stop_workers();
+  finished_ = true;
+}
+
+void PngSequenceWriter::stop_workers() noexcept {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+    jobs_.clear();
+  }
+  work_.notify_all();
+  for (auto& worker : workers_) worker.join();
+  workers_.clear();
+}
+
+void PngSequenceWriter::work() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    work_.wait(lock, [&] { return stopping_ || !jobs_.empty(); });
+    if (stopping_) return;
+    Job job = std::move(jobs_.front());
+    jobs_.pop_front();
+    ++busy_;
+    lock.unlock();
+    progress_.notify_all();  // room in the queue
+
+    std::string error;
+    try {
+      save(job);
+    } catch (const OutputError& e) {
+      error = e.what();
+    } catch (const std::exception& e) {
+      error = "cannot write " + pattern_.name(job.index).string() + ": " + e.what();
+    }
+
+    lock.lock();
+    --busy_;
+    if (error.empty())
+      saved_[job.index] = true;
+    else if (failure_.empty())
+      failure_ = std::move(error);
+    progress_.notify_all();
+  }
+}
+
+void PngSequenceWriter::save(const Job& job) const {
+  const std::vector<std::uint8_t> png = encode_png(job.pixels.get(), width_, height_, width_ * 4);
+  const fs::path name = pattern_.name(job.index);
+  TemporaryFile file(name);
+  std::FILE* out = std::fopen(file.path().c_str(), "wb");
+  if (!out)
+    throw OutputError("cannot create '" + file.path().string() + "': " + std::generic_category().message(errno) +
+                      ": choose a writable directory");
+  bool ok = std::fwrite(png.data(), 1, png.size(), out) == png.size();
+  int error = errno;
+  if (std::fclose(out) != 0 && ok) ok = false, error = errno;
+  if (!ok)
+    throw OutputError("writing '" + name.string() + "' failed: " + std::generic_category().message(error) +
+                      ": free disk space or choose another directory");
+  file.commit();
+}
+
+}  // namespace vibra::render

@@ -1,0 +1,84 @@
+#pragma once
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "render/png_encoder.hpp"  // encode_png, which the writer's workers run
+
+namespace vibra::render {
+
+/// Names of a zero-padded PNG sequence: directory / (prefix + index + suffix).
+struct FramePattern {
+  std::filesystem::path directory;
+  std::string prefix, suffix;
+  int digits = 4;
+  /// E.g. "frames/tmp_0042.png"; an index wider than `digits` is written in full.
+  std::filesystem::path name(long long index) const;
+};
+
+/// Reads a user's pattern: "frames/tmp_%04d.png" (exactly one %d or %0Nd,
+/// N in 1..18, in the file name, which ends in .png, any case), or an existing
+/// directory "DIR" or "DIR/" meaning DIR/tmp_%04d.png. The digits widen when
+/// frame_count - 1 needs more, so names always sort (10001 frames: 5 digits).
+/// Throws OutputError for a bad pattern, a missing or unwritable directory,
+/// or a file where a directory is needed.
+FramePattern parse_frame_pattern(const std::string& pattern, long long frame_count);
+
+/// Writes PNG frames on worker threads: encoding costs more than drawing and
+/// frames are independent, so every core compresses. The queue holds at most
+/// `threads` frames, so memory stays flat for any number of frames. Frames may
+/// finish out of order; each goes to its index's name, written under a
+/// temporary name and renamed, so no file is ever half-written.
+class PngSequenceWriter {
+ public:
+  /// Throws std::invalid_argument for a non-positive size or thread count.
+  PngSequenceWriter(FramePattern, int width, int height, int threads = 2);
+  PngSequenceWriter(const PngSequenceWriter&) = delete;
+  PngSequenceWriter& operator=(const PngSequenceWriter&) = delete;
+  /// Not finished (error, interrupt): drops queued frames, waits for the
+  /// workers, then removes every frame this run wrote, so no partial sequence
+  /// remains. Never throws.
+  ~PngSequenceWriter();
+
+  /// Copies one Cairo ARGB32 frame (width x height, rows `stride` bytes apart)
+  /// and queues it, waiting while the queue is full. Throws OutputError if a
+  /// worker has already failed.
+  void write(const std::uint8_t* bgra, int stride);
+  /// Waits until every frame is on disk; throws OutputError for the first failure.
+  void finish();
+  /// Frames accepted by write(); all of them are on disk once finish() returns.
+  long long frames_written() const { return queued_; }
+
+ private:
+  struct Job {
+    long long index;
+    std::unique_ptr<std::uint8_t[]> pixels;  // width x height, rows packed
+  };
+  void work();
+  void save(const Job&) const;
+  void stop_workers() noexcept;
+
+  FramePattern pattern_;
+  int width_, height_;
+  size_t capacity_;
+  long long queued_ = 0;
+  bool finished_ = false;
+
+  std::mutex mutex_;  // guards everything below
+  std::condition_variable work_;      // a job was queued, or stopping
+  std::condition_variable progress_;  // a job was taken or done
+  std::deque<Job> jobs_;
+  int busy_ = 0;
+  bool stopping_ = false;
+  std::string failure_;
+  std::vector<bool> saved_;  // by index: on disk, for the cleanup of an unfinished run
+  std::vector<std::thread> workers_;
+};
+
+}  // namespace vibra::render

@@ -1,0 +1,27 @@
+#include "render/rolling_envelope.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vibra::render {
+
+RollingEnvelope::RollingEnvelope(double column_width, int capacity)
+    : width_(column_width > 0 ? column_width : 1), cells_(std::max(2, capacity)) {}
+
+long long RollingEnvelope::column_of(double x) const { return static_cast<long long>(std::floor(x / width_)); }
+
+void RollingEnvelope::add(double x, double y) {
+  if (!std::isfinite(y) || x < 0) return;
+  const long long c = column_of(x);
+  newest_ = std::max(newest_, c);
+  Cell& k = cells_[slot(c)];
+  if (k.column != c) {
+    k = {c, y, y, y, y};  // a new column reuses the oldest slot
+    return;
+  }
+  k.last = y;
+  k.min = std::min(k.min, y);
+  k.max = std::max(k.max, y);
+}
+
+}  // namespace vibra::render

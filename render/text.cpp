@@ -1,0 +1,74 @@
+#include "render/text.hpp"
+
+#include <pango/pangocairo.h>
+
+#include <cmath>
+#include <memory>
+
+namespace vibra::render {
+
+namespace {
+std::unique_ptr<PangoLayout, void (*)(void*)> make_layout(Canvas& canvas, const std::string& markup,
+                                                          const TextStyle& style) {
+  PangoLayout* layout = pango_cairo_create_layout(canvas.cr());
+  PangoFontDescription* font = pango_font_description_from_string(style.family);
+  pango_font_description_set_absolute_size(font, style.size * canvas.scale() * PANGO_SCALE);
+  pango_layout_set_font_description(layout, font);
+  pango_font_description_free(font);
+  pango_layout_set_markup(layout, markup.c_str(), -1);
+  return {layout, g_object_unref};
+}
+
+Point ink_size(PangoLayout* layout) {
+  PangoRectangle logical;
+  pango_layout_get_pixel_extents(layout, nullptr, &logical);
+  return {logical.width, logical.height};
+}
+}  // namespace
+
+Point text_size(Canvas& canvas, const std::string& markup, const TextStyle& style) {
+  return ink_size(make_layout(canvas, markup, style).get());
+}
+
+void draw_text(Canvas& canvas, const Point& at, const std::string& markup, const TextStyle& style, Anchor anchor) {
+  auto layout = make_layout(canvas, markup, style);
+  const Point size = ink_size(layout.get());
+  double fx = 0.5, fy = 0.5;  // fraction of the box left of / above the anchor
+  switch (anchor) {
+    case Anchor::center: break;
+    case Anchor::left: fx = 0; break;
+    case Anchor::right: fx = 1; break;
+    case Anchor::top: fy = 0; break;
+    case Anchor::bottom: fy = 1; break;
+    case Anchor::top_left: fx = 0, fy = 0; break;
+    case Anchor::top_right: fx = 1, fy = 0; break;
+    case Anchor::bottom_left: fx = 0, fy = 1; break;
+    case Anchor::bottom_right: fx = 1, fy = 1; break;
+  }
+  cairo_t* cr = canvas.cr();
+  cairo_move_to(cr, std::round(at.x() - fx * size.x()), std::round(at.y() - fy * size.y()));
+  if (style.halo) {
+    cairo_save(cr);
+    pango_cairo_layout_path(cr, layout.get());
+    cairo_set_source_rgba(cr, style.halo_color.r, style.halo_color.g, style.halo_color.b, style.halo_color.a);
+    cairo_set_line_width(cr, 5 * canvas.scale());
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_stroke(cr);
+    cairo_restore(cr);
+    cairo_move_to(cr, std::round(at.x() - fx * size.x()), std::round(at.y() - fy * size.y()));
+  }
+  cairo_set_source_rgba(cr, style.color.r, style.color.g, style.color.b, style.color.a);
+  pango_cairo_show_layout(cr, layout.get());
+  cairo_new_path(cr);
+}
+
+Point label_beyond(const Point& tip, const Point& direction, const Point& size, double gap) {
+  const double n = direction.norm();
+  const Point d = n > 1e-12 ? Point(direction / n) : Point(1, 0);
+  // Distance from the box centre to its edge along d, so any direction clears the box.
+  const double reach = std::min(std::abs(d.x()) > 1e-12 ? 0.5 * size.x() / std::abs(d.x()) : 1e300,
+                                std::abs(d.y()) > 1e-12 ? 0.5 * size.y() / std::abs(d.y()) : 1e300);
+  return tip + (gap + reach) * d;
+}
+
+}  // namespace vibra::render

@@ -1,0 +1,31 @@
+#pragma once
+#include <string>
+
+#include "render/canvas.hpp"
+
+namespace vibra::render {
+
+/// Where the anchor point sits on the text's box.
+enum class Anchor { center, left, right, top, bottom, top_left, top_right, bottom_left, bottom_right };
+
+/// Text set by Pango, so Greek letters, subscripts (<sub>) and italics (<i>)
+/// in Pango markup render properly. Sizes in 720p pixels.
+struct TextStyle {
+  double size = 22;
+  Color color = palette::ink;
+  const char* family = "DejaVu Sans";
+  /// A background-coloured outline, so a label stays readable over lines.
+  bool halo = false;
+  Color halo_color = palette::paper;
+};
+
+/// Draws Pango markup at pixel point `at`.
+void draw_text(Canvas&, const Point& at, const std::string& markup, const TextStyle&, Anchor = Anchor::center);
+/// The markup's size in pixels.
+Point text_size(Canvas&, const std::string& markup, const TextStyle&);
+
+/// Where to centre a label of `size` pixels so that it sits just beyond
+/// `tip` in direction `direction` (pixel space), `gap` pixels away.
+Point label_beyond(const Point& tip, const Point& direction, const Point& size, double gap);
+
+}  // namespace vibra::render

@@ -1,0 +1,62 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vibra::render {
+
+enum class VideoQuality { draft, medium, high };
+
+struct VideoOptions {
+  int width = 1280, height = 720;  ///< size of the frames passed to write(), pixels
+  int fps = 30;                    ///< frames per second, 1..240
+  std::string codec;               ///< "" = from the extension; or h264, vp9, vp8, theora, gif, flv
+  VideoQuality quality = VideoQuality::medium;
+  int crf = -1;                    ///< -1 = from quality; else the encoder's crf (quantizer for theora, flv)
+  std::string preset;              ///< x264 preset; "" = veryfast (fastest at equal size on line art)
+  std::map<std::string, std::string> metadata;  ///< container metadata: title, comment
+};
+
+/// Encodes Cairo frames into a video file in process with FFmpeg's libraries,
+/// following FFmpeg's doc/examples/mux.c. Conversion (to BT.709 limited-range
+/// YUV 4:2:0, or to a fixed palette for GIF) and encoding run on a worker
+/// thread behind a bounded queue, so the caller draws the next frame while
+/// this one is encoded. The file is written under a temporary name and renamed
+/// by finish(): a failed or abandoned writer leaves nothing at the final path.
+class VideoWriter {
+ public:
+  /// Throws OutputError for an unknown extension or codec, a missing encoder,
+  /// a bad size, fps or crf, or an unwritable path.
+  VideoWriter(const std::filesystem::path& final_path, const VideoOptions&);
+  VideoWriter(const VideoWriter&) = delete;
+  VideoWriter& operator=(const VideoWriter&) = delete;
+  /// Unfinished: stops the worker and removes the temporary file. Never throws.
+  ~VideoWriter();
+
+  /// Queues a copy of one frame of Cairo ARGB32 pixels (width x height,
+  /// `stride` bytes per row; premultiplied alpha, so transparency comes out
+  /// black). Waits only while the queue is full. Throws OutputError for a
+  /// failure the worker met since the last call.
+  void write(const std::uint8_t* argb32, int stride);
+  /// Encodes what is queued, flushes the encoder, writes the trailer and
+  /// renames the file into place. Throws OutputError (e.g. disk full).
+  void finish();
+  int frames_written() const { return frames_; }
+  /// Things to tell the user once, e.g. a size rounded up to even.
+  const std::vector<std::string>& notes() const { return notes_; }
+
+  /// The codec an output name implies; throws OutputError listing the supported extensions.
+  static std::string codec_for_path(const std::filesystem::path&);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  int frames_ = 0;
+  bool finished_ = false;
+  std::vector<std::string> notes_;
+};
+
+}  // namespace vibra::render

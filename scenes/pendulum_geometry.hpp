@@ -1,0 +1,35 @@
+#pragma once
+#include <Eigen/Core>
+
+namespace vibra::scenes {
+
+using Point = Eigen::Vector2d;
+
+/// What the free-body diagram shows at one instant, in scaled units (SPEC 4):
+/// forces divided by m g.
+struct PendulumState {
+  double t = 0, theta = 0, omega = 0, S = 0, D = 0;
+};
+
+/// Proportions of the diagram (SPEC 8.1), in units of the wire length L = 1.
+struct PendulumDiagramOptions {
+  double force_unit = 0.6;          ///< arrow length per unit of scaled force (1.2 L/2)
+  double drag_magnification = 5;    ///< D is drawn this many times longer, and labelled so
+  double bob_radius = 1.0 / 20;     ///< L/20
+  double arc_radius = 1.0 / 6;      ///< L/6
+  double vertical_length = 1.0 / 3; ///< dashed reference line, L/3
+};
+
+/// Every point of the diagram in world units, pivot at the origin, y up.
+/// A pure function of the state: the drawing only strokes these.
+struct PendulumGeometry {
+  Point pivot, bob;
+  Point gravity_tip, wire_force_tip, drag_tip;  ///< arrows start at the bob
+  Point vertical_end;
+  double arc_from = 0, arc_to = 0;  ///< world angles (radians ccw from +x) of the theta arc
+  Point theta_label_direction;      ///< unit vector from the pivot through the arc's midpoint
+};
+
+PendulumGeometry pendulum_geometry(const PendulumState&, const PendulumDiagramOptions&);
+
+}  // namespace vibra::scenes

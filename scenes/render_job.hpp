@@ -1,0 +1,26 @@
+#pragma once
+#include <optional>
+#include <string>
+
+#include "render/frame_sink.hpp"
+#include "scenes/scene_config.hpp"
+
+namespace vibra::scenes {
+
+struct RenderRequest {
+  SceneConfig scene;
+  std::string output;              ///< video, frame pattern, directory, or a still (.png/.svg/.pdf with `at`)
+  std::optional<double> at;        ///< render one still at this time
+  render::VideoSettings video;
+  /// With -o PAGE.html: PNG frames and a page that steps through them,
+  /// instead of PAGE.mp4 + PAGE.webm and a page with a video tag.
+  bool frames_player = false;
+  bool quiet = false;
+};
+
+/// Solves the scene's model, draws every frame and writes the output. Throws
+/// UsageError / SolutionError / OutputError / render::Interrupted; on any of
+/// them nothing is left at the output path.
+void run_render(const RenderRequest&);
+
+}  // namespace vibra::scenes

@@ -1,0 +1,20 @@
+#pragma once
+#include <span>
+
+#include "render/canvas.hpp"
+
+namespace vibra::scenes {
+
+/// A picture of a solution at one instant, fed solution rows (t first, then
+/// the model's columns). The render job calls record() for every step of a
+/// pre-pass (fixed ranges over the run), then, while rendering, observe() for
+/// every solver step and draw() for each frame.
+class Scene {
+ public:
+  virtual ~Scene() = default;
+  virtual void record(std::span<const double> row) = 0;
+  virtual void observe(std::span<const double> row) = 0;
+  virtual void draw(render::Canvas&, std::span<const double> row) = 0;
+};
+
+}  // namespace vibra::scenes

@@ -1,0 +1,260 @@
+#include "scenes/scene_config.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/models/model.hpp"
+#include "scenes/builtin_scenes.hpp"
+
+namespace vibra::scenes {
+
+namespace {
+bool parse_bool(const Setting& s) {
+  if (s.value == "true" || s.value == "1" || s.value == "yes") return true;
+  if (s.value == "false" || s.value == "0" || s.value == "no") return false;
+  throw UsageError(s.origin + ": " + s.key + "=" + s.value + " is not true or false");
+}
+
+double parse_number(const Setting& s) {
+  try {
+    return evaluate_constant(s.key, s.value);
+  } catch (const UsageError& e) {
+    throw UsageError(s.origin + ": " + e.what());
+  }
+}
+
+render::Color parse_color_setting(const Setting& s) {
+  try {
+    return render::parse_color(s.value);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(s.origin + ": " + s.key + ": " + e.what() + ", e.g. #0072b2");
+  }
+}
+
+render::Color* color_slot(SceneConfig& c, const std::string& key) {
+  static const std::map<std::string, render::Color PendulumColors::*> slots = {
+      {"colors.background", &PendulumColors::background}, {"colors.bob", &PendulumColors::bob},
+      {"colors.wire", &PendulumColors::wire},             {"colors.gravity", &PendulumColors::gravity},
+      {"colors.wire_force", &PendulumColors::wire_force}, {"colors.drag", &PendulumColors::drag}};
+  auto it = slots.find(key);
+  return it == slots.end() ? nullptr : &(c.colors.*(it->second));
+}
+
+std::string scalar_text(const toml::node& node) {
+  if (auto s = node.value<std::string>(); s && node.is_string()) return *s;
+  if (node.is_boolean()) return *node.value<bool>() ? "true" : "false";
+  if (node.is_integer()) return std::to_string(*node.value<int64_t>());
+  if (node.is_floating_point()) {
+    char buf[32];
+    return std::string(buf, std::to_chars(buf, buf + sizeof buf, *node.value<double>()).ptr);
+  }
+  return "";
+}
+
+void collect(const toml::table& table, const std::string& prefix, const std::string& file,
+             std::vector<Setting>& out) {
+  for (auto&& [key, node] : table) {
+    const std::string name = prefix + std::string(key.str());
+    const std::string origin = file + ":" + std::to_string(node.source().begin.line);
+    if (const toml::table* inner = node.as_table()) {
+      if (!prefix.empty()) throw UsageError(origin + ": table '" + name + "' is nested too deeply (one level, e.g. [colors])");
+      collect(*inner, name + ".", file, out);
+      continue;
+    }
+    std::string text = scalar_text(node);
+    if (text.empty()) throw UsageError(origin + ": " + name + " must be a number, string or boolean");
+    out.push_back({name, text, origin});
+  }
+}
+}  // namespace
+
+const std::vector<KeySpec>& scene_keys() {
+  static const std::vector<KeySpec> keys = {
+      {"model", ValueKind::choice, "pendulum", "", "model (pendulums: any layout; others: layout plot)", {}, {}},
+      {"size", ValueKind::number, "1280x720", "pixels", "frame size WxH", {}, {}},
+      {"fps", ValueKind::number, "30", "1/s", "frames per second of video", {}, {}},
+      {"speed", ValueKind::number, "0", "time/s", "simulated time per second of video (0: one period in 2 s)", {}, {}},
+      {"frame_per_step", ValueKind::choice, "false", "", "one frame per solver step", {"true", "false"}, {}},
+      {"layout", ValueKind::choice, "fbd+plot", "", "fbd, fbd+plot, or plot (any model)", {"fbd", "fbd+plot", "plot"}, {}},
+      {"window", ValueKind::number, "", "time", "plot window: a time, or N periods as 8periods; none = whole run", {}, {}},
+      {"window_mode", ValueKind::choice, "movement", "", "drawing, movement or jumps (SPEC 8.2)", {"drawing", "movement", "jumps"}, {}},
+      {"drag_magnification", ValueKind::number, "5", "", "drag arrow drawn this many times longer", {}, {}},
+      {"colors.background", ValueKind::number, "#ffffff", "", "colour #rrggbb", {}, {}},
+      {"colors.bob", ValueKind::number, "#0073b3", "", "colour #rrggbb", {}, {}},
+      {"colors.wire", ValueKind::number, "#1a1a1f", "", "colour #rrggbb", {}, {}},
+      {"colors.gravity", ValueKind::number, "#d65e00", "", "colour #rrggbb", {}, {}},
+      {"colors.wire_force", ValueKind::number, "#009e73", "", "colour #rrggbb", {}, {}},
+      {"colors.drag", ValueKind::number, "#cc78a6", "", "colour #rrggbb", {}, {}},
+  };
+  return keys;
+}
+
+void parse_size(const std::string& text, int& width, int& height) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  std::istringstream in(text);
+  if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 1 || h < 1 || w > 8192 || h > 8192)
+    throw UsageError("size '" + text + "' is not WxH with each side 1..8192: write e.g. 1280x720");
+  width = w, height = h;
+}
+
+void apply_setting(SceneConfig& c, const Setting& s) {
+  const std::string& k = s.key;
+  if (k == "model") {
+    try {
+      find_model(s.value);
+    } catch (const UsageError& e) {
+      throw UsageError(s.origin + ": " + e.what());
+    }
+    if (s.value != c.model) c.model_settings.clear();  // the old model's keys do not apply
+    c.model = s.value;
+  } else if (k == "size") {
+    try {
+      parse_size(s.value, c.width, c.height);
+    } catch (const UsageError& e) {
+      throw UsageError(s.origin + ": " + e.what());
+    }
+  } else if (k == "fps") {
+    c.fps = parse_number(s);
+    if (!(c.fps >= 1 && c.fps <= 240) || c.fps != std::round(c.fps))
+      throw UsageError(s.origin + ": fps=" + s.value + " must be a whole number 1..240 (25 or more plays smoothly)");
+  } else if (k == "speed") {
+    c.speed = parse_number(s);
+    if (!(c.speed >= 0) || std::isinf(c.speed)) throw UsageError(s.origin + ": speed=" + s.value + " must be a positive number (0: automatic)");
+  } else if (k == "frame_per_step") {
+    c.frame_per_step = parse_bool(s);
+  } else if (k == "layout") {
+    if (s.value == "fbd") c.layout = Layout::fbd;
+    else if (s.value == "fbd+plot") c.layout = Layout::fbd_plot;
+    else if (s.value == "plot") c.layout = Layout::plot;
+    else throw UsageError(s.origin + ": layout '" + s.value + "' is not one of fbd, fbd+plot, plot");
+  } else if (k == "window") {
+    c.window = s.value;
+    try {
+      window_width(c, 1);
+    } catch (const UsageError& e) {
+      throw UsageError(s.origin + ": " + e.what());
+    }
+  } else if (k == "window_mode") {
+    try {
+      c.window_mode = parse_window_mode(s.value);
+    } catch (const UsageError& e) {
+      throw UsageError(s.origin + ": " + e.what());
+    }
+  } else if (k == "drag_magnification") {
+    c.drag_magnification = parse_number(s);
+    if (!(c.drag_magnification > 0) || std::isinf(c.drag_magnification))
+      throw UsageError(s.origin + ": drag_magnification must be a positive number, e.g. 5");
+  } else if (render::Color* slot = color_slot(c, k)) {
+    *slot = parse_color_setting(s);
+  } else {
+    // Not a scene key: it must be one of the model's.
+    Parameters p = model_parameters(find_model(c.model));
+    std::vector<std::string> names;
+    for (const auto& spec : p.specs()) names.push_back(spec.name);
+    if (std::find(names.begin(), names.end(), k) == names.end()) {
+      for (const auto& spec : scene_keys()) names.push_back(spec.name);
+      const std::string near = closest_match(k, names);
+      throw UsageError(s.origin + ": unknown key '" + k + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+                       ": vibra render --help lists scene keys, vibra solve " + c.model + " --help the model's");
+    }
+    try {
+      p.set(k, s.value);
+    } catch (const UsageError& e) {
+      throw UsageError(s.origin + ": " + e.what());
+    }
+    // dt replaces steps_per_period and T replaces periods (and back), so a
+    // --set can override what a scene file chose the other way.
+    static const std::map<std::string, std::string> rivals = {
+        {"dt", "steps_per_period"}, {"steps_per_period", "dt"}, {"T", "periods"}, {"periods", "T"}};
+    const auto rival = rivals.find(k);
+    auto same = [&](const Setting& o) { return o.key == k || (rival != rivals.end() && o.key == rival->second); };
+    c.model_settings.erase(std::remove_if(c.model_settings.begin(), c.model_settings.end(), same), c.model_settings.end());
+    c.model_settings.push_back(s);
+  }
+}
+
+double window_width(const SceneConfig& c, double period) {
+  if (c.window.empty() || c.window == "none" || c.window == "0") return 0;
+  std::string text = c.window;
+  double unit = 1;
+  const std::string suffix = "periods";
+  if (text.size() > suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0) {
+    text.resize(text.size() - suffix.size());
+    if (!(period > 0)) throw UsageError("window=" + c.window + ": this model has no period; give the window in time units");
+    unit = period;
+  }
+  const double w = evaluate_constant("window", text) * unit;
+  if (!(w > 0) || std::isinf(w)) throw UsageError("window=" + c.window + " must be positive, e.g. 10 or 8periods");
+  return w;
+}
+
+Parameters model_parameters_of(const SceneConfig& c) {
+  Parameters p = model_parameters(find_model(c.model));
+  for (const auto& s : c.model_settings) p.set(s.key, s.value);
+  return p;
+}
+
+std::vector<std::string> builtin_scene_names() {
+  std::vector<std::string> names;
+  for (const auto& [name, text] : builtin_scenes()) names.push_back(name);
+  return names;
+}
+
+SceneConfig load_scene(const std::string& name_or_path) {
+  std::string text, file;
+  for (const auto& [name, preset] : builtin_scenes())
+    if (name == name_or_path) text = preset, file = name + ".toml";
+  // A model's name is a scene too (after the presets, so `pendulum` is the
+  // preset): the pendulums' diagram, any model's moving plot.
+  for (const auto& model : all_models()) {
+    if (!file.empty() || model.name != name_or_path) continue;
+    SceneConfig config;
+    config.name = config.model = model.name;
+    config.layout = model.name == "physical-pendulum" ? Layout::fbd_plot : Layout::plot;
+    return config;
+  }
+  if (file.empty()) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::is_regular_file(name_or_path, ec)) {
+      std::string names;
+      for (const auto& n : builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;
+      throw UsageError("no scene '" + name_or_path + "': give a scene file (.toml), a built-in scene (" + names +
+                       ") or a model name (vibra solve --help lists them)");
+    }
+    std::ifstream in(name_or_path, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    text = buffer.str();
+    file = name_or_path;
+    if (text.find('\0') != std::string::npos) throw UsageError(file + ": is a binary file, not a TOML scene file");
+  }
+  toml::table table;
+  try {
+    table = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    throw UsageError(file + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()) +
+                     " (scene files are TOML: key = value)");
+  }
+  std::vector<Setting> settings;
+  collect(table, "", file, settings);
+  SceneConfig config;
+  config.name = std::filesystem::path(file).stem().string();
+  // The model comes first: the other keys are checked against it.
+  for (const auto& s : settings)
+    if (s.key == "model") apply_setting(config, s);
+  for (const auto& s : settings)
+    if (s.key != "model") apply_setting(config, s);
+  return config;
+}
+
+}  // namespace vibra::scenes

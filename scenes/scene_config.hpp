@@ -1,0 +1,58 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/parameters.hpp"
+#include "scenes/pendulum_scene.hpp"
+
+namespace vibra::scenes {
+
+/// One KEY=VALUE with where it came from ("pendulum.toml:4", "--set"), so
+/// errors can point at it.
+struct Setting {
+  std::string key, value, origin;
+};
+
+/// Everything a render needs besides the output: the model and its settings,
+/// frame size and timing, layout and style. Built from defaults, then a scene
+/// file, then `--set`, then explicit flags, each overriding the one before.
+struct SceneConfig {
+  std::string name = "pendulum";
+  std::string model = "pendulum";
+  std::vector<Setting> model_settings;
+  int width = 1280, height = 720;
+  double fps = 30;
+  double speed = 0;  ///< simulated time per second of video; 0 = one small-oscillation period in 2 s
+  bool frame_per_step = false;
+  Layout layout = Layout::fbd_plot;
+  /// Plot window: "" = the whole run; a time ("10") or periods ("8periods").
+  std::string window;
+  WindowMode window_mode = WindowMode::movement;
+  double drag_magnification = 5;
+  PendulumColors colors;
+};
+
+/// The keys a scene has besides its model's (shown by `vibra render --help`).
+const std::vector<KeySpec>& scene_keys();
+
+/// A built-in scene by name (`pendulum`, `pendulum_book`) or a TOML file.
+/// Throws UsageError naming the file, line and key for bad content.
+SceneConfig load_scene(const std::string& name_or_path);
+
+/// Applies one setting: a scene key, or else a key of the scene's model.
+/// Throws UsageError with `origin`, suggesting the closest valid key.
+void apply_setting(SceneConfig&, const Setting&);
+
+/// The model's Parameters with the scene's model settings applied.
+Parameters model_parameters_of(const SceneConfig&);
+
+/// The window width in time units (0 = whole run), given the model's period.
+double window_width(const SceneConfig&, double period);
+
+/// Parses "WxH"; throws UsageError unless both are 1..8192.
+void parse_size(const std::string& text, int& width, int& height);
+
+/// Names of the built-in scenes.
+std::vector<std::string> builtin_scene_names();
+
+}  // namespace vibra::scenes

@@ -1,0 +1,74 @@
+#pragma once
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "render/column_envelope.hpp"
+#include "render/plot_panel.hpp"
+#include "render/rolling_envelope.hpp"
+
+namespace vibra::scenes {
+
+/// How a plot follows a long run (SPEC 8.2). `whole_run` shows [0, T] with
+/// the curve drawn up to the current time; the others show a window of width w.
+enum class WindowMode {
+  whole_run,
+  drawing,   ///< draw from the window's start; at each multiple of w jump one width ahead
+  movement,  ///< once t > w the window slides with t
+  jumps,     ///< show the last complete window; change only when a window completes
+};
+
+/// Parses "drawing", "movement", "jumps"; throws UsageError otherwise.
+WindowMode parse_window_mode(const std::string&);
+
+/// One curve of a panel: a value computed from a solution row (t first).
+struct SeriesSpec {
+  std::string label;  ///< legend text (Pango markup); "" = no legend entry
+  render::Color color;
+  std::function<double(std::span<const double> row)> value;
+  bool dashed = false;
+};
+
+/// A plot panel of one or more curves against time, fed a solution row at a
+/// time. Memory is one envelope cell per pixel column, whatever the run:
+/// whole_run keeps one envelope over [0, T] (filled by record() in a
+/// pre-pass); window modes keep the newest two windows (filled by observe()).
+class SeriesPanel {
+ public:
+  SeriesPanel(const render::PixelRect& outer, double scale, std::string y_label, std::vector<SeriesSpec> series,
+              double t_end, WindowMode mode, double window);
+
+  /// Pre-pass over the whole run: the y range (fixed for every frame) and, for
+  /// whole_run, the curves.
+  void record(std::span<const double> row);
+  /// Live, for every solver step up to the frame being drawn (window modes).
+  void observe(std::span<const double> row);
+  /// Fixes the y range after the pre-pass.
+  void finish_recording();
+
+  /// Whether draw_static() holds everything that does not change per frame.
+  bool has_static_axes() const { return mode_ == WindowMode::whole_run; }
+  /// Axes and faint whole-run curves (whole_run only).
+  void draw_static(render::Canvas&, bool time_labels) const;
+  /// The dynamic part at time t: curves so far, cursor, and for window
+  /// modes the axes too (they move). `row` is the solution at t.
+  void draw(render::Canvas&, double t, std::span<const double> row, bool time_labels) const;
+
+ private:
+  std::pair<double, double> window_at(double t) const;
+  void draw_axes(render::Canvas&, bool time_labels) const;
+
+  mutable render::PlotPanel panel_;
+  std::string y_label_;
+  std::vector<SeriesSpec> series_;
+  double t_end_;
+  WindowMode mode_;
+  double window_;
+  std::vector<render::ColumnEnvelope> whole_;
+  std::vector<render::RollingEnvelope> recent_;
+  double lo_ = 1e300, hi_ = -1e300;
+};
+
+}  // namespace vibra::scenes

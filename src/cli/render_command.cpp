@@ -1,0 +1,99 @@
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "core/error.hpp"
+#include "scenes/render_job.hpp"
+#include "scenes/scene_config.hpp"
+
+namespace vibra::cli {
+
+namespace {
+struct RenderOptions {
+  std::string scene = "pendulum";
+  std::vector<std::string> settings;
+  std::string output;
+  std::string size, layout, fps, speed;
+  bool frame_per_step = false;
+  bool frames_player = false;
+  std::string window, window_mode;
+  std::optional<double> at;
+  bool quiet = false;
+  render::VideoSettings video;
+};
+
+std::string scene_keys_help() {
+  std::string out = "\nScene keys (in a scene file, or --set KEY=VALUE; any other key goes to the model):\n";
+  char line[256];
+  for (const auto& key : scenes::scene_keys()) {
+    std::snprintf(line, sizeof line, "  %-20s %-58s default: %s\n", key.name.c_str(), key.meaning.c_str(),
+                  key.default_value.c_str());
+    out += line;
+  }
+  out += "\nBuilt-in scenes:";
+  for (const auto& name : scenes::builtin_scene_names()) out += " " + name;
+  out += "\nExamples:\n  vibra render                                   # pendulum.mp4\n"
+         "  vibra render pendulum_book -o frames/tmp_%04d.png\n"
+         "  vibra render --set Theta=40 --set alpha=0.8 -o lecture.webm\n"
+         "  vibra render --at 3.2 -o still.svg\n";
+  return out;
+}
+
+void run(const RenderOptions& o) {
+  scenes::RenderRequest request;
+  request.scene = scenes::load_scene(o.scene);
+  for (const auto& assignment : o.settings) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError("'--set " + assignment + "' is not KEY=VALUE: write e.g. --set Theta=40");
+    scenes::apply_setting(request.scene, {assignment.substr(0, eq), assignment.substr(eq + 1), "--set"});
+  }
+  auto flag = [&](const std::string& key, const std::string& value, const char* name) {
+    if (!value.empty()) scenes::apply_setting(request.scene, {key, value, name});
+  };
+  flag("size", o.size, "--size");
+  flag("layout", o.layout, "--layout");
+  flag("fps", o.fps, "--fps");
+  flag("speed", o.speed, "--speed");
+  flag("window", o.window, "--window");
+  flag("window_mode", o.window_mode, "--window-mode");
+  if (o.frame_per_step) request.scene.frame_per_step = true;
+  request.output = o.output.empty() ? request.scene.name + ".mp4" : o.output;
+  request.at = o.at;
+  request.frames_player = o.frames_player;
+  request.quiet = o.quiet;
+  request.video = o.video;
+  scenes::run_render(request);
+}
+}  // namespace
+
+void add_render_command(CLI::App& app) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* cmd = app.add_subcommand("render", "Draw a scene's frames: video, PNG frames, or one still");
+  cmd->add_option("SCENE", o->scene, "Built-in scene name or a TOML scene file")->capture_default_str();
+  cmd->add_option("--set", o->settings, "KEY=VALUE: a scene key or a model key, repeatable");
+  cmd->add_option("-o,--output", o->output,
+                  "OUT.mp4|.webm|.mkv|.ogv|.gif, PAGE.html (MP4 + WebM + page), frames/tmp_%04d.png or a directory, or a "
+                  "still .png/.svg/.pdf with --at (default: SCENE.mp4)");
+  cmd->add_option("--size", o->size, "Frame size WxH, e.g. 1920x1080");
+  cmd->add_option("--fps", o->fps, "Frames per second");
+  cmd->add_option("--speed", o->speed, "Simulated time units per second of video");
+  cmd->add_flag("--frame-per-step", o->frame_per_step, "One frame per solver step (the book's animation)");
+  cmd->add_option("--layout", o->layout, "fbd (the diagram alone), fbd+plot, or plot (any model's moving plot)");
+  cmd->add_option("--window", o->window, "Plot window: a time or N periods (8periods); default the whole run");
+  cmd->add_option("--window-mode", o->window_mode, "drawing, movement (default) or jumps");
+  cmd->add_flag("--frames-player", o->frames_player, "With -o PAGE.html: PNG frames and a page that steps through them");
+  cmd->add_option("--at", o->at, "Render one still at this time");
+  cmd->add_option("--codec", o->video.codec, "Video codec: h264, vp9, vp8, theora, gif (default from the extension)");
+  cmd->add_option("--quality", o->video.quality, "draft, medium or high")->capture_default_str();
+  cmd->add_option("--crf", o->video.crf, "Constant rate factor (overrides --quality)");
+  cmd->add_option("--preset", o->video.preset, "x264 preset, e.g. veryfast, medium");
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress or messages");
+  cmd->footer(scene_keys_help());
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace vibra::cli

@@ -1,0 +1,53 @@
+// `vibra ascii` end to end: the classic plotter's lines, character for character.
+#include <catch2/catch.hpp>
+
+#include "cli_support.hpp"
+
+using vibra::test::run_vibra;
+
+TEST_CASE("ascii: the book's u and exact series, by hand", "[ascii-command]") {
+  // u'' + 4 pi^2 u = 0, dt = 0.1: u = 1, 0.8026, 0.2884, -0.3397; exact
+  // cos(2 pi t) = 1, 0.8090, 0.3090, -0.3090. Columns round((y + 1.2)/2.4 * 20);
+  // the axis sits at column 10; the exact 'o' draws over '+'.
+  const auto r = run_vibra("ascii undamped --set dt=0.1 --set T=0.3 --width 20 --symbols +o --exact --ymin -1.2 --ymax 1.2");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out ==
+        "+ u   o exact\n"
+        "          |       o   0.0\n"
+        "          |      o    0.1\n"
+        "          | +o        0.2\n"
+        "       o  |           0.3\n");
+}
+
+TEST_CASE("ascii: out-of-range values are appended, counters by time", "[ascii-command]") {
+  const auto r = run_vibra("ascii undamped --set dt=0.1 --set T=0.1 --width 4 --ymin -0.5 --ymax 0.5 --counter time");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out == "  |   1.0E+00 0.0\n  |   8.0E-01 0.1\n");
+}
+
+TEST_CASE("ascii: endless runs end quietly in a pipeline", "[ascii-command]") {
+  const auto r = run_vibra("ascii pendulum --set T=inf | head -5");
+  CHECK(r.exit_code == 0);
+  CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 5);
+  CHECK(r.err.empty());
+}
+
+TEST_CASE("ascii: several series with a legend, default range from the amplitude", "[ascii-command]") {
+  const auto r = run_vibra("ascii pendulum --columns theta,S,D --set periods=1 --width 40");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.substr(0, r.out.find('\n')) == "* theta   o S   + D");
+  const auto second = r.out.substr(r.out.find('\n') + 1);
+  CHECK(second.substr(0, second.find('\n')).size() >= 41);
+}
+
+TEST_CASE("ascii: bad options are one-line errors", "[ascii-command]") {
+  for (const char* args : {"ascii pendulum --columns phi", "ascii pendulum --exact", "ascii undamped --ymin 1",
+                           "ascii undamped --ymin 1 --ymax 0", "ascii undamped --width 0", "ascii undamped --width x",
+                           "ascii undamped --counter days", "ascii undamped --exact --symbols '*'",
+                           "ascii undamped --rate -1"}) {
+    INFO(args);
+    const auto r = run_vibra(args);
+    CHECK(r.exit_code == 2);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+}

@@ -1,0 +1,113 @@
+// Bad input over the real executable: one clear line on stderr, exit code 2,
+// nothing at the output path and no temporary left behind.
+#include <catch2/catch.hpp>
+
+#include "cli_support.hpp"
+
+using vibra::test::run_vibra;
+using vibra::test::ScratchDirectory;
+
+namespace {
+struct BadInput {
+  const char* args;      ///< after `vibra`; OUT is replaced by a path in a scratch directory
+  const char* expected;  ///< part of the one-line message
+};
+
+void check_refused(const BadInput& c) {
+  ScratchDirectory dir;
+  std::string args = c.args;
+  for (auto at = args.find("OUT"); at != std::string::npos; at = args.find("OUT")) args.replace(at, 3, dir / "out");
+  INFO("vibra " << args);
+  const auto r = run_vibra(args);
+  INFO("stderr: " << r.err);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, Catch::Contains(c.expected));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK(dir.empty());
+}
+}  // namespace
+
+TEST_CASE("solve refuses bad input with one line and exit code 2", "[cli]") {
+  const BadInput cases[] = {
+      {"solve", "needs a MODEL"},
+      {"solve pendulm", "did you mean 'pendulum'"},
+      {"solve pendulum --set Thta=3 -o OUT.csv", "did you mean 'Theta'"},
+      {"solve pendulum --set scheme=rk5 -o OUT.csv", "choose one of"},
+      {"solve pendulum --set dt=0 -o OUT.csv", "dt=0 must be a positive"},
+      {"solve pendulum --set dt=-0.1 -o OUT.csv", "must be a positive"},
+      {"solve pendulum --set T=0 -o OUT.csv", "T=0 must be a positive"},
+      {"solve pendulum --set dt=nan -o OUT.csv", "dt"},
+      {"solve pendulum --set dt=1/0 -o OUT.csv", "finite"},
+      {"solve pendulum --set dt=abc -o OUT.csv", "cannot read dt='abc'"},
+      {"solve pendulum --set Theta=40x -o OUT.csv", "Theta"},
+      {"solve undamped --set dt=0.5 -o OUT.csv", "stability limit"},
+      {"solve undamped --set scheme=forward-euler --set dt=0.3 --set T=1e4 -o OUT.csv", "non-finite at step"},
+      {"solve vibration --set 's=sin(x)' -o OUT.csv", "cannot read s='sin(x)'"},
+      {"solve vibration --set 'F=3*cos(' -o OUT.csv", "cannot read F="},
+      {"solve pendulum --set noequals -o OUT.csv", "not KEY=VALUE"},
+      {"solve pendulum --every 0 -o OUT.csv", "--every"},
+      {"solve pendulum -o OUT/missing/dir/x.csv", "does not exist"},
+      {"solve pendulum -o /proc/version/x.csv", "not a directory"},
+      {"solve elastic-pendulum --set beta=1.5 -o OUT.csv", "beta must be < 1"},
+      {"solve two-body --set x0=0 --set y0=0 -o OUT.csv", "cannot start at the star"},
+      {"frobnicate", "unknown command 'frobnicate'"},
+  };
+  for (const auto& c : cases) check_refused(c);
+}
+
+TEST_CASE("render refuses bad input with one line and exit code 2", "[cli]") {
+  const BadInput cases[] = {
+      {"render no_such_scene -o OUT.mp4", "no scene 'no_such_scene'"},
+      {"render --set Thta=40 -o OUT.mp4", "did you mean 'Theta'"},
+      {"render --size 0x720 -o OUT.mp4", "1..8192"},
+      {"render --size 9000x9000 -o OUT.mp4", "1..8192"},
+      {"render --size abc -o OUT.mp4", "WxH"},
+      {"render --fps 0 -o OUT.mp4", "fps=0"},
+      {"render --fps 1000 -o OUT.mp4", "1..240"},
+      {"render --speed -1 -o OUT.mp4", "speed=-1"},
+      {"render --layout sideways -o OUT.mp4", "layout 'sideways'"},
+      {"render -o OUT.xyz", "cannot tell what to write"},
+      {"render -o OUT.png", "add --at T"},
+      {"render -o OUT.svg", "add --at T"},
+      {"render --at 1 -o OUT.mp4", "one still"},
+      {"render --at 1e6 -o OUT.png", "outside the run"},
+      {"render --set dt=-1 -o OUT.mp4", "must be a positive"},
+      {"render --set T=inf -o OUT.mp4", "finite end time"},
+      {"render undamped --layout fbd -o OUT.mp4", "no free-body diagram"},
+      {"render --window-mode sliding -o OUT.mp4", "drawing, movement, jumps"},
+      {"render --window=-2 -o OUT.mp4", "must be positive"},
+      {"render --frames-player -o OUT.mp4", "--frames-player"},
+      {"render --at 1 -o OUT/missing/x.png", "does not exist"},
+  };
+  for (const auto& c : cases) check_refused(c);
+}
+
+TEST_CASE("solve writes CSV that reads back to the same doubles", "[cli]") {
+  ScratchDirectory dir;
+  const auto r = run_vibra("solve undamped --set dt=0.1 --set T=0.2 -o " + (dir / "u.csv"));
+  REQUIRE(r.exit_code == 0);
+  std::FILE* f = std::fopen((dir / "u.csv").c_str(), "r");
+  char text[512] = {};
+  std::fread(text, 1, sizeof text - 1, f);
+  std::fclose(f);
+  CHECK(std::string(text) == "t,u,v\n0,1,0\n0.1,0.8026079119782128,-3.558205396299734\n"
+                             "0.2,0.2883589207400532,-5.7116876070274785\n");
+  CHECK(std::strtod("0.8026079119782128", nullptr) == Approx(0.802607911978213).epsilon(1e-15));
+}
+
+TEST_CASE("solve --every and help", "[cli]") {
+  const auto r = run_vibra("solve pendulum --set steps_per_period=10 --set periods=1 --every 4");
+  REQUIRE(r.exit_code == 0);
+  CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1 + 4);  // header, steps 0, 4, 8, and the last (10)
+  const auto help = run_vibra("solve pendulum --help");
+  CHECK(help.exit_code == 0);
+  CHECK_THAT(help.out, Catch::Contains("Theta") && Catch::Contains("deg") && Catch::Contains("default: 70"));
+  CHECK_THAT(run_vibra("solve --help").out, Catch::Contains("elastic-pendulum") && Catch::Contains("pefrl"));
+}
+
+TEST_CASE("solve to a closed pipe ends quietly", "[cli]") {
+  const auto r = run_vibra("solve pendulum --set T=inf | head -3");
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.size() > 10);
+  CHECK(r.err.empty());
+}

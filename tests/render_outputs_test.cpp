@@ -1,0 +1,158 @@
+// End-to-end renders through the real executable: frame counts and names,
+// videos read back with ffprobe and decoded, pages, stills, interrupts.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "cli_support.hpp"
+
+using vibra::test::run_vibra;
+using vibra::test::ScratchDirectory;
+namespace fs = std::filesystem;
+
+namespace {
+std::string shell(const std::string& command) {
+  std::string out;
+  std::FILE* pipe = ::popen(command.c_str(), "r");
+  char buffer[4096];
+  size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
+  ::pclose(pipe);
+  return out;
+}
+
+/// ffprobe's flat key=value view of the first video stream and the format.
+std::string probe(const std::string& file) {
+  return shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+               "stream=codec_name,profile,pix_fmt,width,height,color_range,color_space,avg_frame_rate,nb_read_frames,duration "
+               "-show_entries format=duration:format_tags=title -of flat=s=_ '" + file + "'");
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+const std::string kShort = " --size 320x180 --set periods=0.5 -q ";  // T = pi: 31 frames at 30 fps
+}  // namespace
+
+TEST_CASE("PNG frames: count, zero padding, and byte-identical reruns", "[render]") {
+  ScratchDirectory a, b;
+  REQUIRE(run_vibra("render" + kShort + "-o " + (a / "tmp_%04d.png")).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShort + "-o " + b.path.string()).exit_code == 0);  // a bare directory
+  int count = 0;
+  for (auto& entry : fs::directory_iterator(a.path)) ++count, (void)entry;
+  CHECK(count == 31);
+  CHECK(fs::exists(a / "tmp_0000.png"));
+  CHECK(fs::exists(a / "tmp_0030.png"));
+  for (const char* name : {"tmp_0000.png", "tmp_0017.png", "tmp_0030.png"}) CHECK(read_file(a / name) == read_file(b / name));
+}
+
+TEST_CASE("one frame per step follows the solver's steps", "[render]") {
+  ScratchDirectory dir;
+  REQUIRE(run_vibra("render pendulum_book --size 320x180 --set periods=1 -q -o " + (dir / "f_%d.png")).exit_code == 0);
+  CHECK(fs::exists(dir / "f_40.png"));  // dt = 2 pi/40: 41 frames, widened to 2 digits
+  CHECK(fs::exists(dir / "f_00.png"));
+  CHECK(!fs::exists(dir / "f_41.png"));
+}
+
+TEST_CASE("MP4: H.264 High, yuv420p, BT.709 tv range, exact frames and duration, faststart", "[render][video]") {
+  ScratchDirectory dir;
+  const std::string file = dir / "p.mp4";
+  REQUIRE(run_vibra("render" + kShort + "-o " + file).exit_code == 0);
+  const std::string p = probe(file);
+  INFO(p);
+  CHECK_THAT(p, Catch::Contains("codec_name=\"h264\"") && Catch::Contains("profile=\"High\"") &&
+                    Catch::Contains("pix_fmt=\"yuv420p\"") && Catch::Contains("color_range=\"tv\"") &&
+                    Catch::Contains("color_space=\"bt709\"") && Catch::Contains("avg_frame_rate=\"30/1\"") &&
+                    Catch::Contains("nb_read_frames=\"31\"") && Catch::Contains("title=\"vibra pendulum\""));
+  CHECK_THAT(p, Catch::Contains("stream_0_duration=\"1.033333\""));  // 31 frames / 30 fps, exactly
+  const std::string bytes = read_file(file);
+  CHECK(bytes.find("moov") < bytes.find("mdat"));
+  CHECK(shell("ffmpeg -v error -i '" + file + "' -f null - 2>&1").empty());  // every frame decodes
+}
+
+TEST_CASE("WebM: VP9 yuv420p with the right frame count", "[render][video]") {
+  ScratchDirectory dir;
+  const std::string file = dir / "p.webm";
+  REQUIRE(run_vibra("render" + kShort + "-o " + file).exit_code == 0);
+  const std::string p = probe(file);
+  INFO(p);
+  CHECK_THAT(p, Catch::Contains("codec_name=\"vp9\"") && Catch::Contains("pix_fmt=\"yuv420p\"") &&
+                    Catch::Contains("nb_read_frames=\"31\"") && Catch::Contains("duration=\"1.03"));
+  CHECK(shell("ffmpeg -v error -i '" + file + "' -f null - 2>&1").empty());
+}
+
+TEST_CASE("odd sizes are rounded up to even for 4:2:0, and said once", "[render][video]") {
+  ScratchDirectory dir;
+  const auto r = run_vibra("render --size 321x181 --set periods=0.1 -o " + (dir / "odd.mp4"));
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.err, Catch::Contains("321x181") && Catch::Contains("322x182"));
+  CHECK_THAT(probe(dir / "odd.mp4"), Catch::Contains("width=322") && Catch::Contains("height=182"));
+}
+
+TEST_CASE("other containers: mkv, ogv, gif, vp8 webm", "[render][video]") {
+  ScratchDirectory dir;
+  struct Case {
+    const char* file;
+    const char* extra;
+    const char* codec;
+  };
+  for (const Case c : {Case{"p.mkv", "", "h264"}, {"p.ogv", "", "theora"}, {"p.gif", "", "gif"},
+                       {"p8.webm", "--codec vp8", "vp8"}}) {
+    INFO(c.file);
+    REQUIRE(run_vibra("render" + kShort + c.extra + " -o " + (dir / c.file)).exit_code == 0);
+    const std::string p = probe(dir / c.file);
+    CHECK_THAT(p, Catch::Contains(std::string("codec_name=\"") + c.codec + "\"") && Catch::Contains("nb_read_frames=\"31\""));
+  }
+}
+
+TEST_CASE("an HTML page: MP4 first, then WebM, with the parameters", "[render][video]") {
+  ScratchDirectory dir;
+  REQUIRE(run_vibra("render" + kShort + "--set alpha=0.3 -o " + (dir / "lecture.html")).exit_code == 0);
+  const std::string page = read_file(dir / "lecture.html");
+  CHECK(fs::exists(dir / "lecture.mp4"));
+  CHECK(fs::exists(dir / "lecture.webm"));
+  CHECK(page.find("lecture.mp4") < page.find("lecture.webm"));
+  CHECK_THAT(page, Catch::Contains("video/mp4") && Catch::Contains("alpha") && Catch::Contains("0.3"));
+  REQUIRE(run_vibra("render" + kShort + "--frames-player -o " + (dir / "player.html")).exit_code == 0);
+  CHECK(fs::exists(dir / "player_frames/frame_0030.png"));
+  CHECK_THAT(read_file(dir / "player.html"), Catch::Contains("player_frames/frame_") && Catch::Contains("speed"));
+}
+
+TEST_CASE("stills: PNG, SVG and PDF at a chosen time", "[render]") {
+  ScratchDirectory dir;
+  for (const char* name : {"s.png", "s.svg", "s.pdf"})
+    REQUIRE(run_vibra("render --at 1.5 -q -o " + (dir / name)).exit_code == 0);
+  CHECK(read_file(dir / "s.png").substr(1, 3) == "PNG");
+  CHECK(read_file(dir / "s.svg").substr(0, 5) == "<?xml");
+  CHECK(read_file(dir / "s.pdf").substr(0, 4) == "%PDF");
+}
+
+TEST_CASE("SIGINT stops a render cleanly: exit 130, nothing at the final path, no temporary", "[render][video]") {
+  ScratchDirectory dir;
+  const std::string file = dir / "long.mp4";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    dup2(null, 2);
+    execl(VIBRA_EXE, VIBRA_EXE, "render", "--set", "periods=500", "-q", "-o", file.c_str(), (char*)nullptr);
+    _exit(127);
+  }
+  // Wait until the encoder has its temporary file, then interrupt.
+  for (int i = 0; i < 200 && dir.empty(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 130);
+  CHECK(dir.empty());
+}
