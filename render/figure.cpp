@@ -104,27 +104,47 @@ int data_inside(const Placed& p, const std::vector<std::unique_ptr<Series>>& ser
   return count;
 }
 
-void draw_legend(Canvas& canvas, const Placed& p, const std::vector<std::unique_ptr<Series>>& series) {
+void draw_legend_sample(Canvas& canvas, const Point& a0, const Point& a1, const SeriesStyle& st) {
+  if (st.line_width > 0) draw_pixel_line(canvas, a0, a1, {st.color, st.line_width, st.dashed});
+  if (st.markers) draw_marker(canvas, (a0 + a1) / 2, st.color);
+}
+
+/// The legend: in one row above the panel's top-right corner when it fits
+/// beside the y label (it then hides no data), else in the corner of the plot
+/// area that hides the least data.
+void draw_legend(Canvas& canvas, const Placed& p, const std::vector<std::unique_ptr<Series>>& series,
+                 double y_label_width) {
   std::vector<const Series*> entries;
   for (const auto& s : series)
     if (!s->label().empty()) entries.push_back(s.get());
   if (entries.empty()) return;
-  const double s = canvas.scale(), pad = 8 * s, sample = 32 * s, gap = 8 * s;
+  const double s = canvas.scale(), sample = 30 * s, gap = 7 * s, spacing = 18 * s;
   const TextStyle style{kLegendFont, palette::ink};
-  double text_width = 0, row = 0;
+  std::vector<Point> sizes;
+  double row_width = 0, text_width = 0, row = 0;
   for (const Series* e : entries) {
-    const Point size = text_size(canvas, e->label(), style);
-    text_width = std::max(text_width, size.x()), row = std::max(row, size.y());
+    sizes.push_back(text_size(canvas, e->label(), style));
+    row_width += (row_width > 0 ? spacing : 0) + sample + gap + sizes.back().x();
+    text_width = std::max(text_width, sizes.back().x()), row = std::max(row, sizes.back().y());
+  }
+  const PixelRect& a = p.area;
+  if (row_width <= a.w - y_label_width - 30 * s) {
+    double x = a.x + a.w - row_width;
+    const double y = a.y - 4 * s - row / 2;
+    for (size_t i = 0; i < entries.size(); ++i) {
+      draw_legend_sample(canvas, {x, y}, {x + sample, y}, entries[i]->style());
+      draw_text(canvas, {x + sample + gap, y}, entries[i]->label(), style, Anchor::left);
+      x += sample + gap + sizes[i].x() + spacing;
+    }
+    return;
   }
   row += 3 * s;
+  const double pad = 8 * s, inset = 8 * s;
   const double w = pad + sample + gap + text_width + pad, h = 2 * pad + row * entries.size() - 3 * s;
-  const double inset = 8 * s;
-  const PixelRect& a = p.area;
   const PixelRect corners[] = {{a.x + a.w - inset - w, a.y + inset, w, h},
                                {a.x + inset, a.y + inset, w, h},
                                {a.x + a.w - inset - w, a.y + a.h - inset - h, w, h},
                                {a.x + inset, a.y + a.h - inset - h, w, h}};
-  // The corner that hides the least data; top right when all are equal.
   const PixelRect* best = &corners[0];
   int least = -1;
   for (const PixelRect& c : corners) {
@@ -139,12 +159,9 @@ void draw_legend(Canvas& canvas, const Placed& p, const std::vector<std::unique_
   cairo_set_line_width(cr, 1 * s);
   cairo_stroke(cr);
   for (size_t i = 0; i < entries.size(); ++i) {
-    const SeriesStyle& st = entries[i]->style();
     const double y = box.y + pad + (i + 0.5) * row - 1.5 * s;
-    const Point a0(box.x + pad, y), a1(box.x + pad + sample, y);
-    if (st.line_width > 0) draw_pixel_line(canvas, a0, a1, {st.color, st.line_width, st.dashed});
-    if (st.markers) draw_marker(canvas, (a0 + a1) / 2, st.color);
-    draw_text(canvas, {a1.x() + gap, y}, entries[i]->label(), style, Anchor::left);
+    draw_legend_sample(canvas, {box.x + pad, y}, {box.x + pad + sample, y}, entries[i]->style());
+    draw_text(canvas, {box.x + pad + sample + gap, y}, entries[i]->label(), style, Anchor::left);
   }
 }
 
@@ -262,7 +279,7 @@ void Figure::draw(Canvas& canvas) const {
   for (int pass = 0; pass < 2; ++pass) {
     left = 0;
     for (Placed& p : placed) {
-      for (const auto& tick : p.y.ticks(tick_target(p.area.h, 42 * s)))
+      for (const auto& tick : p.y.ticks(tick_target(p.area.h, 32 * s)))
         left = std::max(left, text_size(canvas, tick.label, tick_style).x());
     }
     left += 16 * s;
@@ -286,7 +303,7 @@ void Figure::draw(Canvas& canvas) const {
     const Placed& p = placed[i];
     const PanelOptions& o = panels_[i].options;
     const auto x_ticks = p.x.ticks(tick_target(p.area.w, 110 * s));
-    const auto y_ticks = p.y.ticks(tick_target(p.area.h, 42 * s));
+    const auto y_ticks = p.y.ticks(tick_target(p.area.h, 32 * s));
     for (const auto& t : y_ticks) {
       const double y = p.to_pixel(p.x.lo(), t.value).y();
       draw_pixel_line(canvas, {p.area.x, y}, {p.area.x + p.area.w, y}, {t.label.empty() ? palette::grid.with_alpha(0.5) : palette::grid, 1});
@@ -308,7 +325,7 @@ void Figure::draw(Canvas& canvas) const {
     if (p.x_label)
       draw_text(canvas, {p.area.x + p.area.w / 2, p.area.y + p.area.h + tick_h + 10 * s}, o.x_label, label_style,
                 Anchor::top);
-    draw_legend(canvas, p, panels_[i].series);
+    draw_legend(canvas, p, panels_[i].series, text_size(canvas, o.y_label, label_style).x());
   }
 }
 

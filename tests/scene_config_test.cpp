@@ -55,7 +55,7 @@ TEST_CASE("window widths in time units or periods", "[scene-config]") {
   CHECK(window_width(c, 2 * M_PI) == 12.5);
 }
 
-TEST_CASE("--set overrides scene keys and model keys", "[scene-config]") {
+TEST_CASE("settings given with --set override scene keys and model keys", "[scene-config]") {
   SceneConfig c = load_scene("pendulum");
   apply_setting(c, {"Theta", "40", "--set"});
   apply_setting(c, {"size", "640x360", "--set"});

@@ -8,5 +8,7 @@ namespace vibra::cli {
 void add_solve_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_ascii_command(CLI::App& app);
+void add_plot_command(CLI::App& app);
+void add_analyze_command(CLI::App& app);
 
 }  // namespace vibra::cli
