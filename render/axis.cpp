@@ -86,23 +86,26 @@ std::vector<AxisTick> Axis::ticks(int target) const {
   // With fewer than two decades in view, 2x and 5x get labels too, so the axis is readable.
   const bool label_minor = last - first < 1;
   const bool minor_grid = every == 1 && span <= 6;
-  bool plain = true;
+  struct Mark {
+    int m, k;
+    bool labelled;
+  };
+  std::vector<Mark> marks;
   for (int k = first - 1; k <= last; ++k)
-    if (k < -4 || k > 4) plain = false;
-
-  std::vector<AxisTick> out;
-  for (int k = first - 1; k <= last; ++k) {
     for (int m = 1; m <= 9; ++m) {
-      const double value = m * std::pow(10.0, k), at = std::log10(value);
+      const double at = std::log10(m * std::pow(10.0, k));
       if (at < lo_ - 1e-9 || at > hi_ + 1e-9) continue;
       const bool major = m == 1 && (k - first) % every == 0;
       const bool labelled = major || (label_minor && (m == 2 || m == 5));
-      if (labelled)
-        out.push_back({value, log_label(m, k, plain)});
-      else if (minor_grid || m == 1)
-        out.push_back({value, ""});
+      if (labelled || minor_grid || m == 1) marks.push_back({m, k, labelled});
     }
-  }
+  // Plain decimals read best from 0.001 to 1000; beyond, powers of ten.
+  bool plain = true;
+  for (const Mark& mark : marks)
+    if (mark.labelled && (mark.k < -3 || mark.k > 3)) plain = false;
+  std::vector<AxisTick> out;
+  for (const Mark& mark : marks)
+    out.push_back({mark.m * std::pow(10.0, mark.k), mark.labelled ? log_label(mark.m, mark.k, plain) : ""});
   return out;
 }
 

@@ -306,12 +306,12 @@ void Figure::draw(Canvas& canvas) const {
     const auto y_ticks = p.y.ticks(tick_target(p.area.h, 32 * s));
     for (const auto& t : y_ticks) {
       const double y = p.to_pixel(p.x.lo(), t.value).y();
-      draw_pixel_line(canvas, {p.area.x, y}, {p.area.x + p.area.w, y}, {t.label.empty() ? palette::grid.with_alpha(0.5) : palette::grid, 1});
+      draw_pixel_line(canvas, {p.area.x, y}, {p.area.x + p.area.w, y}, {t.label.empty() ? palette::grid.with_alpha(0.4) : palette::grid, 1});
       if (!t.label.empty()) draw_text(canvas, {p.area.x - 6 * s, y}, t.label, tick_style, Anchor::right);
     }
     for (const auto& t : x_ticks) {
       const double x = p.to_pixel(t.value, p.y.lo()).x();
-      draw_pixel_line(canvas, {x, p.area.y}, {x, p.area.y + p.area.h}, {t.label.empty() ? palette::grid.with_alpha(0.5) : palette::grid, 1});
+      draw_pixel_line(canvas, {x, p.area.y}, {x, p.area.y + p.area.h}, {t.label.empty() ? palette::grid.with_alpha(0.4) : palette::grid, 1});
       if (p.x_tick_labels && !t.label.empty())
         draw_text(canvas, {x, p.area.y + p.area.h + 4 * s}, t.label, tick_style, Anchor::top);
     }

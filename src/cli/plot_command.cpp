@@ -1,0 +1,79 @@
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/model_help.hpp"
+#include "core/error.hpp"
+#include "render/figure.hpp"
+#include "scenes/run_caption.hpp"
+#include "scenes/scene_config.hpp"
+#include "scenes/trajectory_figure.hpp"
+
+namespace vibra::cli {
+
+namespace {
+struct PlotOptions {
+  std::string model;
+  std::vector<std::string> settings;
+  std::string output;
+  std::string panels;
+  std::string size;
+  bool help = false;
+};
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+constexpr const char* kUsage = "Usage: vibra plot MODEL [--set KEY=VALUE]... -o FILE.png|svg|pdf [--panels LIST] [--size WxH]\n";
+constexpr const char* kExamples =
+    "\nPanels: any column of the model but t (against t; neighbours share the t axis), exact (the exact\n"
+    "solution over the main quantity, dashed), phase (main quantity against its velocity), path (y against x,\n"
+    "equal aspect; elastic-pendulum and two-body). Defaults: theta,S,D for the pendulums, path for\n"
+    "elastic-pendulum and two-body, the main quantity otherwise.\n"
+    "\nExamples:\n"
+    "  vibra plot pendulum -o pendulum.png                       # theta, S and D against t\n"
+    "  vibra plot undamped --panels u,exact --set periods=4 -o u.svg\n"
+    "  vibra plot elastic-pendulum --set Theta=40 --set eps=0.1 -o path.pdf\n";
+
+void run_plot(const PlotOptions& o) {
+  if (o.help || o.model.empty()) {
+    std::printf("%s%s\n%s", kUsage, kExamples, o.model.empty() ? models_help().c_str() : model_keys_help(find_model(o.model)).c_str());
+    if (!o.help) throw UsageError("vibra plot needs a MODEL, e.g. vibra plot pendulum -o pendulum.png");
+    return;
+  }
+  if (o.output.empty()) throw UsageError("vibra plot needs an output file: add -o FILE.png, FILE.svg or FILE.pdf");
+  render::require_picture_extension(o.output);
+  const Parameters parameters = model_settings(o.model, o.settings);
+  std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
+  const std::vector<std::string> panels =
+      o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : split_list(o.panels);
+  int width = 1280, height = panels.size() > 2 ? 960 : 720;
+  if (!o.size.empty()) scenes::parse_size(o.size, width, height);
+  const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);
+  scenes::trajectory_figure(*trajectory, panels, width, height, title).write(o.output);
+}
+}  // namespace
+
+void add_plot_command(CLI::App& app) {
+  auto o = std::make_shared<PlotOptions>();
+  CLI::App* cmd = app.add_subcommand("plot", "Draw a model's solution as a static figure (PNG, SVG or PDF)");
+  cmd->set_help_flag();  // our own help lists the model's keys
+  cmd->add_flag("-h,--help", o->help, "Usage, panels and examples; with MODEL, the model's keys");
+  cmd->add_option("MODEL", o->model, "Model name (vibra solve --help lists them)");
+  cmd->add_option("--set", o->settings, "KEY=VALUE, repeatable (vibra plot MODEL --help lists keys)")
+      ->allow_extra_args(false);
+  cmd->add_option("-o,--output", o->output, "Picture file: .png, .svg or .pdf");
+  cmd->add_option("--panels", o->panels, "Comma-separated panels, e.g. theta,S,D or u,exact or path");
+  cmd->add_option("--size", o->size, "Picture size WxH in pixels (default 1280x720, 1280x960 for 3+ panels)");
+  cmd->callback([o] { run_plot(*o); });
+}
+
+}  // namespace vibra::cli

@@ -1,0 +1,28 @@
+#pragma once
+#include <cstdio>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace vibra::cli {
+
+/// A table of results, printed with aligned columns for people or as CSV for
+/// programs. Reals show 4 significant digits when aligned and the shortest
+/// form that reads back exactly in CSV; NaN is an empty cell.
+class Table {
+ public:
+  using Cell = std::variant<std::string, long long, double>;
+
+  explicit Table(std::vector<std::string> columns) : columns_(std::move(columns)) {}
+  void add_row(std::vector<Cell> cells) { rows_.push_back(std::move(cells)); }
+  size_t rows() const { return rows_.size(); }
+
+  void print_aligned(std::FILE*) const;
+  void print_csv(std::FILE*) const;
+
+ private:
+  std::vector<std::string> columns_;
+  std::vector<std::vector<Cell>> rows_;
+};
+
+}  // namespace vibra::cli

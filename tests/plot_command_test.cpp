@@ -1,0 +1,114 @@
+// `vibra plot`: panel names, defaults, and the figure the executable writes.
+#include <cairo.h>
+
+#include <catch2/catch.hpp>
+#include <memory>
+
+#include "cli_support.hpp"
+#include "core/error.hpp"
+#include "render/color.hpp"
+#include "scenes/trajectory_figure.hpp"
+#include "test_support.hpp"
+
+using namespace vibra;
+using test::run_vibra;
+using test::ScratchDirectory;
+
+namespace {
+using Names = std::vector<std::string>;
+
+Names defaults_for(const std::string& model) {
+  return scenes::default_plot_panels(test::trajectory(model, {})->info());
+}
+
+/// Pixels of colour c in the rows [y0, y1) of a PNG.
+int colour_pixels(const std::string& png, const render::Color& c, int y0, int y1) {
+  std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> s(cairo_image_surface_create_from_png(png.c_str()),
+                                                                   cairo_surface_destroy);
+  const unsigned char* data = cairo_image_surface_get_data(s.get());
+  const int stride = cairo_image_surface_get_stride(s.get()), width = cairo_image_surface_get_width(s.get());
+  int n = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = 0; x < width; ++x) {
+      const unsigned char* p = data + y * stride + 4 * x;
+      n += std::abs(p[2] - c.r * 255) < 30 && std::abs(p[1] - c.g * 255) < 30 && std::abs(p[0] - c.b * 255) < 30;
+    }
+  return n;
+}
+
+std::pair<int, int> png_size(const std::string& png) {
+  std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> s(cairo_image_surface_create_from_png(png.c_str()),
+                                                                   cairo_surface_destroy);
+  return {cairo_image_surface_get_width(s.get()), cairo_image_surface_get_height(s.get())};
+}
+}  // namespace
+
+TEST_CASE("plot panels default to the chapter's figures for each model", "[plot]") {
+  CHECK(defaults_for("pendulum") == Names{"theta", "S", "D"});
+  CHECK(defaults_for("physical-pendulum") == Names{"theta", "S", "D"});
+  CHECK(defaults_for("undamped") == Names{"u"});
+  CHECK(defaults_for("vibration") == Names{"u"});
+  CHECK(defaults_for("elastic-pendulum") == Names{"path"});
+  CHECK(defaults_for("two-body") == Names{"path"});
+  CHECK(scenes::plot_panel_names(test::trajectory("undamped", {})->info()) == Names{"u", "v", "exact", "phase"});
+}
+
+TEST_CASE("plot refuses unknown panels and an exact solution that does not exist", "[plot]") {
+  auto undamped = test::trajectory("undamped", {});
+  CHECK_THROWS_WITH(scenes::trajectory_figure(*undamped, {"u", "thta"}, 800, 600, ""),
+                    Catch::Contains("unknown panel 'thta'") && Catch::Contains("choose from u, v, exact, phase"));
+  CHECK_THROWS_WITH(scenes::trajectory_figure(*undamped, {"path"}, 800, 600, ""), Catch::Contains("unknown panel 'path'"));
+  auto damped = test::trajectory("pendulum", {"alpha=0.4"});
+  CHECK_THROWS_AS(scenes::trajectory_figure(*damped, {"theta", "exact"}, 800, 600, ""), UsageError);
+  auto endless = test::trajectory("undamped", {"T=inf"});
+  CHECK_THROWS_WITH(scenes::trajectory_figure(*endless, {"u"}, 800, 600, ""), Catch::Contains("finite end time"));
+}
+
+TEST_CASE("vibra plot stacks the pendulum's theta, S and D with data in each panel", "[plot]") {
+  ScratchDirectory dir;
+  const auto r = run_vibra("plot pendulum --size 1000x900 -o " + (dir / "p.png"));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(png_size(dir / "p.png") == std::make_pair(1000, 900));
+  // Panel colours in turn: blue, green, purple; each appears in its third only.
+  CHECK(colour_pixels(dir / "p.png", render::palette::blue, 0, 300) > 300);
+  CHECK(colour_pixels(dir / "p.png", render::palette::green, 300, 600) > 300);
+  CHECK(colour_pixels(dir / "p.png", render::palette::purple, 600, 900) > 300);
+  CHECK(colour_pixels(dir / "p.png", render::palette::blue, 300, 900) == 0);
+}
+
+TEST_CASE("vibra plot overlays the exact solution dashed and writes vector formats", "[plot]") {
+  ScratchDirectory dir;
+  REQUIRE(run_vibra("plot undamped --panels u,exact --set periods=3 -o " + (dir / "u.png")).exit_code == 0);
+  CHECK(png_size(dir / "u.png") == std::make_pair(1280, 720));
+  CHECK(colour_pixels(dir / "u.png", render::palette::vermillion, 0, 720) > 300);
+  REQUIRE(run_vibra("plot two-body --set periods=2 -o " + (dir / "orbit.svg")).exit_code == 0);
+  REQUIRE(run_vibra("plot elastic-pendulum --panels path,x,phase -o " + (dir / "e.pdf")).exit_code == 0);
+  CHECK(std::filesystem::file_size(dir / "orbit.svg") > 1000);
+  CHECK(std::filesystem::file_size(dir / "e.pdf") > 1000);
+}
+
+TEST_CASE("vibra plot refuses bad input with one line, exit code 2 and no file", "[plot]") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"plot pendulum --panels theta,omeg -o OUT.png", "did you mean 'omega'"},
+      {"plot undamped --panels u,phse -o OUT.png", "did you mean 'phase'"},
+      {"plot vibration --panels u,exact -o OUT.png", "no exact solution"},
+      {"plot undamped -o OUT.jpg", ".png, .svg or .pdf"},
+      {"plot undamped", "needs an output file"},
+      {"plot undamped --size 10x0 -o OUT.png", "WxH"},
+      {"plot undamped -o OUT/missing/u.png", "does not exist"},
+      {"plot undamped --set T=inf -o OUT.png", "finite end time"},
+  };
+  for (const auto& [args_template, expected] : cases) {
+    ScratchDirectory dir;
+    std::string args = args_template;
+    for (auto at = args.find("OUT"); at != std::string::npos; at = args.find("OUT")) args.replace(at, 3, dir / "out");
+    INFO("vibra " << args);
+    const auto r = run_vibra(args);
+    INFO("stderr: " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains(expected));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(dir.empty());
+  }
+}
