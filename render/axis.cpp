@@ -53,8 +53,8 @@ double Axis::lo() const { return scale_ == AxisScale::linear ? lo_ : std::pow(10
 double Axis::hi() const { return scale_ == AxisScale::linear ? hi_ : std::pow(10.0, hi_); }
 
 void Axis::set_range(double lo, double hi) {
+  if (!shows(lo) || !shows(hi) || !(hi > lo)) return fit(lo, hi);
   lo_ = to_axis(lo), hi_ = to_axis(hi);
-  if (!(hi_ > lo_)) fit(lo, hi);
 }
 
 void Axis::fit(double lo, double hi) {
@@ -78,14 +78,24 @@ void Axis::widen(double factor) {
 double Axis::fraction(double v) const { return (to_axis(v) - lo_) / (hi_ - lo_); }
 
 std::vector<AxisTick> Axis::ticks(int target) const {
+  if (!fixed_ticks_.empty()) {
+    std::vector<AxisTick> out;
+    for (double v : fixed_ticks_) {
+      if (!shows(v) || fraction(v) < -1e-9 || fraction(v) > 1 + 1e-9) continue;
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.4g", std::abs(v));
+      out.push_back({v, (v < 0 ? kMinus : "") + buf});
+    }
+    return out;
+  }
   if (scale_ == AxisScale::linear) return label_linear(nice_ticks(lo_, hi_, target));
 
   const double span = hi_ - lo_;
   const int first = static_cast<int>(std::ceil(lo_ - 1e-9)), last = static_cast<int>(std::floor(hi_ + 1e-9));
   const int every = std::max(1, static_cast<int>(std::ceil(span / std::max(1, target))));
-  // With fewer than two decades in view, 2x and 5x get labels too, so the axis is readable.
+  // With at most one power of ten in view, 2x and 5x get labels too, so the axis is readable.
   const bool label_minor = last - first < 1;
-  const bool minor_grid = every == 1 && span <= 6;
+  const bool minor_grid = every == 1 && span <= 3;
   struct Mark {
     int m, k;
     bool labelled;

@@ -36,13 +36,18 @@ class Axis {
   double fraction(double v) const;
 
   /// About `target` labelled ticks inside the range, and on a logarithmic axis
-  /// unlabelled minor ticks (2..9 times a power of ten) for the grid.
+  /// unlabelled minor ticks (2..9 times a power of ten) for the grid; or the
+  /// ticks set by place_ticks_at().
   std::vector<AxisTick> ticks(int target) const;
+  /// Ticks at exactly these values (e.g. the dt values of a study), labelled
+  /// with 4 significant digits.
+  void place_ticks_at(std::vector<double> values) { fixed_ticks_ = std::move(values); }
 
  private:
   double to_axis(double v) const;
   AxisScale scale_;
   double lo_ = 0, hi_ = 1;  ///< in axis units: the value, or log10 of it
+  std::vector<double> fixed_ticks_;
 };
 
 }  // namespace vibra::render

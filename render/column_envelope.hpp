@@ -1,4 +1,6 @@
 #pragma once
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "render/canvas.hpp"
@@ -21,19 +23,25 @@ class ColumnEnvelope {
   /// Column of x, clamped to the range.
   int column_of(double x) const;
 
-  /// Pixel polyline through columns [0, last_column], with `to_pixel(column, y)`.
+  /// Pixel polyline through columns [0, last_column].
   template <class ToPixel>
   std::vector<Point> polyline(int last_column, ToPixel&& to_pixel) const {
+    return polyline(0, last_column, std::forward<ToPixel>(to_pixel));
+  }
+
+  /// Pixel polyline through columns [first_column, last_column], with
+  /// `to_pixel(column, y)`. A column whose values are all equal adds one point.
+  template <class ToPixel>
+  std::vector<Point> polyline(int first_column, int last_column, ToPixel&& to_pixel) const {
     std::vector<Point> out;
-    for (int c = 0; c <= last_column && c < columns(); ++c) {
+    for (int c = std::max(0, first_column); c <= last_column && c < columns(); ++c) {
       const Cell& k = cells_[c];
       if (!k.used) continue;
       out.push_back(to_pixel(c, k.first));
-      if (k.min != k.max) {
-        const bool rising = k.first <= k.last;
-        out.push_back(to_pixel(c, rising ? k.min : k.max));
-        out.push_back(to_pixel(c, rising ? k.max : k.min));
-      }
+      if (k.min == k.max) continue;
+      const bool rising = k.first <= k.last;
+      out.push_back(to_pixel(c, rising ? k.min : k.max));
+      out.push_back(to_pixel(c, rising ? k.max : k.min));
       out.push_back(to_pixel(c, k.last));
     }
     return out;

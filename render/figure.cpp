@@ -28,6 +28,7 @@ struct Placed {
   PixelRect area;
   bool x_tick_labels = false;  ///< lowest panel of a group sharing the x axis
   bool x_label = false;
+  double y_label_bottom = 0;   ///< the y label sits on this line (above the legend row if it has one)
 
   Point to_pixel(double vx, double vy) const {
     return {area.x + x.fraction(vx) * area.w, area.y + (1 - y.fraction(vy)) * area.h};
@@ -38,7 +39,6 @@ struct Placed {
 /// Data extents of a panel's series on its axes (log axes count positive values only).
 struct Extents {
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-  bool empty() const { return x0 > x1; }
 };
 
 Extents extents_of(const std::vector<std::unique_ptr<Series>>& series, const Axis& x, const Axis& y) {
@@ -109,38 +109,60 @@ void draw_legend_sample(Canvas& canvas, const Point& a0, const Point& a1, const 
   if (st.markers) draw_marker(canvas, (a0 + a1) / 2, st.color);
 }
 
-/// The legend: in one row above the panel's top-right corner when it fits
-/// beside the y label (it then hides no data), else in the corner of the plot
-/// area that hides the least data.
-void draw_legend(Canvas& canvas, const Placed& p, const std::vector<std::unique_ptr<Series>>& series,
-                 double y_label_width) {
+/// A panel's legend, measured. It goes in one row above the panel's top-right
+/// corner beside the y label, or in a row of its own above the panel, where it
+/// hides no data; only when neither is wide enough, into the corner of the
+/// plot area that hides the least data.
+struct Legend {
+  enum class Place { none, beside_label, own_row, corner };
   std::vector<const Series*> entries;
-  for (const auto& s : series)
-    if (!s->label().empty()) entries.push_back(s.get());
-  if (entries.empty()) return;
-  const double s = canvas.scale(), sample = 30 * s, gap = 7 * s, spacing = 18 * s;
-  const TextStyle style{kLegendFont, palette::ink};
   std::vector<Point> sizes;
   double row_width = 0, text_width = 0, row = 0;
-  for (const Series* e : entries) {
-    sizes.push_back(text_size(canvas, e->label(), style));
-    row_width += (row_width > 0 ? spacing : 0) + sample + gap + sizes.back().x();
-    text_width = std::max(text_width, sizes.back().x()), row = std::max(row, sizes.back().y());
+  Place place = Place::none;
+};
+
+constexpr double kSample = 30, kSampleGap = 7, kEntrySpacing = 18;
+
+Legend measure_legend(Canvas& canvas, const std::vector<std::unique_ptr<Series>>& series, double y_label_width,
+                      double area_width) {
+  Legend legend;
+  const double s = canvas.scale();
+  for (const auto& e : series) {
+    if (e->label().empty()) continue;
+    legend.entries.push_back(e.get());
+    legend.sizes.push_back(text_size(canvas, e->label(), {kLegendFont, palette::ink}));
+    legend.row_width += (legend.row_width > 0 ? kEntrySpacing * s : 0) + (kSample + kSampleGap) * s + legend.sizes.back().x();
+    legend.text_width = std::max(legend.text_width, legend.sizes.back().x());
+    legend.row = std::max(legend.row, legend.sizes.back().y());
   }
+  if (legend.entries.empty()) return legend;
+  if (legend.row_width <= area_width - y_label_width - 30 * s)
+    legend.place = Legend::Place::beside_label;
+  else if (legend.row_width <= area_width)
+    legend.place = Legend::Place::own_row;
+  else
+    legend.place = Legend::Place::corner;
+  return legend;
+}
+
+void draw_legend(Canvas& canvas, const Placed& p, const std::vector<std::unique_ptr<Series>>& series, const Legend& legend) {
+  const double s = canvas.scale(), sample = kSample * s, gap = kSampleGap * s;
+  const TextStyle style{kLegendFont, palette::ink};
   const PixelRect& a = p.area;
-  if (row_width <= a.w - y_label_width - 30 * s) {
-    double x = a.x + a.w - row_width;
-    const double y = a.y - 4 * s - row / 2;
+  const auto& entries = legend.entries;
+  if (legend.place == Legend::Place::none) return;
+  if (legend.place != Legend::Place::corner) {
+    double x = a.x + a.w - legend.row_width;
+    const double y = a.y - 4 * s - legend.row / 2;
     for (size_t i = 0; i < entries.size(); ++i) {
       draw_legend_sample(canvas, {x, y}, {x + sample, y}, entries[i]->style());
       draw_text(canvas, {x + sample + gap, y}, entries[i]->label(), style, Anchor::left);
-      x += sample + gap + sizes[i].x() + spacing;
+      x += sample + gap + legend.sizes[i].x() + kEntrySpacing * s;
     }
     return;
   }
-  row += 3 * s;
-  const double pad = 8 * s, inset = 8 * s;
-  const double w = pad + sample + gap + text_width + pad, h = 2 * pad + row * entries.size() - 3 * s;
+  const double row = legend.row + 3 * s, pad = 8 * s, inset = 8 * s;
+  const double w = pad + sample + gap + legend.text_width + pad, h = 2 * pad + row * entries.size() - 3 * s;
   const PixelRect corners[] = {{a.x + a.w - inset - w, a.y + inset, w, h},
                                {a.x + inset, a.y + inset, w, h},
                                {a.x + a.w - inset - w, a.y + a.h - inset - h, w, h},
@@ -170,13 +192,147 @@ void draw_series(Canvas& canvas, const Placed& p, const Series& series) {
   cairo_save(canvas.cr());
   cairo_rectangle(canvas.cr(), p.area.x, p.area.y, p.area.w, p.area.h);
   cairo_clip(canvas.cr());
+  // Stroked in pieces: Cairo's memory for one stroke grows with its length, and
+  // a decimated run of many periods zigzags through every pixel column.
+  constexpr size_t kPiece = 256;
   for (const auto& line : series.polylines())
     for (const auto& run : to_pixels(p, line)) {
-      if (st.line_width > 0) draw_pixel_polyline(canvas, run, {st.color, st.line_width, st.dashed});
+      if (st.line_width > 0)
+        for (size_t first = 0; first + 1 < run.size(); first += kPiece)
+          draw_pixel_polyline(canvas, std::span(run).subspan(first, std::min(kPiece + 1, run.size() - first)),
+                              {st.color, st.line_width, st.dashed});
       if (st.markers)
         for (const Point& q : run) draw_marker(canvas, q, st.color);
     }
   cairo_restore(canvas.cr());
+}
+/// A panel as the layout sees it.
+struct PanelView {
+  const PanelOptions& options;
+  const std::vector<std::unique_ptr<Series>>& series;
+};
+
+const TextStyle kTickStyle{kTickFont, palette::ink.with_alpha(0.8)}, kLabelStyle{kLabelFont, palette::ink};
+
+/// Axes fitted to the data, or to a fixed x range; panels sharing an x axis
+/// (consecutive, same x label) share its range.
+std::vector<Placed> fit_axes(const std::vector<PanelView>& panels) {
+  const size_t n = panels.size();
+  std::vector<Placed> placed(n);
+  std::vector<Extents> data(n);
+  for (size_t i = 0; i < n; ++i) {
+    const PanelOptions& o = panels[i].options;
+    placed[i].x = Axis(o.x_scale), placed[i].y = Axis(o.y_scale);
+    placed[i].x.place_ticks_at(o.x_ticks);
+    data[i] = extents_of(panels[i].series, placed[i].x, placed[i].y);
+    placed[i].x_tick_labels = i + 1 == n || panels[i + 1].options.x_label != o.x_label;
+    placed[i].x_label = placed[i].x_tick_labels && !o.x_label.empty();
+  }
+  for (size_t first = 0; first < n;) {
+    size_t last = first;
+    while (!placed[last].x_tick_labels) ++last;
+    std::optional<std::pair<double, double>> fixed;
+    double x0 = INFINITY, x1 = -INFINITY;
+    for (size_t i = first; i <= last; ++i) {
+      if (!fixed) fixed = panels[i].options.x_range;
+      x0 = std::min(x0, data[i].x0), x1 = std::max(x1, data[i].x1);
+    }
+    for (size_t i = first; i <= last; ++i) {
+      if (fixed)
+        placed[i].x.set_range(fixed->first, fixed->second);
+      else
+        placed[i].x.fit(x0, x1);
+      placed[i].y.fit(data[i].y0, data[i].y1);
+    }
+    first = last + 1;
+  }
+  return placed;
+}
+
+/// Sets every panel's plot area (and equal-aspect ranges); returns the legends as placed.
+std::vector<Legend> arrange(Canvas& canvas, const std::vector<PanelView>& panels, const std::string& title, int width,
+                            int height, std::vector<Placed>& placed) {
+  const double s = canvas.scale();
+  const size_t n = panels.size();
+  const double tick_h = text_size(canvas, "0", kTickStyle).y(), label_h = text_size(canvas, "Ag", kLabelStyle).y();
+
+  // Legends are placed before the margins are known: against the widest plot
+  // area the y tick labels could leave.
+  std::vector<Legend> legends;
+  for (const PanelView& panel : panels)
+    legends.push_back(measure_legend(canvas, panel.series, text_size(canvas, panel.options.y_label, kLabelStyle).x(),
+                                     width - 134 * s));
+  auto legend_row = [&](size_t i) { return legends[i].place == Legend::Place::own_row ? legends[i].row + 6 * s : 0; };
+  auto band_below = [&](const Placed& p) {
+    return (p.x_tick_labels ? tick_h + 8 * s : 4 * s) + (p.x_label ? label_h + 6 * s : 0);
+  };
+
+  // Heights: the title, then per panel its y label (and legend row), the plot
+  // area, and for the lowest panel of a group the tick labels and the x label.
+  const double title_h = title.empty() ? 6 * s : text_size(canvas, title, {kTitleFont, palette::ink}).y() + 14 * s;
+  double fixed_h = title_h + 8 * s;
+  for (size_t i = 0; i < n; ++i) fixed_h += label_h + 6 * s + legend_row(i) + band_below(placed[i]);
+  const double area_h = std::max(10.0, (height - fixed_h) / n);
+  double top = title_h;
+  for (size_t i = 0; i < n; ++i) {
+    top += label_h + 6 * s + legend_row(i);
+    placed[i].area = {0, top, 0, area_h};
+    placed[i].y_label_bottom = top - 4 * s - legend_row(i);
+    top += area_h + band_below(placed[i]);
+  }
+
+  // Widths: one left margin for all panels (wide enough for every y tick
+  // label) so the frames line up; on the right, room for half an x tick label.
+  // Twice, as equal aspect changes the y ticks and so the margin.
+  const std::vector<Placed> fitted = placed;
+  const double right = 24 * s;
+  for (int pass = 0; pass < 2; ++pass) {
+    double left = 0;
+    for (const Placed& p : placed)
+      for (const auto& tick : p.y.ticks(tick_target(p.area.h, 32 * s)))
+        left = std::max(left, text_size(canvas, tick.label, kTickStyle).x());
+    left += 16 * s;
+    for (size_t i = 0; i < n; ++i) {
+      Placed& p = placed[i];
+      p.area.x = left, p.area.w = std::max(10.0, width - left - right);
+      if (!panels[i].options.equal_aspect) continue;
+      // Equal aspect: widen the axis whose units are shorter on screen.
+      p.x = fitted[i].x, p.y = fitted[i].y;
+      const double ux = (p.x.hi() - p.x.lo()) / p.area.w, uy = (p.y.hi() - p.y.lo()) / p.area.h;
+      if (ux > uy)
+        p.y.widen(ux / uy);
+      else
+        p.x.widen(uy / ux);
+    }
+  }
+  return legends;
+}
+
+void paint_panel(Canvas& canvas, const PanelView& panel, const Placed& p, const Legend& legend) {
+  const double s = canvas.scale();
+  const PixelRect& a = p.area;
+  const Stroke grid{palette::grid, 1}, minor_grid{palette::grid.with_alpha(0.4), 1};
+  for (const auto& t : p.y.ticks(tick_target(a.h, 32 * s))) {
+    const double y = p.to_pixel(p.x.lo(), t.value).y();
+    draw_pixel_line(canvas, {a.x, y}, {a.x + a.w, y}, t.label.empty() ? minor_grid : grid);
+    if (!t.label.empty()) draw_text(canvas, {a.x - 6 * s, y}, t.label, kTickStyle, Anchor::right);
+  }
+  for (const auto& t : p.x.ticks(tick_target(a.w, 110 * s))) {
+    const double x = p.to_pixel(t.value, p.y.lo()).x();
+    draw_pixel_line(canvas, {x, a.y}, {x, a.y + a.h}, t.label.empty() ? minor_grid : grid);
+    if (p.x_tick_labels && !t.label.empty()) draw_text(canvas, {x, a.y + a.h + 4 * s}, t.label, kTickStyle, Anchor::top);
+  }
+  if (p.y.scale() == AxisScale::linear && p.y.lo() < 0 && p.y.hi() > 0) {
+    const double y = p.to_pixel(p.x.lo(), 0).y();
+    draw_pixel_line(canvas, {a.x, y}, {a.x + a.w, y}, {palette::faint, 1.2});
+  }
+  for (const auto& series : panel.series) draw_series(canvas, p, *series);
+  draw_frame(canvas, a);
+  draw_text(canvas, {a.x, p.y_label_bottom}, panel.options.y_label, kLabelStyle, Anchor::bottom_left);
+  if (p.x_label)
+    draw_text(canvas, {a.x + a.w / 2, a.y + a.h + text_size(canvas, "0", kTickStyle).y() + 10 * s},
+              panel.options.x_label, kLabelStyle, Anchor::top);
+  draw_legend(canvas, p, panel.series, legend);
 }
 }  // namespace
 
@@ -220,113 +376,13 @@ Series& Figure::add_path(int panel, std::string label, SeriesStyle style) {
 void Figure::draw(Canvas& canvas) const {
   canvas.clear(palette::paper);
   if (panels_.empty()) return;
-  const double s = canvas.scale();
-  const TextStyle tick_style{kTickFont, palette::ink.with_alpha(0.8)}, label_style{kLabelFont, palette::ink};
-  const double tick_h = text_size(canvas, "0", tick_style).y(), label_h = text_size(canvas, "Ag", label_style).y();
-
-  // Axes from the data; panels sharing an x axis share its range.
-  const size_t n = panels_.size();
-  std::vector<Placed> placed(n);
-  std::vector<Extents> data(n);
-  for (size_t i = 0; i < n; ++i) {
-    const PanelOptions& o = panels_[i].options;
-    placed[i].x = Axis(o.x_scale), placed[i].y = Axis(o.y_scale);
-    data[i] = extents_of(panels_[i].series, placed[i].x, placed[i].y);
-    placed[i].x_tick_labels = i + 1 == n || panels_[i + 1].options.x_label != o.x_label;
-    placed[i].x_label = placed[i].x_tick_labels && !o.x_label.empty();
-  }
-  for (size_t first = 0; first < n;) {
-    size_t last = first;
-    while (!placed[last].x_tick_labels) ++last;
-    std::optional<std::pair<double, double>> fixed;
-    double x0 = INFINITY, x1 = -INFINITY;
-    for (size_t i = first; i <= last; ++i) {
-      if (!fixed) fixed = panels_[i].options.x_range;
-      x0 = std::min(x0, data[i].x0), x1 = std::max(x1, data[i].x1);
-    }
-    for (size_t i = first; i <= last; ++i) {
-      if (fixed)
-        placed[i].x.set_range(fixed->first, fixed->second);
-      else
-        placed[i].x.fit(x0, x1);
-      const auto& y_range = panels_[i].options.y_range;
-      if (y_range)
-        placed[i].y.set_range(y_range->first, y_range->second);
-      else
-        placed[i].y.fit(data[i].y0, data[i].y1);
-    }
-    first = last + 1;
-  }
-
-  // Heights: the title, then per panel its y label band, the plot area, and
-  // for the lowest panel of a group the tick labels and the x label.
-  const double title_h = title_.empty() ? 6 * s : text_size(canvas, title_, {kTitleFont, palette::ink}).y() + 14 * s;
-  double fixed_h = title_h + 8 * s;
-  for (const Placed& p : placed)
-    fixed_h += label_h + 6 * s + (p.x_tick_labels ? tick_h + 8 * s : 4 * s) + (p.x_label ? label_h + 6 * s : 0);
-  const double area_h = std::max(10.0, (height_ - fixed_h) / n);
-  double top = title_h;
-  for (Placed& p : placed) {
-    top += label_h + 6 * s;
-    p.area = {0, top, 0, area_h};
-    top += area_h + (p.x_tick_labels ? tick_h + 8 * s : 4 * s) + (p.x_label ? label_h + 6 * s : 0);
-  }
-
-  // Widths: one left margin for all panels (wide enough for every y tick
-  // label) so the frames line up; on the right, room for half an x tick label.
-  const std::vector<Placed> base = placed;
-  double left = 0, right = 24 * s;
-  for (int pass = 0; pass < 2; ++pass) {
-    left = 0;
-    for (Placed& p : placed) {
-      for (const auto& tick : p.y.ticks(tick_target(p.area.h, 32 * s)))
-        left = std::max(left, text_size(canvas, tick.label, tick_style).x());
-    }
-    left += 16 * s;
-    for (size_t i = 0; i < n; ++i) {
-      Placed& p = placed[i];
-      p.area.x = left, p.area.w = std::max(10.0, width_ - left - right);
-      if (!panels_[i].options.equal_aspect) continue;
-      // Equal aspect: widen the axis whose units are shorter on screen.
-      p.x = base[i].x, p.y = base[i].y;
-      const double ux = (p.x.hi() - p.x.lo()) / p.area.w, uy = (p.y.hi() - p.y.lo()) / p.area.h;
-      if (ux > uy)
-        p.y.widen(ux / uy);
-      else
-        p.x.widen(uy / ux);
-    }
-  }
-
+  std::vector<PanelView> views;
+  for (const Panel& panel : panels_) views.push_back({panel.options, panel.series});
+  std::vector<Placed> placed = fit_axes(views);
+  const std::vector<Legend> legends = arrange(canvas, views, title_, width_, height_, placed);
   if (!title_.empty())
-    draw_text(canvas, {width_ / 2.0, 6 * s}, title_, {kTitleFont, palette::ink}, Anchor::top);
-  for (size_t i = 0; i < n; ++i) {
-    const Placed& p = placed[i];
-    const PanelOptions& o = panels_[i].options;
-    const auto x_ticks = p.x.ticks(tick_target(p.area.w, 110 * s));
-    const auto y_ticks = p.y.ticks(tick_target(p.area.h, 32 * s));
-    for (const auto& t : y_ticks) {
-      const double y = p.to_pixel(p.x.lo(), t.value).y();
-      draw_pixel_line(canvas, {p.area.x, y}, {p.area.x + p.area.w, y}, {t.label.empty() ? palette::grid.with_alpha(0.4) : palette::grid, 1});
-      if (!t.label.empty()) draw_text(canvas, {p.area.x - 6 * s, y}, t.label, tick_style, Anchor::right);
-    }
-    for (const auto& t : x_ticks) {
-      const double x = p.to_pixel(t.value, p.y.lo()).x();
-      draw_pixel_line(canvas, {x, p.area.y}, {x, p.area.y + p.area.h}, {t.label.empty() ? palette::grid.with_alpha(0.4) : palette::grid, 1});
-      if (p.x_tick_labels && !t.label.empty())
-        draw_text(canvas, {x, p.area.y + p.area.h + 4 * s}, t.label, tick_style, Anchor::top);
-    }
-    if (o.y_scale == AxisScale::linear && p.y.lo() < 0 && p.y.hi() > 0) {
-      const double y = p.to_pixel(p.x.lo(), 0).y();
-      draw_pixel_line(canvas, {p.area.x, y}, {p.area.x + p.area.w, y}, {palette::faint, 1.2});
-    }
-    for (const auto& series : panels_[i].series) draw_series(canvas, p, *series);
-    draw_frame(canvas, p.area);
-    draw_text(canvas, {p.area.x, p.area.y - 4 * s}, o.y_label, label_style, Anchor::bottom_left);
-    if (p.x_label)
-      draw_text(canvas, {p.area.x + p.area.w / 2, p.area.y + p.area.h + tick_h + 10 * s}, o.x_label, label_style,
-                Anchor::top);
-    draw_legend(canvas, p, panels_[i].series, text_size(canvas, o.y_label, label_style).x());
-  }
+    draw_text(canvas, {width_ / 2.0, 6 * canvas.scale()}, title_, {kTitleFont, palette::ink}, Anchor::top);
+  for (size_t i = 0; i < views.size(); ++i) paint_panel(canvas, views[i], placed[i], legends[i]);
 }
 
 void Figure::write(const std::filesystem::path& path) const {

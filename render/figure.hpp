@@ -20,8 +20,10 @@ struct PanelOptions {
   std::string x_label;
   AxisScale x_scale = AxisScale::linear, y_scale = AxisScale::linear;
   bool equal_aspect = false;  ///< one unit is as long in x as in y (a path y against x)
-  std::optional<std::pair<double, double>> x_range;  ///< shown exactly; otherwise fitted to the data
-  std::optional<std::pair<double, double>> y_range;
+  std::optional<std::pair<double, double>> x_range = std::nullopt;  ///< shown exactly; otherwise fitted to the data
+  /// Labelled x ticks at exactly these values (e.g. the dt values of a study)
+  /// instead of automatic ones.
+  std::vector<double> x_ticks = {};
 };
 
 /// A static figure: panels stacked top to bottom, each with axes, a grid,

@@ -98,8 +98,13 @@ void PlotPanel::draw_axes(Canvas& canvas, const std::string& y_label, const std:
 }
 
 void PlotPanel::draw_envelope(Canvas& canvas, const ColumnEnvelope& envelope, double up_to_x, const Stroke& s) const {
+  draw_envelope_columns(canvas, envelope, 0, envelope.column_of(up_to_x), s);
+}
+
+void PlotPanel::draw_envelope_columns(Canvas& canvas, const ColumnEnvelope& envelope, int first_column, int last_column,
+                                      const Stroke& s) const {
   const double envelope_span = envelope.x1() - envelope.x0();
-  auto points = envelope.polyline(envelope.column_of(up_to_x), [&](int c, double y) {
+  auto points = envelope.polyline(first_column, last_column, [&](int c, double y) {
     const double x = envelope.x0() + (c + 0.5) * envelope_span / envelope.columns();
     return Point(to_pixel(x, y).x(), to_pixel(x0_, y).y());
   });

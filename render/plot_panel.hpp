@@ -34,6 +34,8 @@ class PlotPanel {
   void draw_axes(Canvas&, const std::string& y_label_markup, const std::string& x_label_markup) const;
   /// A curve from an envelope over this panel's x range, up to `up_to_x`.
   void draw_envelope(Canvas&, const ColumnEnvelope&, double up_to_x, const Stroke&) const;
+  /// The envelope's columns [first_column, last_column] only (to extend a curve drawn before).
+  void draw_envelope_columns(Canvas&, const ColumnEnvelope&, int first_column, int last_column, const Stroke&) const;
   /// A vertical cursor line at x with a dot at (x, y).
   void draw_cursor(Canvas&, double x, double y, const Color&) const;
   /// Legend entries (markup, colour) in the panel's top-right corner.

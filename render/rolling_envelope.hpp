@@ -30,11 +30,10 @@ class RollingEnvelope {
       if (k.column != c) continue;
       const double x = (c + 0.5) * width_;
       out.push_back(to_pixel(x, k.first));
-      if (k.min != k.max) {
-        const bool rising = k.first <= k.last;
-        out.push_back(to_pixel(x, rising ? k.min : k.max));
-        out.push_back(to_pixel(x, rising ? k.max : k.min));
-      }
+      if (k.min == k.max) continue;  // one point for a flat column
+      const bool rising = k.first <= k.last;
+      out.push_back(to_pixel(x, rising ? k.min : k.max));
+      out.push_back(to_pixel(x, rising ? k.max : k.min));
       out.push_back(to_pixel(x, k.last));
     }
     return out;

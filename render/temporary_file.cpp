@@ -41,7 +41,11 @@ TemporaryFile::TemporaryFile(fs::path final_path) : final_(std::move(final_path)
   if (fs::is_directory(final_, ec))
     throw OutputError("output path '" + final_.string() + "' is a directory: give a file name");
   require_writable_directory(directory_of(final_));
-  temp_ = directory_of(final_) / ("." + final_.filename().string() + kTag + std::to_string(getpid()));
+  std::string name = ".";
+  name += final_.filename().string();
+  name += kTag;
+  name += std::to_string(getpid());
+  temp_ = directory_of(final_) / name;
 }
 
 TemporaryFile::~TemporaryFile() {

@@ -34,7 +34,7 @@ PlotScene::PlotScene(int width, int height, double t_end, SceneStyle style, cons
 
 void PlotScene::draw(render::Canvas& canvas, std::span<const double> row) {
   if (!prepared_) panel_.finish_recording(), prepared_ = true;
-  background_.paint(canvas);
+  background_.paint(canvas, [&](render::Canvas& layer, bool from_start) { panel_.draw_progress(layer, row[0], from_start); });
   panel_.draw(canvas, row[0], row, true);
   // The read-out sits top right: the panel's y label is top left.
   draw_readout(canvas, {area_.w * 0.55, 0, area_.w * 0.45, 40}, row[0], style_);

@@ -76,10 +76,18 @@ void SeriesPanel::draw_static(render::Canvas& canvas, bool time_labels) const {
     panel_.draw_envelope(canvas, whole_[i], t_end_, {series_[i].color.with_alpha(0.22), 2, series_[i].dashed});
 }
 
+void SeriesPanel::draw_progress(render::Canvas& layer, double t, bool from_start) {
+  if (mode_ != WindowMode::whole_run || whole_.empty()) return;
+  const int to = whole_[0].column_of(t);
+  // One column back, so the new piece joins the old one without a gap.
+  const int from = from_start ? 0 : std::max(0, progress_column_ - 1);
+  for (size_t i = 0; i < series_.size(); ++i)
+    panel_.draw_envelope_columns(layer, whole_[i], from, to, {series_[i].color, 2.4, series_[i].dashed});
+  progress_column_ = to;
+}
+
 void SeriesPanel::draw(render::Canvas& canvas, double t, std::span<const double> row, bool time_labels) const {
   if (mode_ == WindowMode::whole_run) {
-    for (size_t i = 0; i < series_.size(); ++i)
-      panel_.draw_envelope(canvas, whole_[i], t, {series_[i].color, 2.4, series_[i].dashed});
     panel_.draw_cursor(canvas, t, series_[0].value(row), series_[0].color);
     return;
   }

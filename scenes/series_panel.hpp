@@ -52,8 +52,11 @@ class SeriesPanel {
   bool has_static_axes() const { return mode_ == WindowMode::whole_run; }
   /// Axes and faint whole-run curves (whole_run only).
   void draw_static(render::Canvas&, bool time_labels) const;
-  /// The dynamic part at time t: curves so far, cursor, and for window
-  /// modes the axes too (they move). `row` is the solution at t.
+  /// whole_run: extends the curves drawn on `layer` up to time t (from t = 0
+  /// when `from_start`). The layer keeps them, so each frame adds a column or two.
+  void draw_progress(render::Canvas& layer, double t, bool from_start);
+  /// The dynamic part at time t: the cursor, and for window modes the axes
+  /// and curves too (they move). `row` is the solution at t.
   void draw(render::Canvas&, double t, std::span<const double> row, bool time_labels) const;
 
  private:
@@ -69,6 +72,7 @@ class SeriesPanel {
   std::vector<render::ColumnEnvelope> whole_;
   std::vector<render::RollingEnvelope> recent_;
   double lo_ = 1e300, hi_ = -1e300;
+  int progress_column_ = 0;  ///< whole_run: curves are drawn on the layer up to here
 };
 
 }  // namespace vibra::scenes

@@ -96,34 +96,35 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
   render::Figure figure(width, height, title);
   const double T = info.mesh.T;
   std::vector<Feed> feeds;
-  std::vector<std::pair<render::Series*, std::pair<int, int>>> starts;  // path start markers
+  std::vector<Feed> starts;  // markers at the start of paths, fed the first row only
   int time_panels = 0;
   for (const auto& name : order) {
     if (name == "path" || name == "phase") {
       const int x = name == "path" ? column_index(info, "x") : 1;
       const int y = name == "path" ? column_index(info, "y") : velocity_column(info);
       const int p = figure.add_panel({quantity_markup(info.columns[y]), quantity_markup(info.columns[x]),
-                                      render::AxisScale::linear, render::AxisScale::linear, name == "path", {}, {}});
+                                      render::AxisScale::linear, render::AxisScale::linear, name == "path"});
       feeds.push_back({&figure.add_path(p, "", {blue, 2}), x, y});
-      starts.push_back({&figure.add_points(p, "start", {render::palette::vermillion, 0, false, true}), {x, y}});
+      starts.push_back({&figure.add_points(p, "start", {render::palette::vermillion, 0, false, true}), x, y});
       continue;
     }
     const int column = column_index(info, name);
     const int p = figure.add_panel({quantity_markup(name), "<i>t</i>", render::AxisScale::linear,
-                                    render::AxisScale::linear, false, std::make_pair(0.0, T), {}});
+                                    render::AxisScale::linear, false, std::make_pair(0.0, T)});
     const bool overlay = with_exact && name == main;
     feeds.push_back({&figure.add_curve(p, overlay ? "numerical" : "", {panel_color(time_panels++), 2.2}, 0, T), 0, column});
     if (overlay) {
-      // The exact solution is a function: sample it finely, not at the mesh points.
+      // The exact solution is a function: sample it at least as finely as the
+      // mesh (so its envelope holds every peak) and at least 4 times per pixel column.
       render::Series& exact = figure.add_curve(p, info.exact_label, {render::palette::vermillion, 2, true}, 0, T);
-      const int samples = 4 * width;
-      for (int i = 0; i <= samples; ++i) exact.add(T * i / samples, info.exact(T * i / samples));
+      const long long samples = std::max(4LL * width, info.mesh.steps);
+      for (long long i = 0; i <= samples; ++i) exact.add(T * i / samples, info.exact(T * i / samples));
     }
   }
 
   std::vector<double> row(trajectory.width());
   trajectory.row(row);
-  for (auto& [series, columns] : starts) series->add(row[columns.first], row[columns.second]);
+  for (const Feed& f : starts) f.series->add(row[f.x_column], row[f.y_column]);
   do {
     trajectory.row(row);
     for (const Feed& f : feeds) f.series->add(row[f.x_column], row[f.y_column]);

@@ -25,7 +25,7 @@ TEST_CASE("ascii plot: one series, and both ends of the range", "[ascii]") {
   CHECK(plot(p, {}) == "         ");       // width + 1 columns, always
 }
 
-TEST_CASE("ascii plot: later series overwrite earlier ones; symbols cycle", "[ascii]") {
+TEST_CASE("ascii plot: later series overwrite earlier ones and symbols cycle", "[ascii]") {
   AsciiPlotter p({.ymin = 0, .ymax = 8, .width = 8});
   CHECK(plot(p, {3, 3}) == "   o     ");
   AsciiPlotter ab({.ymin = 0, .ymax = 8, .width = 8, .symbols = "ab"});

@@ -51,10 +51,10 @@ std::string head_of(const std::string& path, size_t n) {
 /// Two stacked panels: a streamed time series, and errors against dt on log-log axes.
 Figure two_panel_figure(int width, int height) {
   Figure figure(width, height, "two panels");
-  const int top = figure.add_panel({"<i>u</i>", "<i>t</i>", AxisScale::linear, AxisScale::linear, false, std::make_pair(0.0, 10.0), {}});
+  const int top = figure.add_panel({"<i>u</i>", "<i>t</i>", AxisScale::linear, AxisScale::linear, false, std::make_pair(0.0, 10.0)});
   Series& u = figure.add_curve(top, "", {palette::blue, 2.4}, 0, 10);
   for (int i = 0; i <= 100000; ++i) u.add(i * 1e-4, std::cos(2 * M_PI * i * 1e-4));
-  const int bottom = figure.add_panel({"<i>E</i>", "Δ<i>t</i>", AxisScale::logarithmic, AxisScale::logarithmic, false, {}, {}});
+  const int bottom = figure.add_panel({"<i>E</i>", "Δ<i>t</i>", AxisScale::logarithmic, AxisScale::logarithmic});
   Series& e = figure.add_points(bottom, "error", {palette::vermillion, 2.4, false, true});
   for (double dt = 0.1; dt > 0.005; dt /= 2) e.add(dt, 3 * dt * dt);
   return figure;
@@ -99,7 +99,7 @@ TEST_CASE("a figure refuses other formats and leaves nothing behind when writing
 TEST_CASE("an equal-aspect panel draws a circle as round", "[figure]") {
   ScratchDirectory dir;
   Figure figure(1200, 500);
-  const int p = figure.add_panel({"<i>y</i>", "<i>x</i>", AxisScale::linear, AxisScale::linear, true, {}, {}});
+  const int p = figure.add_panel({"<i>y</i>", "<i>x</i>", AxisScale::linear, AxisScale::linear, true});
   Series& circle = figure.add_path(p, "", {palette::green, 2});
   for (int i = 0; i <= 2000; ++i) circle.add(std::cos(i * 2 * M_PI / 2000), std::sin(i * 2 * M_PI / 2000));
   figure.write(dir / "circle.png");
@@ -143,7 +143,7 @@ TEST_CASE("a path that fills an area stays within its segment budget", "[figure]
   CHECK(path.bounds().sizes().x() == Approx(2).epsilon(1e-3));
 }
 
-TEST_CASE("log axes label decades; linear axes of large values use powers of ten", "[figure]") {
+TEST_CASE("log axes label decades, linear axes of large values use powers of ten", "[figure]") {
   Axis decades(AxisScale::logarithmic);
   decades.fit(1e-3, 1e-1);
   std::vector<std::string> labels;

@@ -265,7 +265,7 @@ TEST_CASE("other formats hold the right codec and every frame", "[video]") {
   }
 }
 
-TEST_CASE("quality presets and crf set the size; bad values are refused", "[video]") {
+TEST_CASE("quality presets and crf set the size, bad values are refused", "[video]") {
   ScratchDir dir;
   VideoOptions options = small();
   options.quality = VideoQuality::draft;
@@ -290,7 +290,7 @@ TEST_CASE("quality presets and crf set the size; bad values are refused", "[vide
   CHECK(std::distance(fs::directory_iterator(dir.path), {}) == 3);
 }
 
-TEST_CASE("the extension picks the codec; unknown ones are refused with the list", "[video]") {
+TEST_CASE("the extension picks the codec, unknown ones are refused with the list", "[video]") {
   CHECK(VideoWriter::codec_for_path("a.mp4") == "h264");
   CHECK(VideoWriter::codec_for_path("dir/a.MKV") == "h264");
   CHECK(VideoWriter::codec_for_path("a.webm") == "vp9");

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,6 +16,7 @@
 #include "cli/model_help.hpp"
 #include "core/error.hpp"
 #include "render/ascii_plotter.hpp"
+#include "render/decimal_format.hpp"
 #include "render/stop_signal.hpp"
 
 namespace vibra::cli {
@@ -46,32 +48,6 @@ int terminal_columns() {
   winsize size{};
   if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0) return size.ws_col;
   return 80;
-}
-
-/// Appends x with one decimal as printf("%.1f") would, without printf's cost
-/// (one line per step must stay cheap): exact unless x*10 is near a tie, where
-/// printf itself decides.
-void append_one_decimal(std::string& out, double x) {
-  const double tenths = x * 10;
-  const double fraction = tenths - std::floor(tenths);
-  if (std::abs(tenths) < 9e15 && std::abs(fraction - 0.5) > 1e-6) {
-    long long k = std::llround(tenths);
-    if (k < 0 || (k == 0 && std::signbit(x) && x != 0)) {
-      out += '-';
-      k = -k;
-    }
-    char digits[24];
-    int n = 0;
-    do digits[n++] = char('0' + k % 10), k /= 10;
-    while (k > 0);
-    if (n == 1) digits[n++] = '0';
-    for (int i = n - 1; i >= 1; --i) out += digits[i];
-    out += '.';
-    out += digits[0];
-    return;
-  }
-  char buf[48];
-  out.append(buf, std::snprintf(buf, sizeof buf, "%.1f", x));
 }
 
 void run(const AsciiOptions& o) {
@@ -145,38 +121,52 @@ void run(const AsciiOptions& o) {
     throw UsageError("model " + o.model + " has no period with these settings: use --counter time");
   if (o.rate < 0) throw UsageError("--rate must be >= 0 lines per second");
 
-  // A terminal sees each line at once; a pipe or file gets large buffered writes.
+  // Lines go through one large buffer: a terminal sees each line at once, a
+  // pipe or file gets large writes.
   const bool terminal = isatty(STDOUT_FILENO) == 1;
-  static char buffer[1 << 16];
-  std::setvbuf(stdout, buffer, terminal ? _IOLBF : _IOFBF, sizeof buffer);
+  std::vector<char> out(1 << 16);
+  size_t used = 0;
+  auto flush = [&] {
+    const bool ok = std::fwrite(out.data(), 1, used, stdout) == used && std::fflush(stdout) == 0;
+    used = 0;
+    return ok;  // false: the reader is gone (| head), so stop quietly
+  };
 
   if (series > 1) {  // a legend line: symbol and name of each series
     std::string legend;
     for (size_t i = 0; i < columns.size(); ++i) legend += std::string(legend.empty() ? "" : "   ") + o.symbols[i] + " " + info.columns[columns[i]];
     if (o.exact) legend += std::string("   ") + o.symbols[columns.size()] + " " + info.exact_label;
-    std::printf("%s\n", legend.c_str());
+    legend += '\n';
+    std::memcpy(out.data(), legend.data(), std::min(legend.size(), out.size()));
+    used = std::min(legend.size(), out.size());
   }
   const double inverse_period = info.mesh.period > 0 ? 1 / info.mesh.period : 0;
-  const auto pause = o.rate > 0 ? std::chrono::duration<double>(1 / o.rate) : std::chrono::duration<double>(0);
-  std::string line;
+  const bool show_counter = counter != "none", by_period = counter == "period";
+  const auto pause = std::chrono::duration<double>(o.rate > 0 ? 1 / o.rate : 0);
   do {
     render::throw_if_stop_requested();
     trajectory->row(row);
     fill_values();
-    line.assign(plotter->line(values));
-    if (counter != "none") {
-      line += ' ';
-      if (counter == "period") append_one_decimal(line, row[0] * inverse_period);
-      else append_one_decimal(line, row[0]);
+    const std::string_view line = plotter->line(values);
+    if (used + line.size() + 400 > out.size()) {
+      if (!flush()) return;
+      if (line.size() + 400 > out.size()) out.resize(line.size() + 400);
     }
-    line += '\n';
-    if (std::fwrite(line.data(), 1, line.size(), stdout) != line.size()) return;  // reader gone (| head): quietly
-    if (o.rate > 0) {
-      std::fflush(stdout);
-      std::this_thread::sleep_for(pause);
+    char* p = out.data() + used;
+    std::memcpy(p, line.data(), line.size());
+    p += line.size();
+    if (show_counter) {
+      *p++ = ' ';
+      p = render::format_one_decimal(p, by_period ? row[0] * inverse_period : row[0]);
+    }
+    *p++ = '\n';
+    used = p - out.data();
+    if (terminal || o.rate > 0) {
+      if (!flush()) return;
+      if (o.rate > 0) std::this_thread::sleep_for(pause);
     }
   } while (trajectory->advance());
-  std::fflush(stdout);
+  flush();
 }
 }  // namespace
 

@@ -1,10 +1,10 @@
 #include <cstdio>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/list_option.hpp"
 #include "cli/model_help.hpp"
 #include "core/error.hpp"
 #include "render/figure.hpp"
@@ -23,14 +23,6 @@ struct PlotOptions {
   std::string size;
   bool help = false;
 };
-
-std::vector<std::string> split_list(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 
 constexpr const char* kUsage = "Usage: vibra plot MODEL [--set KEY=VALUE]... -o FILE.png|svg|pdf [--panels LIST] [--size WxH]\n";
 constexpr const char* kExamples =
@@ -54,7 +46,7 @@ void run_plot(const PlotOptions& o) {
   const Parameters parameters = model_settings(o.model, o.settings);
   std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
   const std::vector<std::string> panels =
-      o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : split_list(o.panels);
+      o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : word_list("--panels", o.panels);
   int width = 1280, height = panels.size() > 2 ? 960 : 720;
   if (!o.size.empty()) scenes::parse_size(o.size, width, height);
   const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);

@@ -1,0 +1,14 @@
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace vibra::cli {
+
+// The experiments of `vibra analyze`, one subcommand each (analyze_*.cpp).
+void add_convergence_analysis(CLI::App& analyze);
+void add_energy_analysis(CLI::App& analyze);
+void add_empirical_analysis(CLI::App& analyze);
+void add_frequency_analysis(CLI::App& analyze);
+void add_amplitude_analysis(CLI::App& analyze);
+void add_orbit_analysis(CLI::App& analyze);
+
+}  // namespace vibra::cli

@@ -1,0 +1,32 @@
+#include "cli/list_option.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/expression.hpp"
+
+namespace vibra::cli {
+
+std::vector<std::string> word_list(const std::string& option, const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    std::erase(item, ' ');
+    if (!item.empty()) out.push_back(item);
+  }
+  if (out.empty()) throw UsageError(option + " is empty: give a comma-separated list");
+  return out;
+}
+
+std::vector<double> positive_list(const std::string& option, const std::string& text) {
+  std::vector<double> out;
+  for (const auto& item : word_list(option, text)) {
+    const double x = evaluate_constant(option, item);
+    if (!(x > 0) || !std::isfinite(x)) throw UsageError(option + " value '" + item + "' must be a positive number");
+    out.push_back(x);
+  }
+  return out;
+}
+
+}  // namespace vibra::cli

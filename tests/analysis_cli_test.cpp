@@ -1,0 +1,100 @@
+// `vibra analyze` over the real executable: CSV columns, figures, help, and
+// bad input refused with one line, exit code 2 and no file.
+#include <catch2/catch.hpp>
+#include <sstream>
+
+#include "cli_support.hpp"
+
+using vibra::test::run_vibra;
+using vibra::test::ScratchDirectory;
+
+namespace {
+std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    rows.emplace_back();
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) rows.back().push_back(cell);
+    if (!line.empty() && line.back() == ',') rows.back().push_back("");
+  }
+  return rows;
+}
+}  // namespace
+
+TEST_CASE("analyze convergence prints i,dt,E,r with rates near the scheme's order", "[analysis]") {
+  const auto r = run_vibra("analyze convergence undamped --set scheme=crank-nicolson --set T=2 --levels 4 --csv");
+  REQUIRE(r.exit_code == 0);
+  const auto rows = csv_rows(r.out);
+  REQUIRE(rows.size() == 5);
+  CHECK(rows[0] == std::vector<std::string>{"i", "dt", "E", "r"});
+  CHECK(rows[1][0] == "0");
+  CHECK(rows[1][3].empty());  // no rate on the first level
+  CHECK(std::stod(rows[2][1]) == Approx(std::stod(rows[1][1]) / 2));
+  CHECK(std::stod(rows[4][3]) == Approx(2).margin(0.1));
+}
+
+TEST_CASE("analyze experiments draw their figures at the requested size", "[analysis]") {
+  ScratchDirectory dir;
+  const std::string commands[] = {
+      "analyze convergence undamped --set scheme=rk4 --levels 3 -o " + (dir / "convergence.png"),
+      "analyze energy --schemes rk4 --T 1 --dt 0.05,0.025 -o " + (dir / "energy.svg"),
+      "analyze empirical pendulum --dt 0.1,0.05 -o " + (dir / "empirical.pdf"),
+      "analyze frequency --size 800x600 -o " + (dir / "frequency.png"),
+      "analyze amplitude --periods 4 -o " + (dir / "amplitude.png"),
+      "analyze orbit --orbits 5 --steps-per-orbit 100,200 -o " + (dir / "orbit.png"),
+  };
+  for (const auto& command : commands) {
+    INFO("vibra " << command);
+    const auto r = run_vibra(command);
+    INFO(r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(r.err.empty());
+  }
+  for (const char* name : {"convergence.png", "energy.svg", "empirical.pdf", "frequency.png", "amplitude.png", "orbit.png"})
+    CHECK(std::filesystem::file_size(dir / name) > 1000);
+}
+
+TEST_CASE("analyze experiments explain themselves with an example", "[analysis]") {
+  for (const char* experiment : {"convergence", "energy", "empirical", "frequency", "amplitude", "orbit"}) {
+    INFO(experiment);
+    const auto r = run_vibra(std::string("analyze ") + experiment + " --help");
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("Example") && Catch::Contains(std::string("vibra analyze ") + experiment));
+  }
+}
+
+TEST_CASE("analyze refuses bad input with one line, exit code 2 and no file", "[analysis]") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"analyze", "needs an experiment"},
+      {"analyze energi", "did you mean 'energy'"},
+      {"analyze convergence vibration -o OUT.png", "no exact solution"},
+      {"analyze convergence", "needs a MODEL"},
+      {"analyze convergence undamped --levels 1", "--levels"},
+      {"analyze convergence undamped --set scheme=rk5", "not a valid scheme"},
+      {"analyze energy --schemes rk4,magic -o OUT.png", "'magic' is not a valid scheme"},
+      {"analyze energy --dt 0.05,-1", "--dt value '-1' must be a positive number"},
+      {"analyze energy --T 1,abc", "cannot read --T='abc'"},
+      {"analyze empirical undamped --set T=0.5", "no complete oscillation"},
+      {"analyze frequency --steps-per-period 2", "below pi"},
+      {"analyze frequency --w 0", "--w must be a positive number"},
+      {"analyze amplitude --periods 1", "no complete oscillation"},
+      {"analyze orbit --steps-per-orbit 2.5", "whole numbers"},
+      {"analyze orbit --orbits 0", "--orbits"},
+      {"analyze frequency -o OUT.gif", ".png, .svg or .pdf"},
+      {"analyze frequency -o OUT/missing/f.png", "does not exist"},
+      {"analyze frequency --size 0x10", "WxH"},
+  };
+  for (const auto& [args_template, expected] : cases) {
+    ScratchDirectory dir;
+    std::string args = args_template;
+    for (auto at = args.find("OUT"); at != std::string::npos; at = args.find("OUT")) args.replace(at, 3, dir / "out");
+    INFO("vibra " << args);
+    const auto r = run_vibra(args);
+    INFO("stderr: " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains(expected));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(dir.empty());
+  }
+}

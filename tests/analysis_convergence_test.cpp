@@ -1,0 +1,51 @@
+// `vibra analyze convergence` as the command runs it: rates against theory,
+// dt_0 from the model's settings, and the models that have no exact solution.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "core/analysis/model_convergence.hpp"
+#include "core/error.hpp"
+#include "core/scheme.hpp"
+
+using namespace vibra;
+
+TEST_CASE("convergence rates of every scheme on undamped are within 0.1 of theory", "[analysis]") {
+  for (const auto& info : all_schemes()) {
+    if (info.scheme == Scheme::backward_damping) continue;  // the centered scheme when there is no damping
+    const std::string scheme(info.name);
+    INFO(scheme << ", expected order " << info.order);
+    // First-order schemes need smaller steps before the leading error term dominates.
+    const std::string dt = info.order == 1 ? "dt=1/160" : "dt=1/40";
+    const ModelConvergence study = model_convergence("undamped", {"scheme=" + scheme, dt, "T=2"}, 5);
+    for (const auto& level : study.levels) UNSCOPED_INFO("dt=" << level.dt << " E=" << level.error << " r=" << level.rate);
+    CHECK(study.scheme == scheme);
+    CHECK(study.order == info.order);
+    REQUIRE(study.levels.size() == 5);
+    CHECK(std::isnan(study.levels[0].rate));
+    CHECK(study.levels.back().rate == Approx(info.order).margin(0.1));
+  }
+}
+
+TEST_CASE("convergence on the circular orbit of two-body: PEFRL and RK4 are 4th order", "[analysis]") {
+  for (const char* scheme : {"pefrl", "rk4"}) {
+    INFO(scheme);
+    const ModelConvergence study = model_convergence("two-body", {std::string("scheme=") + scheme, "steps_per_period=100", "periods=1"}, 5);
+    CHECK(study.levels.back().rate == Approx(4).margin(0.1));
+  }
+}
+
+TEST_CASE("convergence starts from the model's dt and halves it", "[analysis]") {
+  const ModelConvergence study = model_convergence("undamped", {"steps_per_period=20", "T=1"}, 3);
+  CHECK(study.levels[0].dt == Approx(1.0 / 20));
+  CHECK(study.levels[1].dt == Approx(1.0 / 40));
+  CHECK(study.levels[2].dt == Approx(1.0 / 80));
+}
+
+TEST_CASE("convergence needs an exact solution and a sensible number of levels", "[analysis]") {
+  CHECK_THROWS_WITH(model_convergence("vibration", {}, 5),
+                    Catch::Contains("no exact solution") && Catch::Contains("undamped"));
+  CHECK_THROWS_WITH(model_convergence("pendulum", {"alpha=0"}, 5), Catch::Contains("small-angle solution is an approximation"));
+  CHECK_THROWS_WITH(model_convergence("two-body", {"vy0=1.2"}, 5), Catch::Contains("circular orbit"));
+  CHECK_THROWS_AS(model_convergence("undamped", {}, 1), UsageError);
+  CHECK_THROWS_AS(model_convergence("undamped", {}, 21), UsageError);
+}

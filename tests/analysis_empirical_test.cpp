@@ -1,0 +1,68 @@
+// Empirical periods and amplitudes from the extrema (SPEC 7).
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "core/analysis/empirical.hpp"
+#include "core/analysis/numerical_frequency.hpp"
+#include "test_support.hpp"
+
+using namespace vibra;
+
+TEST_CASE("empirical periods of the centered scheme are 2 pi / w~ of (1.18)", "[analysis]") {
+  const double w = 2 * M_PI;
+  for (double dt : {0.1, 0.05, 0.03, 0.0123}) {
+    INFO("dt=" << dt);
+    auto t = test::trajectory("undamped", {"dt=" + test::str(dt), "T=20"});
+    const auto cycles = oscillation_cycles(*t);
+    REQUIRE(cycles.size() >= 18);
+    const double expected = 2 * M_PI / numerical_frequency(w, dt);
+    for (const auto& c : cycles) {
+      CHECK(c.period == Approx(expected).epsilon(1e-6));
+      CHECK(c.amplitude == Approx(1).epsilon(1e-9));  // u^n = cos(w~ t_n) keeps I = 1
+    }
+    CHECK(cycles[3].t == Approx(4 * expected).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("extrema at mesh points give periods that are multiples of dt, as the book's code", "[analysis]") {
+  const double dt = 0.1;
+  auto t = test::trajectory("undamped", {"dt=0.1", "T=10"});
+  const auto cycles = oscillation_cycles(*t, ExtremumTiming::mesh);
+  REQUIRE(cycles.size() >= 8);
+  bool jumps = false;
+  for (const auto& c : cycles) {
+    CHECK(std::abs(c.period / dt - std::round(c.period / dt)) < 1e-9);
+    jumps |= std::abs(c.period - cycles[0].period) > dt / 2;
+  }
+  CHECK(jumps);  // 2 pi / w~ = 0.983 is no multiple of 0.1: the periods jump between 0.9 and 1.0
+}
+
+TEST_CASE("empirical amplitudes follow the damping and Forward Euler's growth", "[analysis]") {
+  // u'' + b u' + 4 u = 0: the amplitude falls by exp(-b p / 2) per period.
+  const double b = 0.1;
+  auto damped = test::trajectory("vibration", {"b=0.1", "s=4*u", "dt=0.001", "T=30"});
+  const auto cycles = oscillation_cycles(*damped);
+  REQUIRE(cycles.size() >= 5);
+  for (size_t i = 1; i < cycles.size(); ++i)
+    CHECK(cycles[i].amplitude / cycles[i - 1].amplitude == Approx(std::exp(-b * cycles[i - 1].period / 2)).epsilon(2e-3));
+
+  // Forward Euler multiplies the amplitude by sqrt(1 + w^2 dt^2) per step.
+  const double dt = 0.01, w = 2 * M_PI;
+  auto growing = test::trajectory("undamped", {"scheme=forward-euler", "dt=0.01", "T=5"});
+  const auto grown = oscillation_cycles(*growing);
+  REQUIRE(grown.size() >= 3);
+  const double per_period = std::pow(1 + w * w * dt * dt, grown[1].period / dt / 2);
+  CHECK(grown[2].amplitude / grown[1].amplitude == Approx(per_period).epsilon(2e-3));
+}
+
+TEST_CASE("a stream of samples yields one cycle per completed period", "[analysis]") {
+  EmpiricalOscillation oscillation;
+  int cycles = 0;
+  for (int n = 0; n <= 1000; ++n)
+    if (auto c = oscillation.add(n * 0.01, std::sin(2 * M_PI * n * 0.01))) {
+      CHECK(c->i == cycles++);
+      CHECK(c->period == Approx(1).epsilon(1e-9));
+    }
+  // Maxima at t = 0.25, 1.25, ..., 9.25: nine periods between ten maxima.
+  CHECK(cycles == 9);
+}
