@@ -16,6 +16,7 @@ inline bool stop_requested() { return stop_signal() != 0; }
 /// Thrown by loops that noticed stop_requested(); the CLI maps it to 128 + signal.
 struct Interrupted {
   int signal;
+  const char* outcome = "no partial output was kept";  // what the user finds afterwards
 };
 
 /// Throws Interrupted if a stop was requested.

@@ -144,7 +144,10 @@ void run(const AsciiOptions& o) {
   const bool show_counter = counter != "none", by_period = counter == "period";
   const auto pause = std::chrono::duration<double>(o.rate > 0 ? 1 / o.rate : 0);
   do {
-    render::throw_if_stop_requested();
+    if (render::stop_requested()) {  // keep the complete lines already made
+      flush();
+      throw render::Interrupted{render::stop_signal(), "every line written is complete"};
+    }
     trajectory->row(row);
     fill_values();
     const std::string_view line = plotter->line(values);

@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "vibra: error: %s (see vibra --help)\n", e.what());
     return 2;
   } catch (const vibra::render::Interrupted& e) {
-    std::fprintf(stderr, "vibra: interrupted by signal %d; no partial output was kept\n", e.signal);
+    std::fprintf(stderr, "vibra: interrupted by signal %d; %s\n", e.signal, e.outcome);
     return 128 + e.signal;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "vibra: error: %s\n", e.what());
