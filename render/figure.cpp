@@ -344,9 +344,10 @@ void require_picture_extension(const std::filesystem::path& path) {
 }
 
 Figure::Figure(int width, int height, std::string title) : width_(width), height_(height), title_(std::move(title)) {
-  if (width < 1 || height < 1 || width > 8192 || height > 8192)
+  // Below 240x160 the axes, ticks and labels no longer fit beside the data.
+  if (width < 240 || height < 160 || width > 8192 || height > 8192)
     throw OutputError("figure size " + std::to_string(width) + "x" + std::to_string(height) +
-                      " is out of range: width and height must be 1..8192, e.g. --size 1280x720");
+                      " is out of range: width must be 240..8192 and height 160..8192, e.g. --size 1280x720");
 }
 
 int Figure::add_panel(PanelOptions options) {

@@ -4,7 +4,10 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <mutex>
+#include <set>
 #include <string>
 #include <system_error>
 
@@ -34,13 +37,38 @@ void require_writable_directory(const fs::path& dir) {
     throw OutputError("directory '" + dir.string() + "' is not writable: choose another output path");
 }
 
+// Once per directory and process: remove what killed runs left, and say so.
+static void remove_stale_once(const fs::path& dir) {
+  static std::mutex mutex;
+  static std::set<fs::path> seen;
+  std::error_code ec;
+  const fs::path key = fs::weakly_canonical(dir, ec);
+  {
+    std::lock_guard lock(mutex);
+    if (!seen.insert(ec ? dir : key).second) return;
+  }
+  for (const fs::path& stale : TemporaryFile::stale_in(dir)) {
+    if (fs::remove(stale, ec))
+      std::fprintf(stderr, "vibra: removed %s, a temporary left by a run that was killed\n", stale.c_str());
+  }
+}
+
 TemporaryFile::TemporaryFile(fs::path final_path) : final_(std::move(final_path)) {
   if (final_.filename().empty())
     throw OutputError("output path '" + final_.string() + "' names a directory, not a file: add a file name");
   std::error_code ec;
-  if (fs::is_directory(final_, ec))
+  const fs::file_status status = fs::status(final_, ec);
+  if (fs::is_directory(status))
     throw OutputError("output path '" + final_.string() + "' is a directory: give a file name");
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    // A device or pipe (/dev/null, /dev/stdout, a FIFO): write to it directly;
+    // renaming over it would replace the device with a file.
+    temp_ = final_;
+    direct_ = true;
+    return;
+  }
   require_writable_directory(directory_of(final_));
+  remove_stale_once(directory_of(final_));
   std::string name = ".";
   name += final_.filename().string();
   name += kTag;
@@ -53,6 +81,10 @@ TemporaryFile::~TemporaryFile() {
 }
 
 void TemporaryFile::commit() {
+  if (direct_) {
+    done_ = true;
+    return;
+  }
   std::error_code ec;
   fs::rename(temp_, final_, ec);
   if (ec) {
@@ -63,9 +95,10 @@ void TemporaryFile::commit() {
 }
 
 void TemporaryFile::discard() noexcept {
+  done_ = true;
+  if (direct_) return;
   std::error_code ec;
   fs::remove(temp_, ec);
-  done_ = true;
 }
 
 std::vector<fs::path> TemporaryFile::stale_in(const fs::path& dir) {

@@ -7,7 +7,10 @@ namespace vibra::render {
 /// A file written under a temporary name beside its final path and renamed
 /// into place only by commit(), so the final path never holds a partial file.
 /// Temporary names look like `.NAME.vibra-tmp-PID` so a killed run's leftovers
-/// are recognisable. The destructor removes an uncommitted temporary.
+/// are recognisable; the first TemporaryFile in a directory removes (and
+/// reports on stderr) those whose process is gone. The destructor removes an
+/// uncommitted temporary. An existing device or pipe (/dev/null, a FIFO) is
+/// written directly: there is nothing to rename.
 class TemporaryFile {
  public:
   /// Checks that the directory exists and is writable; throws OutputError otherwise.
@@ -31,6 +34,7 @@ class TemporaryFile {
   std::filesystem::path final_;
   std::filesystem::path temp_;
   bool done_ = false;
+  bool direct_ = false;
 };
 
 /// Throws OutputError unless `dir` is an existing, writable directory.

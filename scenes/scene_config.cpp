@@ -236,8 +236,12 @@ SceneConfig load_scene(const std::string& name_or_path) {
     buffer << in.rdbuf();
     text = buffer.str();
     file = name_or_path;
-    if (text.find('\0') != std::string::npos) throw UsageError(file + ": is a binary file, not a TOML scene file");
   }
+  return parse_scene(text, file);
+}
+
+SceneConfig parse_scene(const std::string& text, const std::string& file) {
+  if (text.find('\0') != std::string::npos) throw UsageError(file + ": is a binary file, not a TOML scene file");
   toml::table table;
   try {
     table = toml::parse(text, file);
@@ -245,6 +249,8 @@ SceneConfig load_scene(const std::string& name_or_path) {
     throw UsageError(file + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()) +
                      " (scene files are TOML: key = value)");
   }
+  if (table.empty())
+    throw UsageError(file + ": the scene file sets nothing: give at least model = \"pendulum\" (vibra render --help lists the keys)");
   std::vector<Setting> settings;
   collect(table, "", file, settings);
   SceneConfig config;

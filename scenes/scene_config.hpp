@@ -38,6 +38,8 @@ const std::vector<KeySpec>& scene_keys();
 /// A built-in scene by name (`pendulum`, `pendulum_book`) or a TOML file.
 /// Throws UsageError naming the file, line and key for bad content.
 SceneConfig load_scene(const std::string& name_or_path);
+/// A scene from TOML text; `file` names it in messages ("lecture.toml").
+SceneConfig parse_scene(const std::string& text, const std::string& file);
 
 /// Applies one setting: a scene key, or else a key of the scene's model.
 /// Throws UsageError with `origin`, suggesting the closest valid key.

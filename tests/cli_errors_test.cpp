@@ -1,6 +1,9 @@
 // Bad input over the real executable: one clear line on stderr, exit code 2,
 // nothing at the output path and no temporary left behind.
 #include <catch2/catch.hpp>
+#include <fstream>
+#include <string>
+#include <utility>
 
 #include "cli_support.hpp"
 
@@ -13,10 +16,34 @@ struct BadInput {
   const char* expected;  ///< part of the one-line message
 };
 
+// Scene files with the faults people make by hand, in one directory that
+// the cases name as SCENES/NAME.toml.
+const ScratchDirectory& bad_scene_files() {
+  static const ScratchDirectory dir = [] {
+    ScratchDirectory d;
+    const std::pair<const char*, std::string> files[] = {
+        {"empty.toml", "# only a comment\n"},
+        {"binary.toml", std::string("model = \"pendulum\"\0\x01\x02", 21)},
+        {"truncated.toml", "model = \"pendulum\"\nTheta = [1, 2"},
+        {"nested.toml", "a = " + std::string(5000, '[') + std::string(5000, ']') + "\n"},
+        {"duplicate.toml", "model = \"pendulum\"\nTheta = 40\nTheta = 50\n"},
+        {"mistyped.toml", "model = \"pendulum\"\nalpha = 0.4\nTheeta = 40\n"},
+        {"wrong_type.toml", "model = \"pendulum\"\nfps = \"fast\"\n"},
+        {"bad_colour.toml", "model = \"pendulum\"\n[colors]\nbob = \"#12345\"\n"},
+        {"bad_model.toml", "model = \"pendulm\"\n"},
+    };
+    for (const auto& [name, text] : files) std::ofstream(d / name, std::ios::binary) << text;
+    return d;
+  }();
+  return dir;
+}
+
 void check_refused(const BadInput& c) {
   ScratchDirectory dir;
   std::string args = c.args;
   for (auto at = args.find("OUT"); at != std::string::npos; at = args.find("OUT")) args.replace(at, 3, dir / "out");
+  for (auto at = args.find("SCENES"); at != std::string::npos; at = args.find("SCENES"))
+    args.replace(at, 6, bad_scene_files().path.string());
   INFO("vibra " << args);
   const auto r = run_vibra(args);
   INFO("stderr: " << r.err);
@@ -50,6 +77,8 @@ TEST_CASE("solve refuses bad input with one line and exit code 2", "[cli]") {
       {"solve pendulum -o /proc/version/x.csv", "not a directory"},
       {"solve elastic-pendulum --set beta=1.5 -o OUT.csv", "beta must be < 1"},
       {"solve two-body --set x0=0 --set y0=0 -o OUT.csv", "cannot start at the star"},
+      {"solve pendulum -o /dev/full", "failed (disk full?)"},
+      {"solve pendulum -o /tmp", "is a directory: give a file name"},
       {"frobnicate", "unknown command 'frobnicate'"},
   };
   for (const auto& c : cases) check_refused(c);
@@ -78,6 +107,20 @@ TEST_CASE("render refuses bad input with one line and exit code 2", "[cli]") {
       {"render --window=-2 -o OUT.mp4", "must be positive"},
       {"render --frames-player -o OUT.mp4", "--frames-player"},
       {"render --at 1 -o OUT/missing/x.png", "does not exist"},
+      {"render --codec h265 -o OUT.mp4", "unknown video codec 'h265'"},
+      {"render --crf 99 -o OUT.mp4", "crf 99 is out of range"},
+      {"render --preset ludicrous -o OUT.mp4", "unknown x264 preset"},
+      {"render --quality ultra -o OUT.mp4", "--quality ultra"},
+      {"render --set 'alpha=1e400' -o OUT.mp4", "alpha"},
+      {"render SCENES/empty.toml -o OUT.mp4", "empty.toml: the scene file sets nothing"},
+      {"render SCENES/binary.toml -o OUT.mp4", "binary.toml: is a binary file"},
+      {"render SCENES/truncated.toml -o OUT.mp4", "truncated.toml:2:"},
+      {"render SCENES/nested.toml -o OUT.mp4", "nested.toml:1:"},
+      {"render SCENES/duplicate.toml -o OUT.mp4", "duplicate.toml:3:"},
+      {"render SCENES/mistyped.toml -o OUT.mp4", "mistyped.toml:3: unknown key 'Theeta' (did you mean 'Theta'?)"},
+      {"render SCENES/wrong_type.toml -o OUT.mp4", "wrong_type.toml:2: cannot read fps='fast'"},
+      {"render SCENES/bad_colour.toml -o OUT.mp4", "bad_colour.toml:3: colors.bob"},
+      {"render SCENES/bad_model.toml -o OUT.mp4", "did you mean 'pendulum'"},
   };
   for (const auto& c : cases) check_refused(c);
 }
@@ -110,4 +153,36 @@ TEST_CASE("solve to a closed pipe ends quietly", "[cli]") {
   CHECK(r.exit_code == 0);
   CHECK(r.out.size() > 10);
   CHECK(r.err.empty());
+}
+
+TEST_CASE("plot, ascii and analyze refuse bad input with one line and exit code 2", "[cli]") {
+  const BadInput cases[] = {
+      {"plot pendulum --panels theta,Q -o OUT.png", "unknown panel 'Q'"},
+      {"plot pendulum", "needs an output file"},
+      {"plot pendulum -o OUT.gif", "end the file name in .png, .svg or .pdf"},
+      {"plot undamped --panels path -o OUT.png", "unknown panel 'path'"},
+      {"plot pendulum --size 10x10 -o OUT.png", "figure size 10x10 is out of range"},
+      {"plot pendulum --size 9000x9000 -o OUT.png", "each side 1..8192"},
+      {"plot pendulum --set Theta=nan -o OUT.png", "Theta"},
+      {"plot pendulum -o /dev/full/x.png", "is a file, not a directory"},
+      {"ascii pendulum --width 0", "--width must be 1..10000"},
+      {"ascii pendulum --ymin 1 --ymax 0", "ymin must be less than ymax"},
+      {"ascii pendulum --symbols ''", "fewer symbols"},
+      {"ascii pendulum --counter days", "--counter days"},
+      {"ascii pendulum --rate -1", "--rate must be >= 0"},
+      {"ascii pendulum --columns theta,Q", "no column 'Q'"},
+      {"ascii pendulum --ymin 1", "give both --ymin and --ymax"},
+      {"ascii pendulm", "did you mean 'pendulum'"},
+      {"analyze nonsense", "unknown experiment 'nonsense'"},
+      {"analyze convergence pendulum --set scheme=rk4", "no exact solution"},
+      {"analyze convergence undamped --levels 0", "--levels must be 2..20"},
+      {"analyze energy --schemes rk9", "'rk9' is not a valid scheme"},
+      {"analyze energy --dt 0.05,-1", "must be a positive number"},
+      {"analyze energy --T abc", "cannot read --T='abc'"},
+      {"analyze orbit --orbits 0", "--orbits must be >= 1"},
+      {"analyze frequency --w -1", "--w must be a positive"},
+      {"analyze empirical undamped --dt 0", "must be a positive number"},
+      {"analyze energy -o OUT.bmp", "end the file name in .png, .svg or .pdf"},
+  };
+  for (const auto& c : cases) check_refused(c);
 }

@@ -1,0 +1,89 @@
+#include "fuzz_inputs.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/expression.hpp"
+#include "core/models/model.hpp"
+#include "scenes/scene_config.hpp"
+
+namespace vibra::fuzz {
+namespace {
+
+// A few steps are enough to run every formula and the time mesh; more would
+// only slow the fuzzer down.
+constexpr int kSteps = 32;
+
+template <class Body>
+void expecting_user_errors(Body body) {
+  try {
+    body();
+  } catch (const UsageError&) {
+  } catch (const SolutionError&) {
+  }
+}
+
+void build_and_step(const ModelDefinition& model, const Parameters& parameters) {
+  auto trajectory = model.build(parameters);
+  std::vector<double> row(trajectory->width());
+  for (int i = 0; i < kSteps && trajectory->advance(); ++i) trajectory->row(row);
+}
+
+// Reads every key the way the models do, so each value's parser runs.
+void read_every_key(const Parameters& parameters) {
+  for (const KeySpec& spec : parameters.specs()) {
+    if (!parameters.has_value(spec.name)) continue;
+    expecting_user_errors([&] {
+      switch (spec.kind) {
+        case ValueKind::number: (void)parameters.number(spec.name); break;
+        case ValueKind::angle: (void)parameters.angle(spec.name); break;
+        case ValueKind::formula: (void)parameters.formula(spec.name); break;
+        case ValueKind::choice: (void)parameters.choice(spec.name); break;
+      }
+    });
+  }
+}
+
+}  // namespace
+
+void scene_file(std::string_view text) {
+  expecting_user_errors([&] {
+    const scenes::SceneConfig config = scenes::parse_scene(std::string(text), "fuzz.toml");
+    const ModelDefinition& model = find_model(config.model);
+    const Parameters parameters = scenes::model_parameters_of(config);
+    read_every_key(parameters);
+    build_and_step(model, parameters);
+    (void)scenes::window_width(config, 1.0);
+  });
+}
+
+void set_assignments(std::string_view text) {
+  if (text.empty()) return;
+  const auto& models = all_models();
+  const ModelDefinition& model = models[static_cast<unsigned char>(text[0]) % models.size()];
+  text.remove_prefix(1);
+  Parameters parameters = model_parameters(model);
+  while (!text.empty()) {
+    const size_t end = text.find('\n');
+    const std::string_view line = text.substr(0, end);
+    expecting_user_errors([&] { parameters.assign(line); });
+    text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
+  }
+  read_every_key(parameters);
+  expecting_user_errors([&] { build_and_step(model, parameters); });
+}
+
+void expression(std::string_view text) {
+  const std::string source(text);
+  expecting_user_errors([&] {
+    const Expression f("s", source, {"u", "t"});
+    const double nan = std::nan(""), inf = HUGE_VAL;
+    for (double u : {0.0, -1.5, 1e300, nan})
+      for (double t : {0.0, 2.5, -inf}) (void)f({u, t});
+  });
+  expecting_user_errors([&] { (void)evaluate_constant("dt", source); });
+}
+
+}  // namespace vibra::fuzz

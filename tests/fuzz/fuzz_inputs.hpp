@@ -1,0 +1,19 @@
+#pragma once
+// What the fuzz targets feed to vibra, shared by the libFuzzer executables
+// (tests/fuzz/fuzz_*.cpp) and by the Catch test that replays the corpus and
+// every regression input in the normal suite. Each entry accepts the errors
+// vibra reports to users (UsageError, SolutionError); anything else escapes
+// and is a finding.
+#include <string_view>
+
+namespace vibra::fuzz {
+
+/// A scene file: TOML text, loaded, its model built and stepped a little.
+void scene_file(std::string_view text);
+/// `--set` lines: the first byte picks a model, each further line is one
+/// KEY=VALUE; then every value is read and the model stepped a little.
+void set_assignments(std::string_view text);
+/// An expression in u and t, compiled and evaluated; also as a constant.
+void expression(std::string_view text);
+
+}  // namespace vibra::fuzz
