@@ -1,6 +1,7 @@
 #include "render/frame_sink.hpp"
 
 #include <algorithm>
+#include <thread>
 #include <cmath>
 #include <filesystem>
 
@@ -41,7 +42,8 @@ class VideoSink final : public FrameSink {
 
 class PngSink final : public FrameSink {
  public:
-  PngSink(FramePattern pattern, int width, int height) : pattern_(pattern), writer_(std::move(pattern), width, height) {}
+  PngSink(FramePattern pattern, int width, int height, int threads)
+      : pattern_(pattern), writer_(std::move(pattern), width, height, threads) {}
   void write(const std::uint8_t* bgra, int stride) override { writer_.write(bgra, stride); }
   void finish() override { writer_.finish(); }
   std::string description() const override {
@@ -107,10 +109,12 @@ std::unique_ptr<FrameSink> make_frame_sink(const std::string& output, int width,
     options.quality = parse_quality(settings.quality);
     options.crf = settings.crf;
     options.preset = settings.preset;
+    options.threads = settings.threads;
     options.metadata = metadata;
     return std::make_unique<VideoSink>(output, options);
   }
-  return std::make_unique<PngSink>(parse_frame_pattern(output, frame_count), width, height);
+  const int threads = settings.threads > 0 ? settings.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return std::make_unique<PngSink>(parse_frame_pattern(output, frame_count), width, height, threads);
 }
 
 }  // namespace vibra::render

@@ -28,6 +28,7 @@ struct VideoSettings {
   std::string quality = "medium";
   int crf = -1;
   std::string preset;
+  int threads = 0;  ///< PNG compression and encoder threads; 0 = one per core
 };
 
 /// True when `output` names a video file (.mp4, .webm, .mkv, .ogv, .gif, .flv).

@@ -359,6 +359,7 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
     c->flags |= AV_CODEC_FLAG_QSCALE;
     c->global_quality = FF_QP2LAMBDA * q;
   }
+  if (o.threads > 0) c->thread_count = o.threads;
   if (m.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   const int opened = avcodec_open2(c, encoder, &settings);
   av_dict_free(&settings);

@@ -17,6 +17,7 @@ struct VideoOptions {
   VideoQuality quality = VideoQuality::medium;
   int crf = -1;                    ///< -1 = from quality; else the encoder's crf (quantizer for theora, flv)
   std::string preset;              ///< x264 preset; "" = veryfast (fastest at equal size on line art)
+  int threads = 0;                 ///< encoder threads; 0 = the codec's default for this machine
   std::map<std::string, std::string> metadata;  ///< container metadata: title, comment
 };
 

@@ -91,6 +91,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--quality", o->video.quality, "draft, medium or high")->capture_default_str();
   cmd->add_option("--crf", o->video.crf, "Constant rate factor (overrides --quality)");
   cmd->add_option("--preset", o->video.preset, "x264 preset, e.g. veryfast, medium");
+  cmd->add_option("--threads", o->video.threads, "Threads for PNG compression and the encoder (default: one per core)")
+      ->check(CLI::Range(1, 64));
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or messages");
   cmd->footer(scene_keys_help());
   cmd->callback([o] { run(*o); });
