@@ -5,6 +5,7 @@
 #   bench/ascii_bench.sh [STEPS] [PEER_STEPS]    (defaults 1e7 and 1e6)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+scripts/setup --bench >/dev/null  # the peers' packages, and a current build
 STEPS=${1:-10000000}
 PEER_STEPS=${2:-1000000}
 VIBRA=${VIBRA:-build/vibra}

@@ -3,7 +3,8 @@
 # stable on a shared machine; absolute times are not). Prints frames/s of the
 # whole process, peak memory and file sizes.
 #
-#   bench/render_bench.sh [FRAMES]        (default 300; run from the repo root after scripts/setup)
+#   bench/render_bench.sh [FRAMES] [png|video|window]   (default 300 frames, every case;
+#                                                        installs the peers' packages first)
 #
 # Cases: PNG sequences (--layout fbd, the peers' scene) against
 # mpl_png_frames.py; MP4 and WebM against mpl_funcanim_ffmpeg.py and against
@@ -12,7 +13,10 @@
 # mpl_moving_window.py.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+scripts/setup --bench >/dev/null  # the peers' packages, and a current build
 FRAMES=${1:-300}
+ONLY=${2:-}
+wanted() { [ -z "$ONLY" ] || [ "$ONLY" = "$1" ]; }
 VIBRA=${VIBRA:-build/vibra}
 PEERS=${PEERS:-../shared/peers}
 PY=/usr/bin/python3
@@ -36,6 +40,7 @@ run() {
 size() { printf "%-44s %8d KiB\n" "  file size: $(basename "$1")" $(( $(stat -c %s "$1") / 1024 )); }
 ratio() { printf "  -> vibra / peer = %.1fx\n" "$(echo "$1 / $2" | bc -l)"; }
 
+wanted png && {
 echo "== PNG frames, --layout fbd, $FRAMES frames"
 for size in 720p 1080p; do
   dims=$([ $size = 720p ] && echo 1280x720 || echo 1920x1080)
@@ -45,7 +50,9 @@ for size in 720p 1080p; do
   ratio "$ours" "$LAST_FPS"
   rm -rf "$WORK/v_$size" "$WORK/p_$size"
 done
+}
 
+wanted video && {
 echo
 echo "== Video, default layout (fbd+plot), $FRAMES frames"
 for size in 720p 1080p; do
@@ -66,10 +73,13 @@ for size in 720p 1080p; do
   ratio "$mp4" "$LAST_FPS"
   rm -f "$WORK"/*.mp4 "$WORK"/*.webm "$WORK/raw.yuv"
 done
+}
 
+wanted window && {
 echo
 echo "== Moving window (u against t, 4 periods), 720p, $FRAMES PNG frames"
 mkdir -p "$WORK/mw_v" "$WORK/mw_p"
 run "vibra moving window" "$VIBRA" render pendulum "${SCENE[@]}" --layout plot --window 4periods -o "$WORK/mw_v"; ours=$LAST_FPS
 run "matplotlib moving window (mpl_moving_window.py)" $PY "$PEERS/mpl_moving_window.py" --frames "$FRAMES" --size 720p --window 4 --out "$WORK/mw_p"
 ratio "$ours" "$LAST_FPS"
+}

@@ -1,13 +1,31 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace vibra::render {
 
-/// Encodes Cairo ARGB32 pixels (premultiplied, native endian) as PNG: RGB when
-/// every pixel is opaque (smaller), else straight RGBA; filter None and zlib
-/// level 1, which for line art is about 5x faster than Cairo's own writer
-/// (level 6 with adaptive filters) at a modestly larger file.
+/// An image as PNG scanlines, ready to compress: each row is a filter byte
+/// (None) and then RGB when every pixel is opaque (smaller), else straight
+/// RGBA. Reused from frame to frame, so its storage is allocated once.
+struct PngScanlines {
+  int width = 0, height = 0;
+  bool opaque = true;
+  std::vector<std::uint8_t> bytes;
+};
+
+/// Packs Cairo ARGB32 pixels (premultiplied, native endian; rows `stride`
+/// bytes apart) into `out`, reusing its storage.
+void pack_png_scanlines(const std::uint8_t* bgra, int width, int height, int stride, PngScanlines& out);
+
+/// Compresses scanlines into a complete PNG file held in the first bytes of
+/// `png`, and returns its length. `png` only ever grows, so a buffer reused
+/// for every frame costs no allocation and no clearing. libdeflate at level 6
+/// with filter None: for line art several times faster than Cairo's own
+/// writer (zlib level 6 with adaptive filters), at a file of about its size.
+std::size_t encode_png(const PngScanlines& scanlines, std::vector<std::uint8_t>& png);
+
+/// Both steps at once, for a single image.
 std::vector<std::uint8_t> encode_png(const std::uint8_t* bgra, int width, int height, int stride);
 
 }  // namespace vibra::render

@@ -112,15 +112,20 @@ PngSequenceWriter::~PngSequenceWriter() {
 
 void PngSequenceWriter::write(const std::uint8_t* bgra, int stride) {
   if (finished_) throw std::logic_error("PngSequenceWriter::write after finish");
-  // Copy outside the lock, so the workers keep encoding meanwhile.
-  const size_t row = size_t(width_) * 4;
-  auto pixels = std::make_unique_for_overwrite<std::uint8_t[]>(row * height_);
-  for (int y = 0; y < height_; ++y) std::memcpy(pixels.get() + row * y, bgra + size_t(stride) * y, row);
-
   std::unique_lock lock(mutex_);
   progress_.wait(lock, [&] { return jobs_.size() < capacity_ || !failure_.empty(); });
   if (!failure_.empty()) throw OutputError(failure_);
-  jobs_.push_back({queued_++, std::move(pixels)});
+  PngScanlines scanlines;
+  if (!spare_.empty()) {
+    scanlines = std::move(spare_.back());
+    spare_.pop_back();
+  }
+  lock.unlock();
+  // Packing is the copy the caller needs anyway (its surface is redrawn next),
+  // done outside the lock so the workers keep compressing meanwhile.
+  pack_png_scanlines(bgra, width_, height_, stride, scanlines);
+  lock.lock();
+  jobs_.push_back({queued_++, std::move(scanlines)});
   saved_.push_back(false);
   lock.unlock();
   work_.notify_one();
@@ -148,6 +153,7 @@ void PngSequenceWriter::stop_workers() noexcept {
 }
 
 void PngSequenceWriter::work() {
+  std::vector<std::uint8_t> png;  // this worker's output buffer, reused
   std::unique_lock lock(mutex_);
   for (;;) {
     work_.wait(lock, [&] { return stopping_ || !jobs_.empty(); });
@@ -160,7 +166,7 @@ void PngSequenceWriter::work() {
 
     std::string error;
     try {
-      save(job);
+      save(job, png);
     } catch (const OutputError& e) {
       error = e.what();
     } catch (const std::exception& e) {
@@ -169,6 +175,7 @@ void PngSequenceWriter::work() {
 
     lock.lock();
     --busy_;
+    spare_.push_back(std::move(job.scanlines));
     if (error.empty())
       saved_[job.index] = true;
     else if (failure_.empty())
@@ -177,15 +184,15 @@ void PngSequenceWriter::work() {
   }
 }
 
-void PngSequenceWriter::save(const Job& job) const {
-  const std::vector<std::uint8_t> png = encode_png(job.pixels.get(), width_, height_, width_ * 4);
+void PngSequenceWriter::save(const Job& job, std::vector<std::uint8_t>& png) const {
+  const std::size_t size = encode_png(job.scanlines, png);
   const fs::path name = pattern_.name(job.index);
   TemporaryFile file(name);
   std::FILE* out = std::fopen(file.path().c_str(), "wb");
   if (!out)
     throw OutputError("cannot create '" + file.path().string() + "': " + std::generic_category().message(errno) +
                       ": choose a writable directory");
-  bool ok = std::fwrite(png.data(), 1, png.size(), out) == png.size();
+  bool ok = std::fwrite(png.data(), 1, size, out) == size;
   int error = errno;
   if (std::fclose(out) != 0 && ok) ok = false, error = errno;
   if (!ok)

@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "render/png_encoder.hpp"  // encode_png, which the writer's workers run
+#include "render/png_encoder.hpp"  // PngScanlines, which the writer queues
 
 namespace vibra::render {
 
@@ -46,8 +46,8 @@ class PngSequenceWriter {
   /// remains. Never throws.
   ~PngSequenceWriter();
 
-  /// Copies one Cairo ARGB32 frame (width x height, rows `stride` bytes apart)
-  /// and queues it, waiting while the queue is full. Throws OutputError if a
+  /// Packs one Cairo ARGB32 frame (width x height, rows `stride` bytes apart)
+  /// as PNG scanlines and queues it, waiting while the queue is full. Throws OutputError if a
   /// worker has already failed.
   void write(const std::uint8_t* bgra, int stride);
   /// Waits until every frame is on disk; throws OutputError for the first failure.
@@ -58,10 +58,10 @@ class PngSequenceWriter {
  private:
   struct Job {
     long long index;
-    std::unique_ptr<std::uint8_t[]> pixels;  // width x height, rows packed
+    PngScanlines scanlines;
   };
   void work();
-  void save(const Job&) const;
+  void save(const Job&, std::vector<std::uint8_t>& png) const;
   void stop_workers() noexcept;
 
   FramePattern pattern_;
@@ -74,6 +74,7 @@ class PngSequenceWriter {
   std::condition_variable work_;      // a job was queued, or stopping
   std::condition_variable progress_;  // a job was taken or done
   std::deque<Job> jobs_;
+  std::vector<PngScanlines> spare_;  // recycled: frames cost no allocation
   int busy_ = 0;
   bool stopping_ = false;
   std::string failure_;
