@@ -12,12 +12,6 @@
 namespace vibra::render {
 
 namespace {
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
 VideoQuality parse_quality(const std::string& q) {
   if (q == "draft") return VideoQuality::draft;
   if (q == "medium" || q.empty()) return VideoQuality::medium;
@@ -86,10 +80,7 @@ std::unique_ptr<FrameSink> make_tee_sink(std::vector<std::unique_ptr<FrameSink>>
   return std::make_unique<TeeSink>(std::move(sinks));
 }
 
-bool is_video_path(const std::string& output) {
-  const std::string ext = lower_extension(output);
-  return ext == ".mp4" || ext == ".webm" || ext == ".mkv" || ext == ".ogv" || ext == ".gif" || ext == ".flv";
-}
+bool is_video_path(const std::string& output) { return VideoWriter::is_video_path(output); }
 
 bool is_frame_pattern(const std::string& output) {
   std::error_code ec;

@@ -16,16 +16,16 @@ struct VideoOptions {
   std::string codec;               ///< "" = from the extension; or h264, vp9, vp8, theora, gif, flv
   VideoQuality quality = VideoQuality::medium;
   int crf = -1;                    ///< -1 = from quality; else the encoder's crf (quantizer for theora, flv)
-  std::string preset;              ///< x264 preset; "" = veryfast (fastest at equal size on line art)
+  std::string preset;              ///< x264 preset; "" = veryfast without B-frames (measured best for line art)
   int threads = 0;                 ///< encoder threads; 0 = the codec's default for this machine
   std::map<std::string, std::string> metadata;  ///< container metadata: title, comment
 };
 
 /// Encodes Cairo frames into a video file in process with FFmpeg's libraries,
-/// following FFmpeg's doc/examples/mux.c. Conversion (to BT.709 limited-range
-/// YUV 4:2:0, or to a fixed palette for GIF) and encoding run on a worker
-/// thread behind a bounded queue, so the caller draws the next frame while
-/// this one is encoded. The file is written under a temporary name and renamed
+/// following FFmpeg's doc/examples/mux.c. write() converts each frame (to
+/// BT.709 limited-range YUV 4:2:0, or to a fixed palette for GIF) on the
+/// caller's thread, and a worker thread encodes behind a bounded queue, so
+/// drawing and converting the next frame overlap encoding this one. The file is written under a temporary name and renamed
 /// by finish(): a failed or abandoned writer leaves nothing at the final path.
 class VideoWriter {
  public:
@@ -37,7 +37,7 @@ class VideoWriter {
   /// Unfinished: stops the worker and removes the temporary file. Never throws.
   ~VideoWriter();
 
-  /// Queues a copy of one frame of Cairo ARGB32 pixels (width x height,
+  /// Converts and queues one frame of Cairo ARGB32 pixels (width x height,
   /// `stride` bytes per row; premultiplied alpha, so transparency comes out
   /// black). Waits only while the queue is full. Throws OutputError for a
   /// failure the worker met since the last call.
@@ -51,6 +51,8 @@ class VideoWriter {
 
   /// The codec an output name implies; throws OutputError listing the supported extensions.
   static std::string codec_for_path(const std::filesystem::path&);
+  /// Whether the output name's extension is one of the video formats.
+  static bool is_video_path(const std::filesystem::path&);
 
  private:
   struct Impl;

@@ -131,7 +131,7 @@ void run_render(const RenderRequest& r) {
     if (ext == ".png")
       throw UsageError("-o " + r.output + " is one picture: add --at T, or give a pattern such as frames/tmp_%04d.png");
     throw UsageError("cannot tell what to write from -o " + r.output +
-                     ": use .mp4, .webm, .mkv, .ogv, .gif, .html, a frame pattern frames/tmp_%04d.png, a directory, or "
+                     ": use .mp4, .webm, .mkv, .ogv, .gif, .yuv, .html, a frame pattern frames/tmp_%04d.png, a directory, or "
                      ".png/.svg/.pdf with --at");
   }
 

@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "argb_image.hpp"
 #include "cli_support.hpp"
 #include "render/output_error.hpp"
 #include "render/png_sequence.hpp"
@@ -28,16 +29,7 @@ using vibra::test::ScratchDirectory;
 
 namespace {
 
-/// A Cairo ARGB32 image held as native-endian words, rows `stride` bytes apart.
-struct Image {
-  int width, height, stride;
-  std::vector<std::uint32_t> words;
-  Image(int w, int h, int padding_words = 0)
-      : width(w), height(h), stride(4 * (w + padding_words)), words(size_t(w + padding_words) * h) {}
-  std::uint32_t& at(int x, int y) { return words[size_t(y) * (stride / 4) + x]; }
-  std::uint32_t at(int x, int y) const { return words[size_t(y) * (stride / 4) + x]; }
-  const std::uint8_t* bytes() const { return reinterpret_cast<const std::uint8_t*>(words.data()); }
-};
+using Image = vibra::test::ArgbImage;
 
 std::uint32_t argb(unsigned a, unsigned r, unsigned g, unsigned b) { return a << 24 | r << 16 | g << 8 | b; }
 

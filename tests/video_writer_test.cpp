@@ -265,6 +265,22 @@ TEST_CASE("other formats hold the right codec and every frame", "[video]") {
   }
 }
 
+TEST_CASE("raw YUV holds the very frames the encoders get, and H.264 reproduces them", "[video]") {
+  ScratchDir dir;
+  VideoOptions options = small();
+  encode(dir.path / "frames.yuv", options, 30);
+  const std::size_t frame_bytes = 320 * 240 * 3 / 2;
+  REQUIRE(fs::file_size(dir.path / "frames.yuv") == 30 * frame_bytes);
+  encode(dir.path / "frames.mp4", options, 30);
+  // Decoded H.264 against the raw frames: lossy, but close (PSNR in dB).
+  const std::string log = run("ffmpeg -v info -i " + quoted(dir.path / "frames.mp4") +
+                              " -f rawvideo -pix_fmt yuv420p -s 320x240 -r 30 -i " + quoted(dir.path / "frames.yuv") +
+                              " -lavfi psnr -f null - 2>&1");
+  const auto at = log.find("average:");
+  REQUIRE(at != std::string::npos);
+  CHECK(std::stod(log.substr(at + 8)) > 40);
+}
+
 TEST_CASE("quality presets and crf set the size, bad values are refused", "[video]") {
   ScratchDir dir;
   VideoOptions options = small();
@@ -297,6 +313,9 @@ TEST_CASE("the extension picks the codec, unknown ones are refused with the list
   CHECK(VideoWriter::codec_for_path("a.ogv") == "theora");
   CHECK(VideoWriter::codec_for_path("a.gif") == "gif");
   CHECK(VideoWriter::codec_for_path("a.flv") == "flv");
+  CHECK(VideoWriter::codec_for_path("a.yuv") == "raw");
+  CHECK(VideoWriter::is_video_path("x/a.WebM"));
+  CHECK_FALSE(VideoWriter::is_video_path("a.png"));
   CHECK_THROWS_AS(VideoWriter::codec_for_path("a.avi"), OutputError);
   CHECK_THROWS_WITH(VideoWriter::codec_for_path("a"), Catch::Contains(".mp4") && Catch::Contains(".webm"));
   ScratchDir dir;

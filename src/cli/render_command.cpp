@@ -76,7 +76,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("SCENE", o->scene, "Built-in scene name or a TOML scene file")->capture_default_str();
   cmd->add_option("--set", o->settings, "KEY=VALUE: a scene key or a model key, repeatable");
   cmd->add_option("-o,--output", o->output,
-                  "OUT.mp4|.webm|.mkv|.ogv|.gif, PAGE.html (MP4 + WebM + page), frames/tmp_%04d.png or a directory, or a "
+                  "OUT.mp4|.webm|.mkv|.ogv|.gif|.yuv, PAGE.html (MP4 + WebM + page), frames/tmp_%04d.png or a directory, or a "
                   "still .png/.svg/.pdf with --at (default: SCENE.mp4)");
   cmd->add_option("--size", o->size, "Frame size WxH, e.g. 1920x1080");
   cmd->add_option("--fps", o->fps, "Frames per second");

@@ -1,0 +1,106 @@
+#include "render/yuv420_converter.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+namespace vibra::render {
+
+namespace {
+// BT.709 (Kr = 0.2126, Kb = 0.0722) into limited range: Y in 16..235 and
+// Cb, Cr in 16..240, as fixed-point weights of 8-bit R, G, B scaled by 2^16.
+// Each row of weights is rounded so that it sums exactly to its target
+// (219/255 for Y, 0 for Cb and Cr): white is 235 and greys have no colour.
+constexpr double kKr = 0.2126, kKb = 0.0722;
+constexpr int kShift = 16;
+constexpr int fixed(double x) { return static_cast<int>(x * (1 << kShift) + (x < 0 ? -0.5 : 0.5)); }
+
+constexpr double kLuma = 219.0 / 255, kChroma = 224.0 / 255;
+constexpr int kYr = fixed(kLuma * kKr), kYb = fixed(kLuma * kKb), kYg = fixed(kLuma) - kYr - kYb;
+constexpr int kUb = fixed(kChroma / 2), kUr = fixed(-kChroma / 2 * kKr / (1 - kKb)), kUg = -kUb - kUr;
+constexpr int kVr = fixed(kChroma / 2), kVb = fixed(-kChroma / 2 * kKb / (1 - kKr)), kVg = -kVr - kVb;
+
+inline int red(std::uint32_t p) { return static_cast<int>(p >> 16 & 0xff); }
+inline int green(std::uint32_t p) { return static_cast<int>(p >> 8 & 0xff); }
+inline int blue(std::uint32_t p) { return static_cast<int>(p & 0xff); }
+
+inline std::uint8_t luma(std::uint32_t p) {
+  return static_cast<std::uint8_t>((kYr * red(p) + kYg * green(p) + kYb * blue(p) + (16 << kShift) +
+                                    (1 << (kShift - 1))) >> kShift);
+}
+}  // namespace
+
+Yuv420Converter::Yuv420Converter(int width, int height, int out_width, int out_height)
+    : width_(width), height_(height), out_width_(out_width), out_height_(out_height),
+      padded_width_((width + 1) & ~1), padded_height_((height + 1) & ~1) {
+  if (width < 1 || height < 1 || width > 8192 || height > 8192)
+    throw std::invalid_argument("Yuv420Converter: size out of range");
+  if ((out_width != width && out_width != padded_width_) || (out_height != height && out_height != padded_height_))
+    throw std::invalid_argument("Yuv420Converter: the output may only round the size up to even");
+  previous_.resize(std::size_t(padded_width_) * padded_height_);
+  y_.resize(std::size_t(padded_width_) * padded_height_);
+  u_.resize(y_.size() / 4);
+  v_.resize(y_.size() / 4);
+}
+
+long long Yuv420Converter::blocks() const {
+  return (padded_height_ / 2LL) * ((width_ + kBlockWidth - 1) / kBlockWidth);
+}
+
+void Yuv420Converter::convert(const std::uint8_t* argb32, int stride, const Yuv420Planes& out) {
+  converted_ = 0;
+  for (int pair = 0; pair < padded_height_ / 2; ++pair) {
+    const auto* top = reinterpret_cast<const std::uint32_t*>(argb32 + std::ptrdiff_t(2 * pair) * stride);
+    const int bottom_row = std::min(2 * pair + 1, height_ - 1);  // an odd height repeats the last row
+    const auto* bottom = reinterpret_cast<const std::uint32_t*>(argb32 + std::ptrdiff_t(bottom_row) * stride);
+    std::uint32_t* kept_top = previous_.data() + std::size_t(2 * pair) * padded_width_;
+    std::uint32_t* kept_bottom = kept_top + padded_width_;
+    for (int x0 = 0; x0 < width_; x0 += kBlockWidth) {
+      const int x1 = std::min(x0 + kBlockWidth, width_);
+      const std::size_t bytes = std::size_t(x1 - x0) * 4;
+      if (!first_ && std::memcmp(top + x0, kept_top + x0, bytes) == 0 &&
+          std::memcmp(bottom + x0, kept_bottom + x0, bytes) == 0)
+        continue;
+      std::memcpy(kept_top + x0, top + x0, bytes);
+      std::memcpy(kept_bottom + x0, bottom + x0, bytes);
+      if (x1 < padded_width_ && x1 == width_) {  // an odd width repeats the last column
+        kept_top[x1] = kept_top[x1 - 1];
+        kept_bottom[x1] = kept_bottom[x1 - 1];
+      }
+      convert_block(pair, x0, x1 == width_ ? padded_width_ : x1);
+      ++converted_;
+    }
+  }
+  first_ = false;
+
+  for (int row = 0; row < out_height_; ++row)
+    std::memcpy(out.data[0] + std::ptrdiff_t(row) * out.linesize[0], y_.data() + std::size_t(row) * padded_width_,
+                out_width_);
+  const int chroma_width = (out_width_ + 1) / 2, chroma_height = (out_height_ + 1) / 2;
+  for (int row = 0; row < chroma_height; ++row) {
+    const std::size_t from = std::size_t(row) * (padded_width_ / 2);
+    std::memcpy(out.data[1] + std::ptrdiff_t(row) * out.linesize[1], u_.data() + from, chroma_width);
+    std::memcpy(out.data[2] + std::ptrdiff_t(row) * out.linesize[2], v_.data() + from, chroma_width);
+  }
+}
+
+void Yuv420Converter::convert_block(int pair, int x0, int x1) {
+  const std::uint32_t* top = previous_.data() + std::size_t(2 * pair) * padded_width_;
+  const std::uint32_t* bottom = top + padded_width_;
+  std::uint8_t* y_top = y_.data() + std::size_t(2 * pair) * padded_width_;
+  std::uint8_t* y_bottom = y_top + padded_width_;
+  std::uint8_t* u = u_.data() + std::size_t(pair) * (padded_width_ / 2);
+  std::uint8_t* v = v_.data() + std::size_t(pair) * (padded_width_ / 2);
+  constexpr int kChromaRound = 1 << (kShift + 1), kChromaOffset = 128 << (kShift + 2);
+  for (int x = x0; x < x1; x += 2) {
+    const std::uint32_t a = top[x], b = top[x + 1], c = bottom[x], d = bottom[x + 1];
+    y_top[x] = luma(a), y_top[x + 1] = luma(b), y_bottom[x] = luma(c), y_bottom[x + 1] = luma(d);
+    const int r = red(a) + red(b) + red(c) + red(d);
+    const int g = green(a) + green(b) + green(c) + green(d);
+    const int bl = blue(a) + blue(b) + blue(c) + blue(d);
+    u[x / 2] = static_cast<std::uint8_t>((kUr * r + kUg * g + kUb * bl + kChromaOffset + kChromaRound) >> (kShift + 2));
+    v[x / 2] = static_cast<std::uint8_t>((kVr * r + kVg * g + kVb * bl + kChromaOffset + kChromaRound) >> (kShift + 2));
+  }
+}
+
+}  // namespace vibra::render

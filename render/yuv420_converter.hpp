@@ -1,0 +1,50 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+namespace vibra::render {
+
+/// Three planes to write a YUV 4:2:0 picture into (as in an AVFrame).
+struct Yuv420Planes {
+  std::uint8_t* data[3];
+  int linesize[3];
+};
+
+/// Converts Cairo ARGB32 frames to YUV 4:2:0 with the BT.709 matrix in limited
+/// ("tv") range, chroma the mean of each 2x2 block; alpha is ignored, so
+/// premultiplied transparency comes out black.
+///
+/// Between two frames of an animation most of the picture stays the same
+/// (ceiling, axes, background), so the converter keeps the last frame and
+/// converts only the blocks of 2 rows by 32 columns that changed: comparing
+/// costs a fraction of converting. The result is exactly that of converting
+/// every block.
+class Yuv420Converter {
+ public:
+  /// Frames of width x height (1..8192); the output is out_width x out_height,
+  /// each equal to the frame's or one more for an odd one (H.264 needs even
+  /// sizes), the extra column or row repeating the last.
+  Yuv420Converter(int width, int height, int out_width, int out_height);
+
+  /// Converts one frame (rows `stride` bytes apart) into `out`: luma
+  /// out_width x out_height, chroma half of that rounded up.
+  void convert(const std::uint8_t* argb32, int stride, const Yuv420Planes& out);
+
+  /// Blocks converted by the last convert(), of blocks(): for tests and tuning.
+  long long converted_blocks() const { return converted_; }
+  long long blocks() const;
+
+  static constexpr int kBlockWidth = 32;
+
+ private:
+  void convert_block(int pair, int x0, int x1);
+
+  int width_, height_, out_width_, out_height_;
+  int padded_width_, padded_height_;  ///< even
+  bool first_ = true;
+  long long converted_ = 0;
+  std::vector<std::uint32_t> previous_;  ///< the last frame, padded to even size
+  std::vector<std::uint8_t> y_, u_, v_;  ///< its conversion, padded_width_ (/2) wide
+};
+
+}  // namespace vibra::render
