@@ -30,8 +30,6 @@ class StaticLayer {
     }
     if (grow) grow(*cache_, fresh);
     cache_->flush();
-    {
-    }
     cairo_t* cr = canvas.cr();
     cairo_save(cr);
     cairo_set_source_surface(cr, cache_->surface(), 0, 0);
