@@ -3,6 +3,7 @@
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
 
+#include <algorithm>
 #include <string>
 
 #include "render/output_error.hpp"
@@ -20,7 +21,8 @@ void check_size(int width, int height) {
 }  // namespace
 
 Canvas::Canvas(cairo_surface_t* surface, int width, int height)
-    : surface_(surface, cairo_surface_destroy), width_(width), height_(height) {
+    : surface_(surface, cairo_surface_destroy), width_(width), height_(height), drawn_(width, height),
+      drawn_last_frame_(width, height), changed_(width, height) {
   if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS)
     throw OutputError(std::string("cannot create the drawing surface: ") +
                       cairo_status_to_string(cairo_surface_status(surface)));
@@ -57,11 +59,54 @@ void Canvas::finish() {
 }
 
 void Canvas::clear(Color c) {
+  if (tracking_) drawn_.add_all(), changed_.add_all();
   cairo_save(cr());
   cairo_set_source_rgba(cr(), c.r, c.g, c.b, c.a);
   cairo_set_operator(cr(), CAIRO_OPERATOR_SOURCE);
   cairo_paint(cr());
   cairo_restore(cr());
+}
+
+void Canvas::mark_drawn(double x0, double y0, double x1, double y1) {
+  if (!tracking_) return;
+  // The box's corners in device pixels: the user space may be scaled or rotated.
+  double xs[4] = {x0, x1, x0, x1}, ys[4] = {y0, y0, y1, y1};
+  for (int i = 0; i < 4; ++i) cairo_user_to_device(cr(), &xs[i], &ys[i]);
+  const double left = *std::min_element(xs, xs + 4), right = *std::max_element(xs, xs + 4);
+  const double top = *std::min_element(ys, ys + 4), bottom = *std::max_element(ys, ys + 4);
+  drawn_.add(left, top, right, bottom);
+  changed_.add(left, top, right, bottom);
+}
+
+void Canvas::mark_path(double widen) {
+  if (!tracking_) return;
+  double x0, y0, x1, y1;
+  cairo_path_extents(cr(), &x0, &y0, &x1, &y1);
+  if (x0 == 0 && y0 == 0 && x1 == 0 && y1 == 0) return;  // empty path: nothing drawn
+  mark_drawn(x0 - widen, y0 - widen, x1 + widen, y1 + widen);
+}
+
+// A stroke reaches half the line width beyond the path with round joins and
+// caps; a whole width leaves room for square caps and short miters.
+void Canvas::stroke() {
+  mark_path(cairo_get_line_width(cr()));
+  cairo_stroke(cr());
+}
+
+void Canvas::fill() {
+  mark_path(0);
+  cairo_fill(cr());
+}
+
+void Canvas::fill_preserve() {
+  mark_path(0);
+  cairo_fill_preserve(cr());
+}
+
+void Canvas::begin_frame() {
+  std::swap(drawn_last_frame_, drawn_);
+  drawn_.clear();
+  changed_.clear();
 }
 
 WorldView::WorldView(const Eigen::AlignedBox2d& world, const PixelRect& pixels) {

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "render/color.hpp"
+#include "render/damage.hpp"
 
 namespace vibra::render {
 
@@ -49,11 +50,37 @@ class Canvas {
 
   void clear(Color);
 
+  /// Cairo's stroke and fills, noting first where they land (see Damage).
+  /// Every drawing of a frame goes through these or mark_drawn().
+  void stroke();
+  void fill();
+  void fill_preserve();
+  /// Notes a box in user space that is about to be drawn.
+  void mark_drawn(double x0, double y0, double x1, double y1);
+
+  /// Frames of an animation: from now on, note where drawing lands.
+  void track_damage() { tracking_ = true; }
+  bool tracks_damage() const { return tracking_; }
+  /// A new frame: what was drawn becomes the last frame's drawing.
+  void begin_frame();
+  /// What the last frame drew over its background (to be restored).
+  const Damage& drawn_last_frame() const { return drawn_last_frame_; }
+  /// What this frame drew so far, over its background.
+  const Damage& drawn() const { return drawn_; }
+  /// Notes background restored in `region` (all of it when region.all()).
+  void mark_restored(const Damage& region) { changed_.add(region); }
+  /// Where this frame's pixels may differ from the last frame's.
+  const Damage& changed() const { return changed_; }
+
  private:
   Canvas(cairo_surface_t*, int width, int height);
+  /// Notes the current path's extent, widened by `widen` user units.
+  void mark_path(double widen);
   std::shared_ptr<cairo_surface_t> surface_;
   std::shared_ptr<cairo_t> cr_;
   int width_, height_;
+  bool tracking_ = false;
+  Damage drawn_, drawn_last_frame_, changed_;
 };
 
 /// Maps world coordinates (y up, equal aspect) into a pixel rectangle (y down),

@@ -72,10 +72,10 @@ void draw_marker(Canvas& canvas, const Point& at, const Color& color) {
   cairo_new_path(cr);
   cairo_arc(cr, at.x(), at.y(), 4.5 * canvas.scale(), 0, 2 * M_PI);
   cairo_set_source_rgba(cr, color.r, color.g, color.b, color.a);
-  cairo_fill_preserve(cr);
+  canvas.fill_preserve();
   cairo_set_source_rgba(cr, palette::paper.r, palette::paper.g, palette::paper.b, 1);
   cairo_set_line_width(cr, 1.2 * canvas.scale());
-  cairo_stroke(cr);
+  canvas.stroke();
 }
 
 void draw_frame(Canvas& canvas, const PixelRect& area) {
@@ -84,7 +84,7 @@ void draw_frame(Canvas& canvas, const PixelRect& area) {
   cairo_rectangle(cr, area.x, area.y, area.w, area.h);
   cairo_set_source_rgba(cr, palette::ink.r, palette::ink.g, palette::ink.b, 0.7);
   cairo_set_line_width(cr, 1.2 * canvas.scale());
-  cairo_stroke(cr);
+  canvas.stroke();
 }
 
 /// How much of the panel's drawn data falls inside `box`: points sampled
@@ -179,7 +179,7 @@ void draw_legend(Canvas& canvas, const Placed& p, const std::vector<std::unique_
   cairo_rectangle(cr, box.x, box.y, box.w, box.h);
   cairo_set_source_rgba(cr, palette::faint.r, palette::faint.g, palette::faint.b, 1);
   cairo_set_line_width(cr, 1 * s);
-  cairo_stroke(cr);
+  canvas.stroke();
   for (size_t i = 0; i < entries.size(); ++i) {
     const double y = box.y + pad + (i + 0.5) * row - 1.5 * s;
     draw_legend_sample(canvas, {box.x + pad, y}, {box.x + pad + sample, y}, entries[i]->style());

@@ -22,7 +22,9 @@ VideoQuality parse_quality(const std::string& q) {
 class VideoSink final : public FrameSink {
  public:
   VideoSink(const std::string& path, const VideoOptions& options) : path_(path), writer_(path, options) {}
-  void write(const std::uint8_t* bgra, int stride) override { writer_.write(bgra, stride); }
+  void write(const std::uint8_t* bgra, int stride, const Damage* changed) override {
+    writer_.write(bgra, stride, changed);
+  }
   void finish() override { writer_.finish(); }
   std::vector<std::string> notes() const override { return writer_.notes(); }
   std::string description() const override {
@@ -38,7 +40,7 @@ class PngSink final : public FrameSink {
  public:
   PngSink(FramePattern pattern, int width, int height, int threads)
       : pattern_(pattern), writer_(std::move(pattern), width, height, threads) {}
-  void write(const std::uint8_t* bgra, int stride) override { writer_.write(bgra, stride); }
+  void write(const std::uint8_t* bgra, int stride, const Damage*) override { writer_.write(bgra, stride); }
   void finish() override { writer_.finish(); }
   std::string description() const override {
     return std::to_string(writer_.frames_written()) + " frames " + pattern_.name(0).string() + " ... " +
@@ -52,8 +54,8 @@ class PngSink final : public FrameSink {
 class TeeSink final : public FrameSink {
  public:
   explicit TeeSink(std::vector<std::unique_ptr<FrameSink>> sinks) : sinks_(std::move(sinks)) {}
-  void write(const std::uint8_t* bgra, int stride) override {
-    for (auto& s : sinks_) s->write(bgra, stride);
+  void write(const std::uint8_t* bgra, int stride, const Damage* changed) override {
+    for (auto& s : sinks_) s->write(bgra, stride, changed);
   }
   void finish() override {
     for (auto& s : sinks_) s->finish();

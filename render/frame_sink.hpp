@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "render/damage.hpp"
+
 namespace vibra::render {
 
 /// Where rendered frames go: a PNG sequence or a video file. write() takes
@@ -14,7 +16,8 @@ namespace vibra::render {
 class FrameSink {
  public:
   virtual ~FrameSink() = default;
-  virtual void write(const std::uint8_t* bgra, int stride) = 0;
+  /// `changed`: where the frame may differ from the last one, if known (else nullptr).
+  virtual void write(const std::uint8_t* bgra, int stride, const Damage* changed) = 0;
   virtual void finish() = 0;
   /// Things to tell the user once (e.g. a size rounded up for H.264).
   virtual std::vector<std::string> notes() const { return {}; }

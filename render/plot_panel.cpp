@@ -84,7 +84,7 @@ void PlotPanel::draw_axes(Canvas& canvas, const std::string& y_label, const std:
   cairo_rectangle(canvas.cr(), area_.x, area_.y, area_.w, area_.h);
   cairo_set_source_rgba(canvas.cr(), palette::ink.r, palette::ink.g, palette::ink.b, 0.7);
   cairo_set_line_width(canvas.cr(), 1.2 * scale_);
-  cairo_stroke(canvas.cr());
+  canvas.stroke();
   // The y label sits above the frame's top-left corner: readable without
   // rotation, clear of the curve, and it does not steal width from the plot.
   draw_text(canvas, {area_.x, area_.y - 3 * scale_}, y_label, {kLabelFont, palette::ink}, Anchor::bottom_left);
@@ -121,7 +121,7 @@ void PlotPanel::draw_cursor(Canvas& canvas, double x, double y, const Color& c) 
   cairo_new_path(canvas.cr());
   cairo_arc(canvas.cr(), p.x(), p.y(), 5 * scale_, 0, 2 * M_PI);
   cairo_set_source_rgba(canvas.cr(), c.r, c.g, c.b, c.a);
-  cairo_fill(canvas.cr());
+  canvas.fill();
 }
 
 void PlotPanel::draw_legend(Canvas& canvas, const std::vector<std::pair<std::string, Color>>& entries) const {

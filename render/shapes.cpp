@@ -27,7 +27,7 @@ void draw_pixel_line(Canvas& canvas, const Point& a, const Point& b, const Strok
   apply(canvas, s);
   move_to(canvas.cr(), a);
   line_to(canvas.cr(), b);
-  cairo_stroke(canvas.cr());
+  canvas.stroke();
 }
 
 void draw_pixel_polyline(Canvas& canvas, std::span<const Point> points, const Stroke& s) {
@@ -35,13 +35,13 @@ void draw_pixel_polyline(Canvas& canvas, std::span<const Point> points, const St
   apply(canvas, s);
   move_to(canvas.cr(), points[0]);
   for (size_t i = 1; i < points.size(); ++i) line_to(canvas.cr(), points[i]);
-  cairo_stroke(canvas.cr());
+  canvas.stroke();
 }
 
 void fill_pixel_rect(Canvas& canvas, const PixelRect& r, const Color& c) {
   cairo_set_source_rgba(canvas.cr(), c.r, c.g, c.b, c.a);
   cairo_rectangle(canvas.cr(), r.x, r.y, r.w, r.h);
-  cairo_fill(canvas.cr());
+  canvas.fill();
 }
 
 void draw_line(Canvas& canvas, const WorldView& view, const Point& a, const Point& b, const Stroke& s) {
@@ -66,7 +66,7 @@ void draw_arrow(Canvas& canvas, const WorldView& view, const Point& from, const 
   line_to(cr, base - half_width * across);
   cairo_close_path(cr);
   cairo_set_source_rgba(cr, s.color.r, s.color.g, s.color.b, s.color.a);
-  cairo_fill(cr);
+  canvas.fill();
 }
 
 void draw_circle(Canvas& canvas, const WorldView& view, const Point& center, double radius, const Color& fill,
@@ -76,9 +76,9 @@ void draw_circle(Canvas& canvas, const WorldView& view, const Point& center, dou
   cairo_new_path(cr);
   cairo_arc(cr, c.x(), c.y(), radius * view.zoom(), 0, 2 * M_PI);
   cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, fill.a);
-  cairo_fill_preserve(cr);
+  canvas.fill_preserve();
   apply(canvas, outline);
-  cairo_stroke(cr);
+  canvas.stroke();
 }
 
 void draw_arc(Canvas& canvas, const WorldView& view, const Point& center, double radius, double a0, double a1,
@@ -93,7 +93,7 @@ void draw_arc(Canvas& canvas, const WorldView& view, const Point& center, double
     cairo_arc_negative(cr, c.x(), c.y(), radius * view.zoom(), -a0, -a1);
   else
     cairo_arc(cr, c.x(), c.y(), radius * view.zoom(), -a0, -a1);
-  cairo_stroke(cr);
+  canvas.stroke();
 }
 
 void draw_ceiling(Canvas& canvas, const WorldView& view, const Point& center, double half_width, const Stroke& s) {
@@ -114,7 +114,7 @@ void draw_ceiling(Canvas& canvas, const WorldView& view, const Point& center, do
   cairo_new_path(canvas.cr());
   cairo_arc(canvas.cr(), pin.x(), pin.y(), 4.5 * canvas.scale(), 0, 2 * M_PI);
   cairo_set_source_rgba(canvas.cr(), s.color.r, s.color.g, s.color.b, s.color.a);
-  cairo_fill(canvas.cr());
+  canvas.fill();
 }
 
 }  // namespace vibra::render

@@ -2,6 +2,7 @@
 
 #include <pango/pangocairo.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -46,17 +47,24 @@ void draw_text(Canvas& canvas, const Point& at, const std::string& markup, const
     case Anchor::bottom_right: fx = 1, fy = 1; break;
   }
   cairo_t* cr = canvas.cr();
-  cairo_move_to(cr, std::round(at.x() - fx * size.x()), std::round(at.y() - fy * size.y()));
+  const double x = std::round(at.x() - fx * size.x()), y = std::round(at.y() - fy * size.y());
+  cairo_move_to(cr, x, y);
   if (style.halo) {
     cairo_save(cr);
     pango_cairo_layout_path(cr, layout.get());
     cairo_set_source_rgba(cr, style.halo_color.r, style.halo_color.g, style.halo_color.b, style.halo_color.a);
     cairo_set_line_width(cr, 5 * canvas.scale());
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    cairo_stroke(cr);
+    canvas.stroke();
     cairo_restore(cr);
-    cairo_move_to(cr, std::round(at.x() - fx * size.x()), std::round(at.y() - fy * size.y()));
+    cairo_move_to(cr, x, y);
   }
+  // Glyphs may reach beyond the logical box (italics, accents): note both boxes.
+  PangoRectangle ink, logical;
+  pango_layout_get_pixel_extents(layout.get(), &ink, &logical);
+  canvas.mark_drawn(x + std::min(ink.x, logical.x), y + std::min(ink.y, logical.y),
+                    x + std::max(ink.x + ink.width, logical.x + logical.width),
+                    y + std::max(ink.y + ink.height, logical.y + logical.height));
   cairo_set_source_rgba(cr, style.color.r, style.color.g, style.color.b, style.color.a);
   pango_cairo_show_layout(cr, layout.get());
   cairo_new_path(cr);

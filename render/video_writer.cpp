@@ -166,7 +166,7 @@ struct VideoWriter::Impl {
   /// Throws OutputError unless `code` is a success; `output` says whether the
   /// step writes the file, so that the fix names the likely cause.
   void check(int code, const std::string& what, bool output) const;
-  void convert(const std::uint8_t* argb32, int stride, AVFrame* into);
+  void convert(const std::uint8_t* argb32, int stride, const Damage* changed, AVFrame* into);
   void encode(AVFrame* input);
   void work();
 };
@@ -202,7 +202,7 @@ void VideoWriter::Impl::check(int code, const std::string& what, bool output) co
 
 /// Runs on the caller's thread, beside the encoder's: conversion is the
 /// copy of the caller's pixels that is needed anyway.
-void VideoWriter::Impl::convert(const std::uint8_t* argb32, int stride, AVFrame* into) {
+void VideoWriter::Impl::convert(const std::uint8_t* argb32, int stride, const Damage* changed, AVFrame* into) {
   check(av_frame_make_writable(into), "preparing a frame", false);
   if (palette) {
     for (int y = 0; y < height; ++y) {
@@ -214,7 +214,8 @@ void VideoWriter::Impl::convert(const std::uint8_t* argb32, int stride, AVFrame*
   } else {
     converter->convert(argb32, stride,
                        {{into->data[0], into->data[1], into->data[2]},
-                        {into->linesize[0], into->linesize[1], into->linesize[2]}});
+                        {into->linesize[0], into->linesize[1], into->linesize[2]}},
+                       changed);
   }
   into->pts = next_pts++;
 }
@@ -400,7 +401,7 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
 
 VideoWriter::~VideoWriter() = default;
 
-void VideoWriter::write(const std::uint8_t* argb32, int stride) {
+void VideoWriter::write(const std::uint8_t* argb32, int stride, const Damage* changed) {
   if (finished_) throw std::logic_error("VideoWriter::write after finish");
   Impl& m = *impl_;
   AVFrame* frame = nullptr;
@@ -412,7 +413,7 @@ void VideoWriter::write(const std::uint8_t* argb32, int stride) {
     m.free_frames.pop_back();
   }
   try {
-    m.convert(argb32, stride, frame);
+    m.convert(argb32, stride, changed, frame);
   } catch (...) {
     std::lock_guard lock(m.mutex);
     m.free_frames.push_back(frame);

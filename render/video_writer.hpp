@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "render/damage.hpp"
+
 namespace vibra::render {
 
 enum class VideoQuality { draft, medium, high };
@@ -40,8 +42,9 @@ class VideoWriter {
   /// Converts and queues one frame of Cairo ARGB32 pixels (width x height,
   /// `stride` bytes per row; premultiplied alpha, so transparency comes out
   /// black). Waits only while the queue is full. Throws OutputError for a
-  /// failure the worker met since the last call.
-  void write(const std::uint8_t* argb32, int stride);
+  /// failure the worker met since the last call. `changed`, if given, says
+  /// where the frame may differ from the last one: only there is it converted.
+  void write(const std::uint8_t* argb32, int stride, const Damage* changed = nullptr);
   /// Encodes what is queued, flushes the encoder, writes the trailer and
   /// renames the file into place. Throws OutputError (e.g. disk full).
   void finish();

@@ -47,32 +47,48 @@ long long Yuv420Converter::blocks() const {
   return (padded_height_ / 2LL) * ((width_ + kBlockWidth - 1) / kBlockWidth);
 }
 
-void Yuv420Converter::convert(const std::uint8_t* argb32, int stride, const Yuv420Planes& out) {
+void Yuv420Converter::convert(const std::uint8_t* argb32, int stride, const Yuv420Planes& out,
+                              const Damage* changed) {
   converted_ = 0;
+  if (changed && !first_ && changed->empty()) return copy_out(out);
   for (int pair = 0; pair < padded_height_ / 2; ++pair) {
     const auto* top = reinterpret_cast<const std::uint32_t*>(argb32 + std::ptrdiff_t(2 * pair) * stride);
     const int bottom_row = std::min(2 * pair + 1, height_ - 1);  // an odd height repeats the last row
     const auto* bottom = reinterpret_cast<const std::uint32_t*>(argb32 + std::ptrdiff_t(bottom_row) * stride);
-    std::uint32_t* kept_top = previous_.data() + std::size_t(2 * pair) * padded_width_;
-    std::uint32_t* kept_bottom = kept_top + padded_width_;
-    for (int x0 = 0; x0 < width_; x0 += kBlockWidth) {
-      const int x1 = std::min(x0 + kBlockWidth, width_);
-      const std::size_t bytes = std::size_t(x1 - x0) * 4;
-      if (!first_ && std::memcmp(top + x0, kept_top + x0, bytes) == 0 &&
-          std::memcmp(bottom + x0, kept_bottom + x0, bytes) == 0)
-        continue;
-      std::memcpy(kept_top + x0, top + x0, bytes);
-      std::memcpy(kept_bottom + x0, bottom + x0, bytes);
-      if (x1 < padded_width_ && x1 == width_) {  // an odd width repeats the last column
-        kept_top[x1] = kept_top[x1 - 1];
-        kept_bottom[x1] = kept_bottom[x1 - 1];
+    if (changed && !first_)
+      changed->spans(2 * pair, 2 * pair + 2, spans_);
+    else
+      spans_.assign(1, {0, width_});
+    int next_block = 0;  // spans may share a block: visit each once
+    for (const auto& [span_x0, span_x1] : spans_)
+      for (int block = std::max(next_block, span_x0 / kBlockWidth); block * kBlockWidth < span_x1; ++block) {
+        next_block = block + 1;
+        convert_if_changed(pair, block * kBlockWidth, top, bottom);
       }
-      convert_block(pair, x0, x1 == width_ ? padded_width_ : x1);
-      ++converted_;
-    }
   }
   first_ = false;
+  copy_out(out);
+}
 
+void Yuv420Converter::convert_if_changed(int pair, int x0, const std::uint32_t* top, const std::uint32_t* bottom) {
+  std::uint32_t* kept_top = previous_.data() + std::size_t(2 * pair) * padded_width_;
+  std::uint32_t* kept_bottom = kept_top + padded_width_;
+  const int x1 = std::min(x0 + kBlockWidth, width_);
+  const std::size_t bytes = std::size_t(x1 - x0) * 4;
+  if (!first_ && std::memcmp(top + x0, kept_top + x0, bytes) == 0 &&
+      std::memcmp(bottom + x0, kept_bottom + x0, bytes) == 0)
+    return;
+  std::memcpy(kept_top + x0, top + x0, bytes);
+  std::memcpy(kept_bottom + x0, bottom + x0, bytes);
+  if (x1 < padded_width_ && x1 == width_) {  // an odd width repeats the last column
+    kept_top[x1] = kept_top[x1 - 1];
+    kept_bottom[x1] = kept_bottom[x1 - 1];
+  }
+  convert_block(pair, x0, x1 == width_ ? padded_width_ : x1);
+  ++converted_;
+}
+
+void Yuv420Converter::copy_out(const Yuv420Planes& out) const {
   for (int row = 0; row < out_height_; ++row)
     std::memcpy(out.data[0] + std::ptrdiff_t(row) * out.linesize[0], y_.data() + std::size_t(row) * padded_width_,
                 out_width_);

@@ -2,6 +2,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "render/damage.hpp"
+
 namespace vibra::render {
 
 /// Three planes to write a YUV 4:2:0 picture into (as in an AVFrame).
@@ -17,8 +19,9 @@ struct Yuv420Planes {
 /// Between two frames of an animation most of the picture stays the same
 /// (ceiling, axes, background), so the converter keeps the last frame and
 /// converts only the blocks of 2 rows by 32 columns that changed: comparing
-/// costs a fraction of converting. The result is exactly that of converting
-/// every block.
+/// costs a fraction of converting, and where the caller says nothing changed
+/// (Damage) it does not even compare. The result is exactly that of
+/// converting every block.
 class Yuv420Converter {
  public:
   /// Frames of width x height (1..8192); the output is out_width x out_height,
@@ -27,8 +30,9 @@ class Yuv420Converter {
   Yuv420Converter(int width, int height, int out_width, int out_height);
 
   /// Converts one frame (rows `stride` bytes apart) into `out`: luma
-  /// out_width x out_height, chroma half of that rounded up.
-  void convert(const std::uint8_t* argb32, int stride, const Yuv420Planes& out);
+  /// out_width x out_height, chroma half of that rounded up. `changed`, if
+  /// given, bounds where the frame differs from the last one.
+  void convert(const std::uint8_t* argb32, int stride, const Yuv420Planes& out, const Damage* changed = nullptr);
 
   /// Blocks converted by the last convert(), of blocks(): for tests and tuning.
   long long converted_blocks() const { return converted_; }
@@ -37,7 +41,10 @@ class Yuv420Converter {
   static constexpr int kBlockWidth = 32;
 
  private:
+  /// Converts the block at row pair `pair`, columns from x0, if it changed.
+  void convert_if_changed(int pair, int x0, const std::uint32_t* top, const std::uint32_t* bottom);
   void convert_block(int pair, int x0, int x1);
+  void copy_out(const Yuv420Planes& out) const;
 
   int width_, height_, out_width_, out_height_;
   int padded_width_, padded_height_;  ///< even
@@ -45,6 +52,7 @@ class Yuv420Converter {
   long long converted_ = 0;
   std::vector<std::uint32_t> previous_;  ///< the last frame, padded to even size
   std::vector<std::uint8_t> y_, u_, v_;  ///< its conversion, padded_width_ (/2) wide
+  std::vector<std::pair<int, int>> spans_;  ///< scratch: the changed columns of a row pair
 };
 
 }  // namespace vibra::render

@@ -188,12 +188,14 @@ void run_render(const RenderRequest& r) {
   if (!r.quiet)
     for (const auto& note : sink->notes()) std::fprintf(stderr, "vibra: %s\n", note.c_str());
   render::Canvas canvas = render::Canvas::image(r.scene.width, r.scene.height);
+  canvas.track_damage();  // frames redraw, and the encoder converts, only what changed
   render::Progress progress("vibra render", clock.frames(), r.quiet);
   for (long long k = 0; k < clock.frames(); ++k) {
     render::throw_if_stop_requested();
+    canvas.begin_frame();
     scene->draw(canvas, row_at(clock.time(k)));
     canvas.flush();
-    sink->write(canvas.data(), canvas.stride());
+    sink->write(canvas.data(), canvas.stride(), &canvas.changed());
     progress.update(k + 1);
   }
   sink->finish();

@@ -17,6 +17,9 @@ class StaticLayer {
   using Grow = std::function<void(render::Canvas& layer, bool from_start)>;
   explicit StaticLayer(std::function<void(render::Canvas&)> draw) : draw_(std::move(draw)) {}
 
+  /// Paints the layer under a frame. On a canvas that tracks damage, only
+  /// where the last frame drew, and where the layer grew, is repainted: the
+  /// rest of the canvas already shows the layer.
   void paint(render::Canvas& canvas, const Grow& grow = {}) {
     if (cairo_surface_get_type(canvas.surface()) != CAIRO_SURFACE_TYPE_IMAGE) {
       draw_(canvas);
@@ -26,21 +29,40 @@ class StaticLayer {
     const bool fresh = !cache_;
     if (fresh) {
       cache_.emplace(render::Canvas::image(canvas.width(), canvas.height()));
+      if (canvas.tracks_damage()) cache_->track_damage();
       draw_(*cache_);
     }
+    cache_->begin_frame();
     if (grow) grow(*cache_, fresh);
     cache_->flush();
+
+    render::Damage region(canvas.width(), canvas.height());
+    if (fresh || !canvas.tracks_damage() || painted_on_ != canvas.surface()) {
+      region.add_all();
+    } else {
+      region.add(canvas.drawn_last_frame());
+      region.add(cache_->drawn());
+    }
+    painted_on_ = canvas.surface();
+    if (region.empty()) return;
     cairo_t* cr = canvas.cr();
     cairo_save(cr);
+    if (!region.all()) {
+      cairo_new_path(cr);
+      for (const render::DamageRect& r : region.rects()) cairo_rectangle(cr, r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
+      cairo_clip(cr);
+    }
     cairo_set_source_surface(cr, cache_->surface(), 0, 0);
     cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
     cairo_paint(cr);
     cairo_restore(cr);
+    canvas.mark_restored(region);
   }
 
  private:
   std::function<void(render::Canvas&)> draw_;
   std::optional<render::Canvas> cache_;
+  cairo_surface_t* painted_on_ = nullptr;  ///< the canvas painted last: only it holds the layer already
 };
 
 }  // namespace vibra::scenes

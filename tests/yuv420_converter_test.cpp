@@ -119,6 +119,31 @@ TEST_CASE("yuv420: converting only the changed blocks gives exactly a full conve
   }
 }
 
+TEST_CASE("yuv420: with damage given, only the damaged blocks are looked at", "[yuv]") {
+  const int w = 128, h = 64;
+  Image image(w, h);
+  Yuv420Converter converter(w, h, w, h);
+  Yuv out(w, h);
+  converter.convert(image.bytes(), image.stride, out.planes());
+
+  image.at(10, 10) = argb(255, 0, 0);  // inside the damage
+  image.at(100, 50) = argb(0, 0, 255);  // outside it: the caller promised nothing changed there
+  vibra::render::Damage changed(w, h);
+  changed.add(8, 8, 12, 12, 0);
+  converter.convert(image.bytes(), image.stride, out.planes(), &changed);
+  CHECK(converter.converted_blocks() == 1);
+  CHECK(int(out.y[10 * w + 10]) == 63);   // red
+  CHECK(int(out.y[50 * w + 100]) == 235);  // still white: not looked at
+
+  vibra::render::Damage nothing(w, h);
+  converter.convert(image.bytes(), image.stride, out.planes(), &nothing);
+  CHECK(converter.converted_blocks() == 0);
+  changed.add_all();
+  converter.convert(image.bytes(), image.stride, out.planes(), &changed);
+  CHECK(converter.converted_blocks() == 1);  // the blue pixel's block, found by comparing
+  CHECK(out == convert_once(image, w, h));
+}
+
 TEST_CASE("yuv420: an odd size is padded by repeating the last column and row", "[yuv]") {
   Image image(7, 5);
   for (int y = 0; y < 5; ++y)
