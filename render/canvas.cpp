@@ -22,7 +22,7 @@ void check_size(int width, int height) {
 
 Canvas::Canvas(cairo_surface_t* surface, int width, int height)
     : surface_(surface, cairo_surface_destroy), width_(width), height_(height), drawn_(width, height),
-      drawn_last_frame_(width, height), changed_(width, height) {
+      drawn_last_frame_(width, height), restored_(width, height) {
   if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS)
     throw OutputError(std::string("cannot create the drawing surface: ") +
                       cairo_status_to_string(cairo_surface_status(surface)));
@@ -59,7 +59,7 @@ void Canvas::finish() {
 }
 
 void Canvas::clear(Color c) {
-  if (tracking_) drawn_.add_all(), changed_.add_all();
+  if (tracking_) drawn_.add_all();
   cairo_save(cr());
   cairo_set_source_rgba(cr(), c.r, c.g, c.b, c.a);
   cairo_set_operator(cr(), CAIRO_OPERATOR_SOURCE);
@@ -75,7 +75,6 @@ void Canvas::mark_drawn(double x0, double y0, double x1, double y1) {
   const double left = *std::min_element(xs, xs + 4), right = *std::max_element(xs, xs + 4);
   const double top = *std::min_element(ys, ys + 4), bottom = *std::max_element(ys, ys + 4);
   drawn_.add(left, top, right, bottom);
-  changed_.add(left, top, right, bottom);
 }
 
 void Canvas::mark_path(double widen) {
@@ -106,7 +105,13 @@ void Canvas::fill_preserve() {
 void Canvas::begin_frame() {
   std::swap(drawn_last_frame_, drawn_);
   drawn_.clear();
-  changed_.clear();
+  restored_.clear();
+}
+
+Damage Canvas::changed() const {
+  Damage changed = restored_;
+  changed.add(drawn_);
+  return changed;
 }
 
 WorldView::WorldView(const Eigen::AlignedBox2d& world, const PixelRect& pixels) {

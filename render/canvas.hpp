@@ -68,9 +68,10 @@ class Canvas {
   /// What this frame drew so far, over its background.
   const Damage& drawn() const { return drawn_; }
   /// Notes background restored in `region` (all of it when region.all()).
-  void mark_restored(const Damage& region) { changed_.add(region); }
-  /// Where this frame's pixels may differ from the last frame's.
-  const Damage& changed() const { return changed_; }
+  void mark_restored(const Damage& region) { restored_.add(region); }
+  /// Where this frame's pixels may differ from the last frame's: what was
+  /// restored and what was drawn.
+  Damage changed() const;
 
  private:
   Canvas(cairo_surface_t*, int width, int height);
@@ -80,7 +81,7 @@ class Canvas {
   std::shared_ptr<cairo_t> cr_;
   int width_, height_;
   bool tracking_ = false;
-  Damage drawn_, drawn_last_frame_, changed_;
+  Damage drawn_, drawn_last_frame_, restored_;
 };
 
 /// Maps world coordinates (y up, equal aspect) into a pixel rectangle (y down),

@@ -112,19 +112,19 @@ PngSequenceWriter::~PngSequenceWriter() {
 
 void PngSequenceWriter::write(const std::uint8_t* bgra, int stride) {
   if (finished_) throw std::logic_error("PngSequenceWriter::write after finish");
-  std::unique_lock lock(mutex_);
-  progress_.wait(lock, [&] { return jobs_.size() < capacity_ || !failure_.empty(); });
-  if (!failure_.empty()) throw OutputError(failure_);
   PngScanlines scanlines;
+  std::unique_lock lock(mutex_);
   if (!spare_.empty()) {
     scanlines = std::move(spare_.back());
     spare_.pop_back();
   }
   lock.unlock();
-  // Packing is the copy the caller needs anyway (its surface is redrawn next),
-  // done outside the lock so the workers keep compressing meanwhile.
+  // Packing is the copy the caller needs anyway (its surface is redrawn
+  // next); done before waiting for room, so it overlaps the workers' compression.
   pack_png_scanlines(bgra, width_, height_, stride, scanlines);
   lock.lock();
+  progress_.wait(lock, [&] { return jobs_.size() < capacity_ || !failure_.empty(); });
+  if (!failure_.empty()) throw OutputError(failure_);
   jobs_.push_back({queued_++, std::move(scanlines)});
   saved_.push_back(false);
   lock.unlock();

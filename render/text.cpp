@@ -33,7 +33,9 @@ Point text_size(Canvas& canvas, const std::string& markup, const TextStyle& styl
 
 void draw_text(Canvas& canvas, const Point& at, const std::string& markup, const TextStyle& style, Anchor anchor) {
   auto layout = make_layout(canvas, markup, style);
-  const Point size = ink_size(layout.get());
+  PangoRectangle ink, logical;
+  pango_layout_get_pixel_extents(layout.get(), &ink, &logical);
+  const Point size(logical.width, logical.height);  // as ink_size()
   double fx = 0.5, fy = 0.5;  // fraction of the box left of / above the anchor
   switch (anchor) {
     case Anchor::center: break;
@@ -60,8 +62,6 @@ void draw_text(Canvas& canvas, const Point& at, const std::string& markup, const
     cairo_move_to(cr, x, y);
   }
   // Glyphs may reach beyond the logical box (italics, accents): note both boxes.
-  PangoRectangle ink, logical;
-  pango_layout_get_pixel_extents(layout.get(), &ink, &logical);
   canvas.mark_drawn(x + std::min(ink.x, logical.x), y + std::min(ink.y, logical.y),
                     x + std::max(ink.x + ink.width, logical.x + logical.width),
                     y + std::max(ink.y + ink.height, logical.y + logical.height));

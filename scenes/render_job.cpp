@@ -195,7 +195,8 @@ void run_render(const RenderRequest& r) {
     canvas.begin_frame();
     scene->draw(canvas, row_at(clock.time(k)));
     canvas.flush();
-    sink->write(canvas.data(), canvas.stride(), &canvas.changed());
+    const render::Damage changed = canvas.changed();
+    sink->write(canvas.data(), canvas.stride(), &changed);
     progress.update(k + 1);
   }
   sink->finish();

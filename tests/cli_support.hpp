@@ -1,12 +1,16 @@
 #pragma once
 // Runs the real `vibra` executable for end-to-end tests.
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <catch2/catch.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace vibra::test {
 
@@ -36,6 +40,25 @@ inline CommandResult run_vibra(const std::string& args) {
   return result;
 }
 
+/// Starts `vibra ARGS` as a child process, without a shell, its stdout and
+/// stderr written to the given files (e.g. /dev/null); returns its pid.
+inline pid_t spawn_vibra(const std::vector<std::string>& args, const std::string& out_file,
+                         const std::string& err_file) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int out = ::open(out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(out, 1);
+    ::dup2(err, 2);
+    std::vector<char*> argv{const_cast<char*>(VIBRA_EXE)};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(VIBRA_EXE, argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
 /// A fresh empty directory under /tmp, removed by the destructor.
 struct ScratchDirectory {
   std::filesystem::path path;
@@ -50,5 +73,20 @@ struct ScratchDirectory {
   std::string operator/(const std::string& name) const { return (path / name).string(); }
   bool empty() const { return std::filesystem::is_empty(path); }
 };
+
+/// Checks that `vibra ARGS` refuses bad input as every command must: exit
+/// code 2, one line on stderr containing `expected`, nothing written. Each
+/// OUT in `args` becomes a path in a fresh directory, which must stay empty.
+inline void check_refused(std::string args, const std::string& expected) {
+  ScratchDirectory dir;
+  for (auto at = args.find("OUT"); at != std::string::npos; at = args.find("OUT")) args.replace(at, 3, dir / "out");
+  INFO("vibra " << args);
+  const auto r = run_vibra(args);
+  INFO("stderr: " << r.err);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, Catch::Contains(expected));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK(dir.empty());
+}
 
 }  // namespace vibra::test

@@ -4,7 +4,6 @@
 // steady where time is not).
 #include <sys/resource.h>
 #include <sys/wait.h>
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -19,17 +18,7 @@ namespace {
 
 // Runs vibra with ARGS, output to /dev/null; returns its peak RSS in KiB.
 long peak_kib(const std::vector<std::string>& args) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    dup2(null, 1);
-    dup2(null, 2);
-    std::vector<char*> argv{const_cast<char*>(VIBRA_EXE)};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(VIBRA_EXE, argv.data());
-    _exit(127);
-  }
+  const pid_t pid = vibra::test::spawn_vibra(args, "/dev/null", "/dev/null");
   int status = 0;
   rusage usage{};
   wait4(pid, &status, 0, &usage);

@@ -99,16 +99,5 @@ TEST_CASE("vibra plot refuses bad input with one line, exit code 2 and no file",
       {"plot undamped -o OUT/missing/u.png", "does not exist"},
       {"plot undamped --set T=inf -o OUT.png", "finite end time"},
   };
-  for (const auto& [args_template, expected] : cases) {
-    ScratchDirectory dir;
-    std::string args = args_template;
-    for (auto at = args.find("OUT"); at != std::string::npos; at = args.find("OUT")) args.replace(at, 3, dir / "out");
-    INFO("vibra " << args);
-    const auto r = run_vibra(args);
-    INFO("stderr: " << r.err);
-    CHECK(r.exit_code == 2);
-    CHECK_THAT(r.err, Catch::Contains(expected));
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK(dir.empty());
-  }
+  for (const auto& [args, expected] : cases) vibra::test::check_refused(args, expected);
 }

@@ -1,7 +1,6 @@
 // SIGINT and SIGTERM during long output: every kind of output stops cleanly
 // with exit code 128 + signal and leaves either nothing (videos, PNG frames:
 // the run's frames are removed) or only complete lines (ASCII).
-#include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -32,18 +31,7 @@ struct Interrupted {
 template <class Condition>
 Interrupted interrupt_vibra(const std::vector<std::string>& args, const std::string& out_file,
                             const std::string& err_file, int signal, Condition work_has_started) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int out = ::open(out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(out, 1);
-    dup2(err, 2);
-    std::vector<char*> argv{const_cast<char*>(VIBRA_EXE)};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(VIBRA_EXE, argv.data());
-    _exit(127);
-  }
+  const pid_t pid = vibra::test::spawn_vibra(args, out_file, err_file);
   for (int i = 0; i < 500 && !work_has_started(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   kill(pid, signal);
