@@ -87,8 +87,9 @@ void PendulumScene::prepare() {
   world_.extend(Point(-0.35, 0.12));
   world_.extend(Point(0.35, -diagram_.vertical_length));
   const double scale = render::scale_for_height(height_);
-  // Room for arrow labels and the read-out lines at the top and bottom.
-  const double side = 48 * scale, top = 56 * scale, bottom = 52 * scale;
+  // Room for arrow labels and the read-out lines at the top and bottom; the
+  // caption's line at the bottom comes below the lowest arrow's label.
+  const double side = 48 * scale, top = 56 * scale, bottom = (style_.caption.empty() ? 52 : 80) * scale;
   view_.emplace(world_, PixelRect{diagram_area_.x + side, diagram_area_.y + top, diagram_area_.w - 2 * side,
                                   diagram_area_.h - top - bottom});
   for (auto& panel : panels_) panel.finish_recording();
