@@ -61,7 +61,7 @@ done
 wanted video && {
 # The encoders' ceiling: ffmpeg encodes vibra's own YUV frames (-o x.yuv),
 # already in memory, with the settings vibra uses by default.
-X264=(-c:v libx264 -preset veryfast -x264-params bframes=0:me=dia -crf 23 -g 150 -profile:v high -threads 2)
+X264=(-c:v libx264 -preset veryfast -x264-params bframes=0:me=dia:subme=1:8x8dct=0 -crf 23 -g 150 -profile:v high -threads 2)
 VP9=(-c:v libvpx-vp9 -crf 32 -b:v 0 -row-mt 1 -deadline realtime -cpu-used 8 -g 150 -threads 2)
 echo
 echo "== Video, --layout fbd (the peers' scene), $FRAMES frames"

@@ -27,6 +27,8 @@ Point ink_size(PangoLayout* layout) {
 }
 }  // namespace
 
+void start_loading_fonts() { pango_cairo_font_map_get_default(); }
+
 Point text_size(Canvas& canvas, const std::string& markup, const TextStyle& style) {
   return ink_size(make_layout(canvas, markup, style).get());
 }

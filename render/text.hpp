@@ -19,6 +19,11 @@ struct TextStyle {
   Color halo_color = palette::paper;
 };
 
+/// Starts loading the font configuration in the background (Pango runs
+/// fontconfig's start-up on its own thread), so that it overlaps the work
+/// before the first label instead of delaying it.
+void start_loading_fonts();
+
 /// Draws Pango markup at pixel point `at`.
 void draw_text(Canvas&, const Point& at, const std::string& markup, const TextStyle&, Anchor = Anchor::center);
 /// The markup's size in pixels.

@@ -16,6 +16,7 @@
 #include "render/progress.hpp"
 #include "render/stop_signal.hpp"
 #include "render/temporary_file.hpp"
+#include "render/text.hpp"
 #include "scenes/frame_clock.hpp"
 #include "scenes/scene_factory.hpp"
 
@@ -135,6 +136,7 @@ void run_render(const RenderRequest& r) {
                      ".png/.svg/.pdf with --at");
   }
 
+  render::start_loading_fonts();  // overlaps the solver's pre-pass and the encoder's start
   const ModelDefinition& model = find_model(r.scene.model);
   const Parameters parameters = model_parameters_of(r.scene);
   std::unique_ptr<Trajectory> pre_pass = model.build(parameters);
