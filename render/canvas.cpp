@@ -4,8 +4,10 @@
 #include <cairo-svg.h>
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 
+#include "render/huge_pages.hpp"
 #include "render/output_error.hpp"
 
 namespace vibra::render {
@@ -34,7 +36,23 @@ Canvas::Canvas(cairo_surface_t* surface, int width, int height)
 
 Canvas Canvas::image(int width, int height) {
   check_size(width, height);
-  return Canvas(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height), width, height);
+  // Pixels in huge pages (see huge_pages.hpp), owned by the surface.
+  const int stride = cairo_format_stride_for_width(CAIRO_FORMAT_ARGB32, width);
+  auto pixels = std::make_unique<LargeArray<unsigned char>>(std::size_t(stride) * height);
+  std::memset(pixels->data(), 0, pixels->size());  // transparent, as cairo_image_surface_create
+  cairo_surface_t* surface =
+      cairo_image_surface_create_for_data(pixels->data(), CAIRO_FORMAT_ARGB32, width, height, stride);
+  static const cairo_user_data_key_t kPixels{};
+  if (cairo_surface_status(surface) == CAIRO_STATUS_SUCCESS) {
+    if (cairo_surface_set_user_data(surface, &kPixels, pixels.get(),
+                                    [](void* p) { delete static_cast<LargeArray<unsigned char>*>(p); }) !=
+        CAIRO_STATUS_SUCCESS) {
+      cairo_surface_destroy(surface);
+      throw std::bad_alloc();
+    }
+    pixels.release();
+  }
+  return Canvas(surface, width, height);  // an error surface throws there
 }
 
 Canvas Canvas::svg(const std::filesystem::path& file, int width, int height) {

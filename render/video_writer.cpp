@@ -3,6 +3,7 @@
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
+#include <libavutil/imgutils.h>
 }
 
 #include <algorithm>
@@ -16,6 +17,7 @@ extern "C" {
 #include <stdexcept>
 #include <thread>
 
+#include "render/huge_pages.hpp"
 #include "render/output_error.hpp"
 #include "render/temporary_file.hpp"
 #include "render/yuv420_converter.hpp"
@@ -25,6 +27,28 @@ namespace fs = std::filesystem;
 namespace vibra::render {
 
 namespace {
+/// As av_frame_get_buffer, with the pixels in huge pages (see huge_pages.hpp).
+int allocate_frame_pixels(AVFrame* frame) {
+  const auto format = static_cast<AVPixelFormat>(frame->format);
+  const int size = av_image_get_buffer_size(format, frame->width, frame->height, 64);
+  if (size < 0) return size;
+  LargeArray<std::uint8_t>* pixels = nullptr;
+  try {
+    pixels = new LargeArray<std::uint8_t>(std::size_t(size) + AV_INPUT_BUFFER_PADDING_SIZE);  // room for SIMD reads
+  } catch (const std::bad_alloc&) {
+    return AVERROR(ENOMEM);
+  }
+  frame->buf[0] = av_buffer_create(
+      pixels->data(), size, [](void* p, std::uint8_t*) { delete static_cast<LargeArray<std::uint8_t>*>(p); }, pixels, 0);
+  if (!frame->buf[0]) {
+    delete pixels;
+    return AVERROR(ENOMEM);
+  }
+  const int filled = av_image_fill_arrays(frame->data, frame->linesize, frame->buf[0]->data, format, frame->width,
+                                          frame->height, 64);
+  return filled < 0 ? filled : 0;
+}
+
 
 /// How each codec is driven. Quality presets {draft, medium, high}:
 ///   h264    crf 28 / 23 / 18  (x264, 0..51, lower is better; 23 is x264's default)
@@ -383,7 +407,7 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
     frame->format = c->pix_fmt;
     frame->width = c->width;
     frame->height = c->height;
-    m.check(av_frame_get_buffer(frame, 0), "allocating a frame", false);
+    m.check(allocate_frame_pixels(frame), "allocating a frame", false);
     m.free_frames.push_back(frame);
   }
   if (is_gif)
