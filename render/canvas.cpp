@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <new>
 #include <string>
 
 #include "render/huge_pages.hpp"
@@ -37,15 +38,22 @@ Canvas::Canvas(cairo_surface_t* surface, int width, int height)
 Canvas Canvas::image(int width, int height) {
   check_size(width, height);
   // Pixels in huge pages (see huge_pages.hpp), owned by the surface.
+  using Pixels = HugePageArray<unsigned char>;
   const int stride = cairo_format_stride_for_width(CAIRO_FORMAT_ARGB32, width);
-  auto pixels = std::make_unique<LargeArray<unsigned char>>(std::size_t(stride) * height);
+  std::unique_ptr<Pixels> pixels;
+  try {
+    pixels = std::make_unique<Pixels>(std::size_t(stride) * height);
+  } catch (const std::bad_alloc&) {
+    throw OutputError("cannot create the drawing surface: out of memory for " + std::to_string(width) + "x" +
+                      std::to_string(height) + " pixels: choose a smaller --size");
+  }
   std::memset(pixels->data(), 0, pixels->size());  // transparent, as cairo_image_surface_create
   cairo_surface_t* surface =
       cairo_image_surface_create_for_data(pixels->data(), CAIRO_FORMAT_ARGB32, width, height, stride);
   static const cairo_user_data_key_t kPixels{};
   if (cairo_surface_status(surface) == CAIRO_STATUS_SUCCESS) {
     if (cairo_surface_set_user_data(surface, &kPixels, pixels.get(),
-                                    [](void* p) { delete static_cast<LargeArray<unsigned char>*>(p); }) !=
+                                    [](void* p) { delete static_cast<Pixels*>(p); }) !=
         CAIRO_STATUS_SUCCESS) {
       cairo_surface_destroy(surface);
       throw std::bad_alloc();

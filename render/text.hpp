@@ -19,9 +19,10 @@ struct TextStyle {
   Color halo_color = palette::paper;
 };
 
-/// Starts loading the font configuration in the background (Pango runs
-/// fontconfig's start-up on its own thread), so that it overlaps the work
-/// before the first label instead of delaying it.
+/// Starts loading the font configuration in the background (Pango 1.50 runs
+/// fontconfig's start-up on its own thread; older ones load it here), so that
+/// it overlaps the work before the first label instead of delaying it. Pango's
+/// default font map is per thread: call it on the thread that draws.
 void start_loading_fonts();
 
 /// Draws Pango markup at pixel point `at`.

@@ -27,26 +27,44 @@ namespace fs = std::filesystem;
 namespace vibra::render {
 
 namespace {
-/// As av_frame_get_buffer, with the pixels in huge pages (see huge_pages.hpp).
+/// Pixels for `frame` (format and size set) in huge pages (huge_pages.hpp).
+/// Unlike av_frame_get_buffer's, the planes follow each other without extra
+/// rows: encoders read width x height, and a guard page right after the
+/// buffer found no reads past it with libx264, libvpx (VP8, VP9), Theora,
+/// FLV1 or GIF. Lines start on 64 bytes, and 64 bytes of slack follow the
+/// last one for SIMD loads.
 int allocate_frame_pixels(AVFrame* frame) {
+  constexpr int kLineAlign = 64, kSlack = 64;
   const auto format = static_cast<AVPixelFormat>(frame->format);
-  const int size = av_image_get_buffer_size(format, frame->width, frame->height, 64);
+  const int size = av_image_get_buffer_size(format, frame->width, frame->height, kLineAlign);
   if (size < 0) return size;
-  LargeArray<std::uint8_t>* pixels = nullptr;
+  void* pixels = nullptr;
   try {
-    pixels = new LargeArray<std::uint8_t>(std::size_t(size) + AV_INPUT_BUFFER_PADDING_SIZE);  // room for SIMD reads
+    pixels = allocate_huge_page_memory(std::size_t(size) + kSlack);
   } catch (const std::bad_alloc&) {
     return AVERROR(ENOMEM);
   }
   frame->buf[0] = av_buffer_create(
-      pixels->data(), size, [](void* p, std::uint8_t*) { delete static_cast<LargeArray<std::uint8_t>*>(p); }, pixels, 0);
+      static_cast<std::uint8_t*>(pixels), size, [](void*, std::uint8_t* data) { free_huge_page_memory(data); },
+      nullptr, 0);
   if (!frame->buf[0]) {
-    delete pixels;
+    free_huge_page_memory(pixels);
     return AVERROR(ENOMEM);
   }
   const int filled = av_image_fill_arrays(frame->data, frame->linesize, frame->buf[0]->data, format, frame->width,
-                                          frame->height, 64);
+                                          frame->height, kLineAlign);
   return filled < 0 ? filled : 0;
+}
+
+/// New pixels for a frame an encoder still holds (GIF's keeps its last one):
+/// no copy of the old picture, which convert() overwrites whole.
+int renew_frame_pixels(AVFrame* frame) {
+  const int format = frame->format, width = frame->width, height = frame->height;
+  av_frame_unref(frame);
+  frame->format = format;
+  frame->width = width;
+  frame->height = height;
+  return allocate_frame_pixels(frame);
 }
 
 
@@ -177,9 +195,9 @@ struct VideoWriter::Impl {
   std::mutex mutex;
   std::condition_variable changed;
   /// Converted frames: the caller converts into a free one, the worker
-  /// encodes it and frees it again. The encoders used here copy their input,
-  /// so a frame is free once encode() returns, and frames are never allocated
-  /// after the start.
+  /// encodes it and frees it again. Most encoders copy their input, so a
+  /// frame is free once encode() returns; one an encoder still holds (GIF's
+  /// keeps its last frame) gets new pixels in convert().
   std::vector<AVFrame*> frames, free_frames;
   std::deque<AVFrame*> queue;  ///< waiting for the worker
   std::size_t capacity = 3;
@@ -227,7 +245,7 @@ void VideoWriter::Impl::check(int code, const std::string& what, bool output) co
 /// Runs on the caller's thread, beside the encoder's: conversion is the
 /// copy of the caller's pixels that is needed anyway.
 void VideoWriter::Impl::convert(const std::uint8_t* argb32, int stride, const Damage* changed, AVFrame* into) {
-  check(av_frame_make_writable(into), "preparing a frame", false);
+  if (!av_frame_is_writable(into)) check(renew_frame_pixels(into), "preparing a frame", false);
   if (palette) {
     for (int y = 0; y < height; ++y) {
       const auto* in = reinterpret_cast<const std::uint32_t*>(argb32 + std::ptrdiff_t(y) * stride);
@@ -373,6 +391,8 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
     // A --preset given by the user is x264's own preset, untouched.
     av_dict_set(&settings, "preset", o.preset.empty() ? "veryfast" : o.preset.c_str(), 0);
     if (o.preset.empty()) av_dict_set(&settings, "x264-params", "bframes=0:me=dia:subme=1:8x8dct=0", 0);
+    // A ceiling: x264 signals the lowest profile its tools need (Main for
+    // the default, High from superfast up, Constrained Baseline for ultrafast).
     av_dict_set(&settings, "profile", "high", 0);
     av_dict_set(&settings, "crf", crf.c_str(), 0);
   } else if (codec_name == "vp9") {

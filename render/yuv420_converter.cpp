@@ -37,10 +37,10 @@ Yuv420Converter::Yuv420Converter(int width, int height, int out_width, int out_h
     throw std::invalid_argument("Yuv420Converter: size out of range");
   if ((out_width != width && out_width != padded_width_) || (out_height != height && out_height != padded_height_))
     throw std::invalid_argument("Yuv420Converter: the output may only round the size up to even");
-  previous_ = LargeArray<std::uint32_t>(std::size_t(padded_width_) * padded_height_);
-  y_ = LargeArray<std::uint8_t>(std::size_t(padded_width_) * padded_height_);
-  u_ = LargeArray<std::uint8_t>(y_.size() / 4);
-  v_ = LargeArray<std::uint8_t>(y_.size() / 4);
+  previous_ = HugePageArray<std::uint32_t>(std::size_t(padded_width_) * padded_height_);
+  y_ = HugePageArray<std::uint8_t>(std::size_t(padded_width_) * padded_height_);
+  u_ = HugePageArray<std::uint8_t>(y_.size() / 4);
+  v_ = HugePageArray<std::uint8_t>(y_.size() / 4);
 }
 
 long long Yuv420Converter::blocks() const {

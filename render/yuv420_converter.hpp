@@ -2,9 +2,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/huge_pages.hpp"
-
 #include "render/damage.hpp"
+#include "render/huge_pages.hpp"
 
 namespace vibra::render {
 
@@ -52,8 +51,8 @@ class Yuv420Converter {
   int padded_width_, padded_height_;  ///< even
   bool first_ = true;
   long long converted_ = 0;
-  LargeArray<std::uint32_t> previous_;  ///< the last frame, padded to even size (written whole first)
-  LargeArray<std::uint8_t> y_, u_, v_;  ///< its conversion, padded_width_ (/2) wide
+  HugePageArray<std::uint32_t> previous_;  ///< the last frame, padded to even size (written whole first)
+  HugePageArray<std::uint8_t> y_, u_, v_;  ///< its conversion, padded_width_ (/2) wide
   std::vector<std::pair<int, int>> spans_;  ///< scratch: the changed columns of a row pair
 };
 

@@ -160,8 +160,8 @@ std::size_t index_of(const std::vector<std::string>& v, const std::string& s) {
 
 }  // namespace
 
-// The default codes in 4x4 transforms only, so x264 writes Main, the profile
-// every player decodes; a --preset of the user's is x264's own, 8x8 and High.
+// The default codes in 4x4 transforms only, so x264 writes Main; a --preset
+// of the user's is x264's own (medium: 8x8 transforms, High).
 TEST_CASE("MP4 is H.264 Main, BT.709 limited range, exactly 1/fps per frame, index first", "[video]") {
   ScratchDir dir;
   const fs::path file = dir.path / "pendulum.mp4";
