@@ -4,6 +4,7 @@
 #include <cairo-svg.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <new>
 #include <string>
@@ -15,6 +16,7 @@ namespace vibra::render {
 
 namespace {
 constexpr int kMaxSide = 8192;
+std::atomic<std::uint64_t> next_canvas_id{1};
 
 void check_size(int width, int height) {
   if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide)
@@ -24,8 +26,8 @@ void check_size(int width, int height) {
 }  // namespace
 
 Canvas::Canvas(cairo_surface_t* surface, int width, int height)
-    : surface_(surface, cairo_surface_destroy), width_(width), height_(height), drawn_(width, height),
-      drawn_last_frame_(width, height), restored_(width, height) {
+    : surface_(surface, cairo_surface_destroy), width_(width), height_(height), id_(next_canvas_id++),
+      drawn_(width, height), drawn_last_frame_(width, height), restored_(width, height) {
   if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS)
     throw OutputError(std::string("cannot create the drawing surface: ") +
                       cairo_status_to_string(cairo_surface_status(surface)));

@@ -40,6 +40,9 @@ class Canvas {
   int height() const { return height_; }
   double scale() const { return scale_for_height(height_); }
   cairo_surface_t* surface() const { return surface_.get(); }
+  /// Unique to this canvas and its copies, never reused (unlike the surface's
+  /// address, which a canvas created later may get).
+  std::uint64_t id() const { return id_; }
 
   /// Image canvases only: the pixels (BGRA in memory on little-endian) after flush().
   const std::uint8_t* data() const;
@@ -80,6 +83,7 @@ class Canvas {
   std::shared_ptr<cairo_surface_t> surface_;
   std::shared_ptr<cairo_t> cr_;
   int width_, height_;
+  std::uint64_t id_;
   bool tracking_ = false;
   Damage drawn_, drawn_last_frame_, restored_;
 };

@@ -47,8 +47,8 @@ class PngSequenceWriter {
   ~PngSequenceWriter();
 
   /// Packs one Cairo ARGB32 frame (width x height, rows `stride` bytes apart)
-  /// as PNG scanlines and queues it, waiting while the queue is full. Throws OutputError if a
-  /// worker has already failed.
+  /// as PNG scanlines and queues it, waiting while the queue is full. Throws
+  /// OutputError if a worker has already failed.
   void write(const std::uint8_t* bgra, int stride);
   /// Waits until every frame is on disk; throws OutputError for the first failure.
   void finish();

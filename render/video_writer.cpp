@@ -67,7 +67,6 @@ int renew_frame_pixels(AVFrame* frame) {
   return allocate_frame_pixels(frame);
 }
 
-
 /// How each codec is driven. Quality presets {draft, medium, high}:
 ///   h264    crf 28 / 23 / 18  (x264, 0..51, lower is better; 23 is x264's default)
 ///   vp9     crf 40 / 32 / 24  (0..63, constant quality: crf with b:v 0)
@@ -126,7 +125,7 @@ const Container* container_for(const fs::path& path) {
 const Container& find_container(const fs::path& path) {
   if (const Container* c = container_for(path)) return *c;
   throw OutputError("cannot tell the video format of '" + path.string() +
-                    "': name it .mp4 (H.264), .webm (VP9), .mkv (H.264), .ogv (Theora), .gif or .flv");
+                    "': name it .mp4 (H.264), .webm (VP9), .mkv (H.264), .ogv (Theora), .gif, .flv or .yuv (raw)");
 }
 
 std::string av_error(int code) {

@@ -27,8 +27,9 @@ struct VideoOptions {
 /// following FFmpeg's doc/examples/mux.c. write() converts each frame (to
 /// BT.709 limited-range YUV 4:2:0, or to a fixed palette for GIF) on the
 /// caller's thread, and a worker thread encodes behind a bounded queue, so
-/// drawing and converting the next frame overlap encoding this one. The file is written under a temporary name and renamed
-/// by finish(): a failed or abandoned writer leaves nothing at the final path.
+/// drawing and converting the next frame overlap encoding this one. The file
+/// is written under a temporary name and renamed by finish(): a failed or
+/// abandoned writer leaves nothing at the final path.
 class VideoWriter {
  public:
   /// Throws OutputError for an unknown extension or codec, a missing encoder,

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <optional>
 
@@ -37,13 +38,13 @@ class StaticLayer {
     cache_->flush();
 
     render::Damage region(canvas.width(), canvas.height());
-    if (fresh || !canvas.tracks_damage() || painted_on_ != canvas.surface()) {
+    if (fresh || !canvas.tracks_damage() || painted_on_ != canvas.id()) {
       region.add_all();
     } else {
       region.add(canvas.drawn_last_frame());
       region.add(cache_->drawn());
     }
-    painted_on_ = canvas.surface();
+    painted_on_ = canvas.id();
     if (region.empty()) return;
     cairo_t* cr = canvas.cr();
     cairo_save(cr);
@@ -62,7 +63,7 @@ class StaticLayer {
  private:
   std::function<void(render::Canvas&)> draw_;
   std::optional<render::Canvas> cache_;
-  cairo_surface_t* painted_on_ = nullptr;  ///< the canvas painted last: only it holds the layer already
+  std::uint64_t painted_on_ = 0;  ///< Canvas::id of the canvas painted last: only it holds the layer already
 };
 
 }  // namespace vibra::scenes

@@ -54,28 +54,40 @@ struct Run {
   double largest_covered = 0, mean_covered = 0;
 };
 
-/// Draws `frames` solver steps of a scene twice, by two scenes of the same
-/// config: on a canvas that tracks damage and on one that redraws in full.
-Run compare_redraws(const std::vector<std::pair<std::string, std::string>>& settings, int frames) {
+vibra::scenes::SceneConfig small_pendulum(const std::vector<std::pair<std::string, std::string>>& settings) {
   vibra::scenes::SceneConfig config = vibra::scenes::load_scene("pendulum");
   for (const auto& [key, value] : settings) vibra::scenes::apply_setting(config, {key, value, "test"});
   config.width = 480, config.height = 270;
-  const auto& model = vibra::find_model(config.model);
-  const vibra::Parameters parameters = vibra::scenes::model_parameters_of(config);
+  return config;
+}
 
-  auto pre_pass = model.build(parameters);
-  auto tracked_scene = vibra::scenes::make_scene(config, pre_pass->info(), "test");
-  auto full_scene = vibra::scenes::make_scene(config, pre_pass->info(), "test");
+/// Scenes of `config` that have seen the whole run (the render's pre-pass).
+std::vector<std::unique_ptr<vibra::scenes::Scene>> recorded_scenes(const vibra::scenes::SceneConfig& config,
+                                                                   int count) {
+  const auto& model = vibra::find_model(config.model);
+  auto pre_pass = model.build(vibra::scenes::model_parameters_of(config));
+  std::vector<std::unique_ptr<vibra::scenes::Scene>> scenes;
+  for (int i = 0; i < count; ++i) scenes.push_back(vibra::scenes::make_scene(config, pre_pass->info(), "test"));
   std::vector<double> row(pre_pass->width());
   do {
     pre_pass->row(row);
-    tracked_scene->record(row);
-    full_scene->record(row);
+    for (auto& scene : scenes) scene->record(row);
   } while (pre_pass->advance());
+  return scenes;
+}
+
+/// Draws `frames` solver steps of a scene twice, by two scenes of the same
+/// config: on a canvas that tracks damage and on one that redraws in full.
+Run compare_redraws(const std::vector<std::pair<std::string, std::string>>& settings, int frames) {
+  const vibra::scenes::SceneConfig config = small_pendulum(settings);
+  auto scenes = recorded_scenes(config, 2);
+  auto& tracked_scene = scenes[0];
+  auto& full_scene = scenes[1];
 
   Canvas tracked = Canvas::image(config.width, config.height), full = Canvas::image(config.width, config.height);
   tracked.track_damage();
-  auto trajectory = model.build(parameters);
+  auto trajectory = vibra::find_model(config.model).build(vibra::scenes::model_parameters_of(config));
+  std::vector<double> row(trajectory->width());
   std::vector<std::uint8_t> previous;
   Run run;
   for (int k = 0; k < frames; ++k) {
@@ -169,5 +181,26 @@ TEST_CASE("damage: redrawing only what changed gives the full redraw, pixel for 
   SECTION("other models' plots, with the exact solution") {
     compare_redraws({{"model", "undamped"}, {"layout", "plot"}}, 60);
     compare_redraws({{"model", "elastic-pendulum"}, {"layout", "plot"}}, 60);
+  }
+}
+
+TEST_CASE("damage: a scene moved to a new canvas paints its whole background there", "[damage]") {
+  const vibra::scenes::SceneConfig config = small_pendulum({{"layout", "fbd"}});
+  auto scenes = recorded_scenes(config, 2);
+  auto trajectory = vibra::find_model(config.model).build(vibra::scenes::model_parameters_of(config));
+  std::vector<double> row(trajectory->width());
+  trajectory->row(row);
+  for (int canvas_number = 0; canvas_number < 3; ++canvas_number) {
+    // Each canvas dies before the next is made, which may get the same address.
+    Canvas tracked = Canvas::image(config.width, config.height);
+    tracked.track_damage();
+    tracked.begin_frame();
+    scenes[0]->draw(tracked, row);
+    tracked.flush();
+    Canvas full = Canvas::image(config.width, config.height);
+    scenes[1]->draw(full, row);
+    full.flush();
+    INFO("canvas " << canvas_number);
+    CHECK(pixels(tracked) == pixels(full));
   }
 }
