@@ -68,7 +68,7 @@ TEST_CASE("analyze refuses bad input with one line, exit code 2 and no file", "[
   const std::pair<const char*, const char*> cases[] = {
       {"analyze", "needs an experiment"},
       {"analyze energi", "did you mean 'energy'"},
-      {"analyze convergence vibration -o OUT.png", "no exact solution"},
+      {"analyze convergence vibration --set 'F=cos(t)' -o OUT.png", "no exact solution"},
       {"analyze convergence", "needs a MODEL"},
       {"analyze convergence undamped --levels 1", "--levels"},
       {"analyze convergence undamped --set scheme=rk5", "not a valid scheme"},

@@ -15,6 +15,7 @@ void add_analyze_command(CLI::App& app) {
   add_frequency_analysis(*cmd);
   add_amplitude_analysis(*cmd);
   add_orbit_analysis(*cmd);
+  add_resonance_analysis(*cmd);
   // Our own check instead of require_subcommand, so a misspelt experiment is named and corrected.
   auto unknown = std::make_shared<std::string>();
   cmd->add_option("EXPERIMENT", *unknown, "convergence, energy, empirical, frequency, amplitude or orbit");

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/hermite.hpp"
 #include "core/solution_stream.hpp"
 #include "core/time_mesh.hpp"
 
@@ -76,14 +77,9 @@ class SecondOrderTrajectory final : public Trajectory {
   Sample<D> interpolate(double t) const {
     const Sample<D>& a = previous_;
     const Sample<D>& b = stream_.current();
-    const double h = b.t - a.t;
-    if (h <= 0 || t >= b.t) return b;
+    if (b.t - a.t <= 0 || t >= b.t) return b;
     if (t <= a.t) return a;
-    const double s = (t - a.t) / h, s2 = s * s, s3 = s2 * s;
-    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
-    const Vec<D> acc_a = system_->acceleration(a.u, a.v, a.t), acc_b = system_->acceleration(b.u, b.v, b.t);
-    return {t, h00 * a.u + h10 * h * a.v + h01 * b.u + h11 * h * b.v,
-            h00 * a.v + h10 * h * acc_a + h01 * b.v + h11 * h * acc_b};
+    return hermite_between<D>(a, system_->acceleration(a.u, a.v, a.t), b, system_->acceleration(b.u, b.v, b.t), t);
   }
 
   std::shared_ptr<const SecondOrderSystem<D>> system_;
