@@ -35,7 +35,7 @@ struct SceneStyle {
   std::string caption;       ///< a line of parameters at the bottom (Pango markup)
 };
 
-/// The pendulum's free-body diagram (SPEC 8.1), alone or beside stacked
+/// The pendulum's free-body diagram (docs/drawing.md), alone or beside stacked
 /// panels of theta, S and D against time with a cursor at the current time.
 /// Rows are the pendulum model's: t, theta, omega, S, D. The diagram's view is
 /// fixed over the run (from the pre-pass), so nothing jumps and nothing is
