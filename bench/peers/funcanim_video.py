@@ -11,7 +11,6 @@ webm: FFMpegWriter(fps=25, codec="libvpx-vp9", extra_args=["-pix_fmt", "yuv420p"
       libvpx-vp9's defaults otherwise.
 Writes NAME.mp4 or NAME.webm; prints the save's frames/s on stderr.
 """
-import argparse
 import os
 import sys
 import time
@@ -21,21 +20,13 @@ import pendulum_scene as scene  # noqa: E402
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--frames", type=int, default=300)
-    parser.add_argument("--size", choices=scene.SIZES, default="720p")
+    parser = scene.diagram_arguments("movie")
     parser.add_argument("--codec", choices=["mp4", "webm"], default="mp4")
-    parser.add_argument("--mode", choices=["reuse", "redraw"], default="reuse")
-    parser.add_argument("--out", default="movie")
     args = parser.parse_args()
-    width, height = scene.SIZES[args.size]
-    theta, S, D = scene.frames(args.frames)
-    fig, ax = scene.figure(width, height)
-    diagram = scene.Diagram(ax, width, height)
-    draw = diagram.update if args.mode == "reuse" else diagram.redraw
+    fig, draw = scene.diagram_run(args)
     from matplotlib.animation import FFMpegWriter, FuncAnimation
 
-    animation = FuncAnimation(fig, lambda i: draw(theta[i], S[i], D[i]), frames=args.frames,
+    animation = FuncAnimation(fig, draw, frames=args.frames,
                               init_func=lambda: [], blit=False, repeat=False, cache_frame_data=False)
     if args.codec == "mp4":
         writer, name = FFMpegWriter(fps=25), args.out + ".mp4"

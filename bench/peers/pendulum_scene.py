@@ -14,6 +14,7 @@ pivot, the wire, a filled bob, the angle arc with its label, and the forces
 mg, S and D as arrows from the bob (forces in units of m g), each labelled.
 Coordinates are in units of the canvas height.
 """
+import argparse
 import math
 
 import numpy as np
@@ -140,3 +141,23 @@ class Diagram:
             offset = force / length * 0.03 if length > 1e-12 else np.array([0.03, 0.0])
             label.set_position(bob + force + offset)
         return [self.wire, self.arc, self.theta_label, self.bob, *self.arrows, *self.labels]
+
+
+def diagram_arguments(default_out):
+    """The options the diagram peers share: --frames, --size, --mode, --out."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--frames", type=int, default=300)
+    parser.add_argument("--size", choices=SIZES, default="720p")
+    parser.add_argument("--mode", choices=["reuse", "redraw"], default="reuse")
+    parser.add_argument("--out", default=default_out)
+    return parser
+
+
+def diagram_run(args):
+    """The figure and `draw(i)`, which puts frame i on it, for parsed diagram_arguments."""
+    width, height = SIZES[args.size]
+    theta, S, D = frames(args.frames)
+    fig, ax = figure(width, height)
+    diagram = Diagram(ax, width, height)
+    draw = diagram.update if args.mode == "reuse" else diagram.redraw
+    return fig, lambda i: draw(theta[i], S[i], D[i])

@@ -7,7 +7,6 @@ tmp_0000.png, tmp_0001.png, ... in --out, the book's way of making frames.
 --mode reuse (default) moves artists made once; --mode redraw clears and
 redraws the axes every frame. Prints the loop's frames/s on stderr.
 """
-import argparse
 import os
 import sys
 import time
@@ -17,21 +16,12 @@ import pendulum_scene as scene  # noqa: E402
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--frames", type=int, default=300)
-    parser.add_argument("--size", choices=scene.SIZES, default="720p")
-    parser.add_argument("--mode", choices=["reuse", "redraw"], default="reuse")
-    parser.add_argument("--out", default="frames")
-    args = parser.parse_args()
-    width, height = scene.SIZES[args.size]
-    theta, S, D = scene.frames(args.frames)
-    fig, ax = scene.figure(width, height)
-    diagram = scene.Diagram(ax, width, height)
-    draw = diagram.update if args.mode == "reuse" else diagram.redraw
+    args = scene.diagram_arguments("frames").parse_args()
+    fig, draw = scene.diagram_run(args)
     os.makedirs(args.out, exist_ok=True)
     start = time.perf_counter()
     for i in range(args.frames):
-        draw(theta[i], S[i], D[i])
+        draw(i)
         fig.savefig(os.path.join(args.out, "tmp_%04d.png" % i), dpi=100)
     took = time.perf_counter() - start
     print("png_frames: %d frames in %.3f s, %.1f frames/s" % (args.frames, took, args.frames / took), file=sys.stderr)
