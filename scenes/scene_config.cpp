@@ -94,7 +94,7 @@ const std::vector<KeySpec>& scene_keys() {
       {"frame_per_step", ValueKind::choice, "false", "", "one frame per solver step", {"true", "false"}, {}},
       {"layout", ValueKind::choice, "fbd+plot", "", "fbd, fbd+plot, or plot (any model)", {"fbd", "fbd+plot", "plot"}, {}},
       {"window", ValueKind::number, "", "time", "plot window: a time, or N periods as 8periods; none = whole run", {}, {}},
-      {"window_mode", ValueKind::choice, "movement", "", "drawing, movement or jumps (SPEC 8.2)", {"drawing", "movement", "jumps"}, {}},
+      {"window_mode", ValueKind::choice, "movement", "", "drawing, movement or jumps (the moving plot window)", {"drawing", "movement", "jumps"}, {}},
       {"drag_magnification", ValueKind::number, "5", "", "drag arrow drawn this many times longer", {}, {}},
       {"colors.background", ValueKind::number, "#ffffff", "", "colour #rrggbb", {}, {}},
       {"colors.bob", ValueKind::number, "#0073b3", "", "colour #rrggbb", {}, {}},
