@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/models/model.hpp"
+#include "core/quadrature.hpp"
 
 namespace vibra {
 
@@ -38,6 +39,13 @@ ModelDefinition vibration_model() {
         [s, F, mass](const Vec<1>& u, double t) -> Vec<1> { return Vec<1>((F(t) - s(u[0])) / mass); }));
     const std::string law = p.choice("damping");
     system->damping = b == 0 || law == "none" ? Damping::none : law == "linear" ? Damping::linear : Damping::quadratic;
+    info.damped = system->damping != Damping::none;
+    // 0.5 m v^2 + P(u), P(u) = integral_0^u s: the potential of any formula s,
+    // by quadrature (exact in one pass for a polynomial s such as k u).
+    info.energy = [s, mass](std::span<const double> row) {
+      return EnergyParts{0.5 * mass * row[2] * row[2], integrate([&s](double x) { return s(x); }, 0, row[1])};
+    };
+    info.energy_unit = "mass length^2/time^2";
     system->damping_per_mass = b / mass;
     return std::make_unique<SecondOrderTrajectory<1>>(
         system, Vec<1>(I), Vec<1>(V), info, [](const Sample<1>& x, std::span<double> out) {
