@@ -44,8 +44,8 @@ render::Figure amplitude_figure(const std::vector<LabelledCycles>&, double I, co
 
 /// Maximum error against steps per orbit; with long runs, the error per block
 /// of orbits against the orbits done, with each run's fitted power law.
-/// Each measured period against i, with the exact period (dashed) where known
-/// and the small-oscillation period (dotted) as lines.
+/// Each measured period against i, with the exact period (dashed vermillion)
+/// where known and the small-oscillation period (dashed grey) as lines.
 render::Figure period_figure(const std::vector<MeasuredPeriod>&, double exact_period, double small_oscillation_period,
                              const std::string& title, int width, int height);
 

@@ -30,6 +30,15 @@ struct Feed {
   int x_column, y_column;
 };
 
+/// A key as the reader knows it: Δt for dt.
+std::string key_markup(const std::string& key) { return key == "dt" ? "Δ<i>t</i>" : markup_escaped(key); }
+
+/// A member's legend entry: the scheme's name, or "Δt = 0.05".
+std::string member_markup(const Comparison& c, size_t m) {
+  const std::string& key = c.request().key;
+  return key == "scheme" ? c.value(m) : key_markup(key) + " = " + markup_escaped(c.value(m));
+}
+
 std::string blow_up_note(double t) {
   char text[64];
   std::snprintf(text, sizeof text, ": blew up at <i>t</i> = %.3g", t);
@@ -90,8 +99,8 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
     const bool legend = p == 0;  // the colours are the same in every panel
     for (size_t m = 0; m < comparison.size(); ++m) {
       const render::SeriesStyle style{render::palette::series(m), 2.2};
-      render::Series& s = time_panel ? figure.add_curve(p, legend ? comparison.label(m) : "", style, 0, T)
-                                     : figure.add_path(p, legend ? comparison.label(m) : "", style);
+      render::Series& s = time_panel ? figure.add_curve(p, legend ? member_markup(comparison, m) : "", style, 0, T)
+                                     : figure.add_path(p, legend ? member_markup(comparison, m) : "", style);
       feeds.push_back({m, p, &s, x, y});
       if (legend) labelled[m].push_back(&s);
     }
@@ -151,7 +160,7 @@ std::string comparison_caption(const std::string& model, const Comparison& compa
     const std::string k = a.substr(0, a.find('='));
     if (k != key && !is_time_key(k)) caption += " · " + markup_escaped(a);
   }
-  return caption + " · comparing " + markup_escaped(key);
+  return caption + " · comparing " + key_markup(key);
 }
 
 }  // namespace vibra::scenes

@@ -55,8 +55,10 @@ TEST_CASE("Forward Euler multiplies the undamped energy by exactly 1 + w^2 dt^2 
 }
 
 TEST_CASE("the elastic pendulum keeps its energy to the scheme's order without drag", "[model-energy]") {
-  // Halving dt divides the energy error by 2^p.
-  for (auto [scheme, order] : {std::pair{"rk4", 4}, std::pair{"velocity-verlet", 2}, std::pair{"pefrl", 4}}) {
+  // Halving dt divides the energy error by 2^p. RK4's falls by 2^5: near a
+  // harmonic motion its amplitude factor is 1 - (w dt)^6/144 per step, so its
+  // energy drifts by O(dt^5) over a fixed time, one order better than its phase.
+  for (auto [scheme, order] : {std::pair{"rk4", 5}, std::pair{"velocity-verlet", 2}, std::pair{"pefrl", 4}}) {
     double previous = 0;
     for (int n : {40, 80, 160}) {
       auto t = test::trajectory("elastic-pendulum", {std::string("scheme=") + scheme, "steps_per_period=" + std::to_string(n),
@@ -126,17 +128,24 @@ TEST_CASE("the potential of a formula s is its integral from 0", "[model-energy]
 }
 
 TEST_CASE("with an external force the energy changes by the force's work", "[model-energy]") {
-  // m u'' + k u = F0: dE/dt = F0 u', so E(t) - E(0) = F0 (u(t) - u(0)).
-  auto t = test::trajectory("vibration", {"F=0.5", "s=3*u", "I=1", "V=0", "scheme=rk4", "steps_per_period=200"});
-  const double E0 = energy(*t);
-  std::vector<double> row(t->width());
-  double worst = 0;
-  while (t->advance()) {
-    t->row(row);
-    worst = std::max(worst, std::abs(energy(*t) - E0 - 0.5 * (row[1] - 1)));
-  }
-  CHECK(worst < 1e-9);
-  CHECK(t->info().damped == false);
+  // m u'' + k u = F0: dE/dt = F0 u', so E(t) - E(0) = F0 (u(t) - u(0)), up to
+  // the scheme's error, which falls at RK4's order.
+  auto mismatch = [](int steps_per_period) {
+    auto t = test::trajectory("vibration", {"F=0.5", "s=3*u", "I=1", "V=0", "scheme=rk4",
+                                            "steps_per_period=" + std::to_string(steps_per_period)});
+    const double E0 = energy(*t);
+    std::vector<double> row(t->width());
+    double worst = 0;
+    while (t->advance()) {
+      t->row(row);
+      worst = std::max(worst, std::abs(energy(*t) - E0 - 0.5 * (row[1] - 1)));
+    }
+    return worst;
+  };
+  const double coarse = mismatch(100), fine = mismatch(200);
+  CHECK(coarse < 1e-6);  // against a work of up to 0.8
+  CHECK(std::log2(coarse / fine) > 3.7);
+  CHECK(test::trajectory("vibration", {"F=0.5"})->info().damped == false);
   CHECK(test::trajectory("vibration", {"b=0.1"})->info().damped);
 }
 

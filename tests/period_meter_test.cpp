@@ -41,11 +41,12 @@ TEST_CASE("undamped periods equal 2 pi / w", "[period]") {
   auto t = test::trajectory("undamped", {"scheme=rk4", "w=3", "steps_per_period=200", "periods=6", "I=0.3", "V=2"});
   CHECK(t->info().exact_period == Approx(2 * M_PI / 3).epsilon(1e-15));
   const auto periods = measure_periods(*t);
+  // Upward crossings at 0.93, 1.93, ... 5.93 periods: five periods, the last
+  // without a following maximum (it would come at 6.18).
   REQUIRE(periods.size() == 5);
-  for (const auto& p : periods) {
-    CHECK(p.period == Approx(2 * M_PI / 3).epsilon(1e-9));
-    CHECK(std::abs(p.log_decrement) < 1e-8);  // no damping: maxima all equal
-  }
+  for (const auto& p : periods) CHECK(p.period == Approx(2 * M_PI / 3).epsilon(1e-7));  // RK4's phase error ~1e-8
+  for (size_t i = 0; i < 4; ++i) CHECK(std::abs(periods[i].log_decrement) < 1e-8);  // no damping: equal maxima
+  CHECK(std::isnan(periods[4].log_decrement));
 }
 
 TEST_CASE("measured pendulum periods converge to 4 K(sin(Theta/2)) at the scheme's order", "[period]") {
