@@ -9,19 +9,7 @@
 using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;
 
-namespace {
-std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    rows.emplace_back();
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) rows.back().push_back(cell);
-    if (!line.empty() && line.back() == ',') rows.back().push_back("");
-  }
-  return rows;
-}
-}  // namespace
+using vibra::test::csv_rows;
 
 TEST_CASE("analyze convergence prints i,dt,E,r with rates near the scheme's order", "[analysis]") {
   const auto r = run_vibra("analyze convergence undamped --set scheme=crank-nicolson --set T=2 --levels 4 --csv");

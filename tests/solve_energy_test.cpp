@@ -2,7 +2,6 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <sstream>
 
 #include "cli_support.hpp"
 
@@ -15,16 +14,11 @@ struct Csv {
 };
 
 Csv read_csv(const std::string& text) {
-  Csv csv;
-  std::istringstream in(text);
-  std::string line;
-  std::getline(in, line);
-  std::istringstream names(line);
-  for (std::string name; std::getline(names, name, ',');) csv.header.push_back(name);
-  while (std::getline(in, line)) {
+  const auto cells = vibra::test::csv_rows(text);
+  Csv csv{cells.at(0), {}};
+  for (size_t i = 1; i < cells.size(); ++i) {
     csv.rows.emplace_back();
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) csv.rows.back().push_back(cell.empty() ? NAN : std::stod(cell));
+    for (const auto& cell : cells[i]) csv.rows.back().push_back(cell.empty() ? NAN : std::stod(cell));
   }
   return csv;
 }
