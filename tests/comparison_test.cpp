@@ -26,7 +26,7 @@ void check_error(const std::function<void()>& action, const std::string& expecte
 }
 }  // namespace
 
-TEST_CASE("--compare KEY=V1,V2 parses to a key and its values", "[comparison]") {
+TEST_CASE("a comparison KEY=V1,V2 parses to a key and its values", "[comparison]") {
   const ComparisonRequest r = parse_comparison(" dt = 0.1, 2*pi/40 ,0.05");
   CHECK(r.key == "dt");
   CHECK(r.values == std::vector<std::string>{"0.1", "2*pi/40", "0.05"});

@@ -78,6 +78,16 @@ TEST_CASE("the logarithmic decrement of linear damping is zeta w P_d", "[period]
   }
 }
 
+TEST_CASE("an eccentric orbit's x repeats with Kepler's period 2 pi a^(3/2)", "[period]") {
+  // x0 = 1, v0 = 1.2: E = 0.72 - 1 = -0.28, a = -1/(2E) = 1.7857.
+  auto t = test::trajectory("two-body", {"vy0=1.2", "scheme=pefrl", "steps_per_period=2000", "periods=4"});
+  const double kepler = 2 * M_PI * std::pow(1 / 0.56, 1.5);
+  CHECK(t->info().exact_period == Approx(kepler).epsilon(1e-14));
+  const auto periods = measure_periods(*t);
+  REQUIRE(periods.size() == 3);
+  for (const auto& p : periods) CHECK(p.period == Approx(kepler).epsilon(1e-6));
+}
+
 TEST_CASE("a run without a full period measures nothing", "[period]") {
   auto t = test::trajectory("undamped", {"periods=0.9"});
   CHECK(measure_periods(*t).empty());

@@ -42,8 +42,8 @@ constexpr const char* kExamples =
     "  vibra plot pendulum -o pendulum.png                       # theta, S and D against t\n"
     "  vibra plot undamped --panels u,exact --set periods=4 -o u.svg\n"
     "  vibra plot elastic-pendulum --set Theta=40 --set eps=0.1 -o path.pdf\n"
-    "  vibra plot undamped --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 --set steps_per_period=20 \\\n"
-    "      --set periods=3 -o schemes.png\n";
+    "  vibra plot undamped --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 --set steps_per_period=40 \\\n"
+    "      --set periods=4 -o schemes.png\n";
 
 int figure_height(size_t panels) { return panels > 2 ? 960 : 720; }
 
