@@ -155,3 +155,13 @@ TEST_CASE("a circular orbit has energy -1/2", "[model-energy]") {
   CHECK(max_energy_drift(*t) < 1e-6);
   CHECK(relative_energy_change(-0.4, -0.5) == Approx(0.2));  // gaining energy is positive for E < 0 too
 }
+
+TEST_CASE("an unforced vibration's energy bounds its amplitude", "[model-energy]") {
+  // P(u_max) = E(0): for s = k u, u_max = sqrt(I^2 + m V^2 / k).
+  CHECK(test::trajectory("vibration", {"s=4*u", "m=2", "I=1", "V=3"})->info().amplitude_bound ==
+        Approx(std::sqrt(1 + 2 * 9 / 4.0)).epsilon(1e-12));
+  CHECK(test::trajectory("vibration", {"s=sin(u)", "I=-1", "b=0.3"})->info().amplitude_bound == Approx(1).epsilon(1e-12));
+  // No bound from a force that does not restore, or with forcing.
+  CHECK(test::trajectory("vibration", {"s=-u", "V=2", "dt=0.1", "T=1"})->info().amplitude_bound == 0);
+  CHECK(test::trajectory("vibration", {"F=cos(t)"})->info().amplitude_bound == 0);
+}
