@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/hermite.hpp"
+#include "core/energy_parts.hpp"
 #include "core/solution_stream.hpp"
 #include "core/time_mesh.hpp"
 
@@ -20,7 +21,22 @@ struct TrajectoryInfo {
   /// Exact solution of the main quantity where known (empty otherwise).
   std::function<double(double t)> exact;
   std::string exact_label;  ///< e.g. "exact" or "small-angle"
+  /// The true period of the main quantity where known (the pendulum's
+  /// 4 K(sin(Theta/2)), not its small-angle 2 pi), 0 otherwise. The
+  /// small-oscillation period is mesh.period.
+  double exact_period = 0;
+  /// True when drag, friction or a dashpot takes energy out of the system.
+  bool damped = false;
+  /// Kinetic and potential energy from a row, with the scheme's own velocity
+  /// (empty for a model without a mechanical energy). With an external force
+  /// the energy is not conserved: E - E(0) then includes the force's work.
+  EnergyFunction energy;
+  std::string energy_unit;  ///< what the energy is measured in, e.g. "m g L"
 };
+
+/// The column holding the main quantity's velocity: v<name> where the model
+/// has it (vx for x), else the column after the main quantity (v for u, omega for theta).
+int velocity_column(const TrajectoryInfo&);
 
 /// A model's solution as a stream of table rows, with the scheme and the
 /// dimension erased: the CSV writer, frame sampler and ASCII plotter read it.

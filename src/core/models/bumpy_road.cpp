@@ -62,6 +62,12 @@ ModelDefinition bumpy_road_model() {
     if (road->length() < distance * (1 - 1e-12))
       throw UsageError("the road is " + std::to_string(road->length()) + " m long but the run needs speed*T = " +
                        std::to_string(distance) + " m: shorten T or give a longer road");
+    info.damped = b > 0;
+    // The body's energy relative to the wheel: the road's push does work on it.
+    info.energy = [mass, k](std::span<const double> row) {
+      return EnergyParts{0.5 * mass * row[2] * row[2], 0.5 * k * row[1] * row[1]};
+    };
+    info.energy_unit = "J";
     auto system = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::general(
         [road, k, mass, speed](const Vec<1>& u, double t) {
           return Vec<1>(-k / mass * u[0] - road->curvature(speed * t) * speed * speed);

@@ -56,6 +56,11 @@ ModelDefinition resonance_model() {
     info.mesh = resolve_time_mesh(p, 2 * M_PI, std::max(1.0, gamma));
     reject_adjusted_scheme(info.mesh, name);
     if ((info.exact = exact_response(beta, gamma, I, V))) info.exact_label = "exact";
+    info.damped = beta > 0;
+    // Energy per unit mass in units of k times the static deflection squared;
+    // the forcing's work makes it change even without damping.
+    info.energy = [](std::span<const double> row) { return EnergyParts{0.5 * row[2] * row[2], 0.5 * row[1] * row[1]}; };
+    info.energy_unit = "k (static deflection)^2";
     auto system = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::general(
         [gamma](const Vec<1>& u, double t) { return Vec<1>(std::sin(gamma * t) - u[0]); }));
     system->damping = beta > 0 ? Damping::linear : Damping::none;

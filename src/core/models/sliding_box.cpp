@@ -53,6 +53,11 @@ ModelDefinition sliding_box_model() {
     reject_adjusted_scheme(info.mesh, name);
     info.amplitude_bound = std::sqrt(2 * law->potential(I) + V * V);
     if (law->alpha == 0 && V == 0) info.exact = released_from_rest(I, law->mu), info.exact_label = "exact";
+    info.damped = law->mu > 0;
+    info.energy = [law](std::span<const double> row) {
+      return EnergyParts{0.5 * row[2] * row[2], law->potential(row[1])};
+    };
+    info.energy_unit = "k I^2";
 
     // The friction of the current half swing: -mu times its direction.
     auto direction = std::make_shared<double>(0);

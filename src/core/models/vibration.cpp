@@ -1,12 +1,36 @@
+#include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "core/error.hpp"
 #include "core/models/model.hpp"
 #include "core/models/vibration_law.hpp"
+#include "core/quadrature.hpp"
 
 namespace vibra {
 
 namespace {
+/// How far u can go from u0 with energy E0 = potential(u0) + kinetic: the
+/// largest |u| at which `potential` first reaches E0, searched outward from
+/// u0 on both sides (doubling the step, then bisecting). 0 when it does not
+/// reach E0 within 1e6 steps' worth (a force that does not restore).
+double reach(const std::function<double(double)>& potential, double u0, double E0, double step) {
+  double largest = 0;
+  for (double side : {1.0, -1.0}) {
+    double below = 0, above = step;
+    while (potential(u0 + side * above) < E0) {
+      below = above, above *= 2;
+      if (above > 1e6 * step) return 0;
+    }
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (below + above);
+      (potential(u0 + side * mid) < E0 ? below : above) = mid;
+    }
+    largest = std::max(largest, std::abs(u0 + side * above));
+  }
+  return largest;
+}
+
 /// The exact solution of the linear spring without forcing (docs/models.md):
 /// undamped, or underdamped linear damping, zeta = b / (2 sqrt(k m)) < 1.
 std::function<double(double)> free_linear_solution(const VibrationLaw& law, double I, double V) {
@@ -63,6 +87,22 @@ ModelDefinition vibration_model() {
     }
     system->damping = law.damping;
     system->damping_per_mass = law.b / law.mass;
+    info.damped = law.damping != Damping::none;
+    // 0.5 m v^2 + P(u), P(u) = integral_0^u s: exact for the linear spring,
+    // by quadrature for any formula s (exact in one pass for a polynomial).
+    const auto potential = [law](double u) {
+      return law.linear_spring() ? 0.5 * law.k * u * u : integrate([&law](double x) { return law.spring(x); }, 0, u);
+    };
+    info.energy = [potential, mass = law.mass](std::span<const double> row) {
+      return EnergyParts{0.5 * mass * row[2] * row[2], potential(row[1])};
+    };
+    info.energy_unit = "mass length^2/time^2";
+    // Without forcing the energy never grows, so it bounds the amplitude.
+    if (!law.F) {
+      const double E0 = 0.5 * law.mass * V * V + potential(I);
+      const double step = std::max({std::abs(I), w > 0 ? std::abs(V) / w : std::abs(V), 1e-3}) / 8;
+      if (E0 > 0) info.amplitude_bound = reach(potential, I, E0, step);
+    }
     return std::make_unique<SecondOrderTrajectory<1>>(
         system, Vec<1>(I), Vec<1>(V), info, [](const Sample<1>& x, std::span<double> out) {
           out[0] = x.t, out[1] = x.u[0], out[2] = x.v[0];
