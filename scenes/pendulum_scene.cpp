@@ -106,12 +106,21 @@ void PendulumScene::draw_static(Canvas& canvas) {
 
 void PendulumScene::draw(Canvas& canvas, std::span<const double> row) {
   prepare();
-  background_.paint(canvas, [&](Canvas& layer, bool from_start) {
-    for (auto& panel : panels_) panel.draw_progress(layer, row[0], from_start);
-  });
+  background_.paint(canvas, progress_to(row[0]));
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw(canvas, row[0], row, i + 1 == panels_.size());
   draw_diagram(canvas, state_of(row));
   draw_readout(canvas, diagram_area_, row[0], style_);
+}
+
+void PendulumScene::skip(const Canvas& canvas, std::span<const double> row) {
+  prepare();
+  background_.skip(canvas, progress_to(row[0]));
+}
+
+StaticLayer::Grow PendulumScene::progress_to(double t) {
+  return [this, t](Canvas& layer, bool from_start) {
+    for (auto& panel : panels_) panel.draw_progress(layer, t, from_start);
+  };
 }
 
 void PendulumScene::draw_diagram(Canvas& canvas, const PendulumState& state) {

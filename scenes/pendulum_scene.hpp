@@ -47,6 +47,7 @@ class PendulumScene final : public Scene {
   void record(std::span<const double> row) override;
   void observe(std::span<const double> row) override;
   void draw(render::Canvas&, std::span<const double> row) override;
+  void skip(const render::Canvas&, std::span<const double> row) override;
 
   /// The diagram's world box over the run (after record()).
   const Eigen::AlignedBox2d& world_box() const { return world_; }
@@ -55,6 +56,8 @@ class PendulumScene final : public Scene {
   void prepare();
   void draw_static(render::Canvas&);
   void draw_diagram(render::Canvas&, const PendulumState&);
+  /// The curves drawn so far, for the layer under frame time t.
+  StaticLayer::Grow progress_to(double t);
 
   int height_;
   SceneStyle style_;
