@@ -175,7 +175,7 @@ TEST_CASE("concat names the part that is wrong and writes nothing", "[render][se
   CHECK(left.empty());  // no temporaries
 }
 
-TEST_CASE("--skip-existing: a complete segment costs nothing, another segment's file is rendered again", "[render][segment]") {
+TEST_CASE("skip-existing: a complete segment costs nothing, another segment's file is rendered again", "[render][segment]") {
   ScratchDirectory dir;
   const std::string args = "render --size 320x180 --fps 10 --set periods=1 --skip-existing --segment 1/3 -o " + (dir / "a.mp4");
   REQUIRE(run_vibra(args).exit_code == 0);
@@ -215,7 +215,7 @@ struct Environment {
   }
 };
 
-TEST_CASE("--segment auto takes K and N from a Slurm array or an indexed job", "[render][segment]") {
+TEST_CASE("segment auto takes K and N from a Slurm array or an indexed job", "[render][segment]") {
   ScratchDirectory dir;
   {
     // --array=3-7:2 is tasks 3, 5, 7: task 5 is segment 1 of 3.
