@@ -36,19 +36,25 @@ best() {
   echo "$fastest"
 }
 
-segments_then_concat() {  # N
-  parallel -j "$CORES" --halt now,fail=1 "$VIBRA" render "${SCENE[@]}" --segment {}/"$1" -o "$WORK/parts/v.mp4" \
-    ::: $(seq 0 $(($1 - 1)))
-  "$VIBRA" concat -q "$WORK"/parts/v.seg-*-of-"$1".mp4 -o "$WORK/joined.mp4"
+segments_then_concat() {  # N [render options]
+  local n=$1; shift
+  parallel -j "$CORES" --halt now,fail=1 "$VIBRA" render "${SCENE[@]}" "$@" --segment {}/"$n" -o "$WORK/parts/v.mp4" \
+    ::: $(seq 0 $((n - 1)))
+  "$VIBRA" concat -q "$WORK"/parts/v.seg-*-of-"$n".mp4 -o "$WORK/joined.mp4"
 }
 
 echo "== $FRAMES frames at $SIZE, H.264 MP4 (default quality), $CORES cores"
 one=$(best "$VIBRA" render "${SCENE[@]}" -o "$WORK/one.mp4")
 printf "%-46s %8.2f s %8.1f frames/s\n" "one process" "$one" "$(echo "$FRAMES / $one" | bc -l)"
-for n in 2 4; do
-  t=$(best segments_then_concat "$n")
-  printf "%-46s %8.2f s %8.1f frames/s  (%.2fx one process)\n" "$n segments by parallel -j$CORES, then concat" "$t" \
-    "$(echo "$FRAMES / $t" | bc -l)" "$(echo "$one / $t" | bc -l)"
+# vibra already spreads drawing, conversion and encoding over threads; with
+# --threads 1 each segment process is single-threaded and parallel fills the cores.
+for threads in "" 1; do
+  for n in 2 4; do
+    t=$(best segments_then_concat "$n" ${threads:+--threads $threads})
+    printf "%-46s %8.2f s %8.1f frames/s  (%.2fx one process)\n" \
+      "$n segments${threads:+ (--threads $threads)} by parallel, then concat" "$t" \
+      "$(echo "$FRAMES / $t" | bc -l)" "$(echo "$one / $t" | bc -l)"
+  done
 done
 
 # The join alone: parts made once, concat timed REPEAT times.
@@ -62,5 +68,15 @@ for ((i = 0; i < REPEAT; ++i)); do
   took=$(echo "$(date +%s.%N) - $start" | bc -l)
   if [ -z "$fastest" ] || (( $(echo "$took < $fastest" | bc -l) )); then fastest=$took; fi
 done
+# What any vibra command costs to start (loading Cairo, Pango, FFmpeg): not the join's work.
+startup=""
+for ((i = 0; i < REPEAT; ++i)); do
+  start=$(date +%s.%N)
+  "$VIBRA" --help >/dev/null
+  took=$(echo "$(date +%s.%N) - $start" | bc -l)
+  if [ -z "$startup" ] || (( $(echo "$took < $startup" | bc -l) )); then startup=$took; fi
+done
 printf "%-46s %8.3f s  = %.2f%% of the one-process render (%d KiB joined)\n" "concat of 4 segments" "$fastest" \
   "$(echo "100 * $fastest / $one" | bc -l)" $(( $(stat -c %s "$WORK/joined.mp4") / 1024 ))
+printf "%-46s %8.3f s  = %.2f%% (process start-up %.3f s left out)\n" "  the join's own work" \
+  "$(echo "$fastest - $startup" | bc -l)" "$(echo "100 * ($fastest - $startup) / $one" | bc -l)" "$startup"

@@ -12,25 +12,13 @@
 #include "cli_support.hpp"
 
 using vibra::test::check_refused;
+using vibra::test::read_file;
 using vibra::test::run_vibra;
+using vibra::test::shell;
 using vibra::test::ScratchDirectory;
 namespace fs = std::filesystem;
 
 namespace {
-std::string shell(const std::string& command) {
-  std::string out;
-  std::FILE* pipe = ::popen(command.c_str(), "r");
-  char buffer[4096];
-  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
-  ::pclose(pipe);
-  return out;
-}
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 /// Every file of a directory by name, with its bytes.
 std::map<std::string, std::string> files_of(const fs::path& dir) {
   std::map<std::string, std::string> files;
