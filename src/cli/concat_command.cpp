@@ -37,8 +37,8 @@ void add_concat_command(CLI::App& app) {
   cmd->add_flag("-q,--quiet", o->quiet, "No message");
   cmd->footer(
       "\nEach part must be a segment of the same render (same scene, parameters and video options). The parts'\n"
-      "codec parameters, frame ranges and timestamps are checked before anything is written; a wrong or missing\n"
-      "part is named. Example:\n"
+      "codec parameters, frame ranges and timestamps are checked, and a wrong or missing part is named; OUT is\n"
+      "written only when every check passes. Example:\n"
       "  vibra render --segment 0/2 -o lecture.mp4 && vibra render --segment 1/2 -o lecture.mp4\n"
       "  vibra concat lecture.seg-*-of-2.mp4 -o lecture.mp4\n");
   cmd->callback([o] { run(*o); });
