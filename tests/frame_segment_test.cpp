@@ -26,7 +26,7 @@ TEST_CASE("segments cover every frame once, in order, within one frame of each o
   CHECK(FrameSegment{2, 3, 31}.first() == 20);
 }
 
-TEST_CASE("a segment's tag reads back as the same segment; other text is no tag", "[segment]") {
+TEST_CASE("a segment's tag reads back as the same segment, and other text is no tag", "[segment]") {
   const FrameSegment s{1, 3, 300, 0x00c0ffee12345678};
   CHECK(s.tag() == "vibra segment 1/3: frames 100-199 of 300, render 00c0ffee12345678");
   CHECK(FrameSegment::from_tag(s.tag()) == s);
