@@ -217,6 +217,11 @@ ConcatSummary concat_segments(const std::vector<fs::path>& paths, const fs::path
     const FrameSegment& s = part.segment;
     std::vector<bool> seen(static_cast<std::size_t>(s.frames()), false);
     const AVRational frame_base = av_inv_q(part.frame_rate);
+    // Matroska stores no decoding timestamps: its demuxer guesses them, but
+    // not for a file's first packets. With B-frames a guess-less packet at a
+    // seam would break the order, so all of them go, and the muxer derives
+    // each from the presentation timestamps, as for any stream without them.
+    const bool guessed_dts = std::strstr(part.input->iformat->name, "matroska") != nullptr;
     for (;;) {
       const int read = av_read_frame(part.input.get(), packet.get());
       if (read == AVERROR_EOF) break;
@@ -229,6 +234,7 @@ ConcatSummary concat_segments(const std::vector<fs::path>& paths, const fs::path
                          "-" + std::to_string(s.end() - 1) + " once each as its tag says",
                "render it again");
       seen[frame - s.first()] = true;
+      if (guessed_dts) packet->dts = AV_NOPTS_VALUE;
       av_packet_rescale_ts(packet.get(), part.stream->time_base, out.stream->time_base);
       if (packet->dts != AV_NOPTS_VALUE) {
         if (last_dts != AV_NOPTS_VALUE && packet->dts <= last_dts)
