@@ -16,7 +16,8 @@ VideoQuality parse_quality(const std::string& q) {
   if (q == "draft") return VideoQuality::draft;
   if (q == "medium" || q.empty()) return VideoQuality::medium;
   if (q == "high") return VideoQuality::high;
-  throw OutputError("--quality " + q + " is not one of draft, medium, high");
+  if (q == "lossless") return VideoQuality::lossless;
+  throw OutputError("--quality " + q + " is not one of draft, medium, high, lossless");
 }
 
 class VideoSink final : public FrameSink {
@@ -38,17 +39,18 @@ class VideoSink final : public FrameSink {
 
 class PngSink final : public FrameSink {
  public:
-  PngSink(FramePattern pattern, int width, int height, int threads)
-      : pattern_(pattern), writer_(std::move(pattern), width, height, threads) {}
+  PngSink(FramePattern pattern, int width, int height, int threads, long long first)
+      : pattern_(pattern), first_(first), writer_(std::move(pattern), width, height, threads, first) {}
   void write(const std::uint8_t* bgra, int stride, const Damage*) override { writer_.write(bgra, stride); }
   void finish() override { writer_.finish(); }
   std::string description() const override {
-    return std::to_string(writer_.frames_written()) + " frames " + pattern_.name(0).string() + " ... " +
-           pattern_.name(std::max(0LL, writer_.frames_written() - 1)).string();
+    return std::to_string(writer_.frames_written()) + " frames " + pattern_.name(first_).string() + " ... " +
+           pattern_.name(first_ + std::max(0LL, writer_.frames_written() - 1)).string();
   }
 
  private:
   FramePattern pattern_;
+  long long first_;
   PngSequenceWriter writer_;
 };
 class TeeSink final : public FrameSink {
@@ -92,7 +94,8 @@ bool is_frame_pattern(const std::string& output) {
 
 std::unique_ptr<FrameSink> make_frame_sink(const std::string& output, int width, int height, double fps,
                                            long long frame_count, const VideoSettings& settings,
-                                           const std::map<std::string, std::string>& metadata) {
+                                           const std::map<std::string, std::string>& metadata,
+                                           long long first_frame) {
   if (is_video_path(output)) {
     VideoOptions options;
     options.width = width;
@@ -104,10 +107,11 @@ std::unique_ptr<FrameSink> make_frame_sink(const std::string& output, int width,
     options.preset = settings.preset;
     options.threads = settings.threads;
     options.metadata = metadata;
+    options.first_frame = first_frame;
     return std::make_unique<VideoSink>(output, options);
   }
   const int threads = settings.threads > 0 ? settings.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::make_unique<PngSink>(parse_frame_pattern(output, frame_count), width, height, threads);
+  return std::make_unique<PngSink>(parse_frame_pattern(output, frame_count), width, height, threads, first_frame);
 }
 
 }  // namespace vibra::render

@@ -40,9 +40,13 @@ bool is_video_path(const std::string& output);
 bool is_frame_pattern(const std::string& output);
 
 /// The sink for `output`: a video file or a PNG frame pattern / directory.
+/// `frame_count`: frames of the whole render (it sets the names' digits);
+/// `first_frame`: the first one this sink gets (a segment's), the first
+/// frame's number or timestamp.
 std::unique_ptr<FrameSink> make_frame_sink(const std::string& output, int width, int height, double fps,
                                            long long frame_count, const VideoSettings&,
-                                           const std::map<std::string, std::string>& metadata);
+                                           const std::map<std::string, std::string>& metadata,
+                                           long long first_frame = 0);
 
 /// One sink that writes every frame to each of `sinks` (draw once, encode twice).
 std::unique_ptr<FrameSink> make_tee_sink(std::vector<std::unique_ptr<FrameSink>> sinks);

@@ -90,8 +90,13 @@ FramePattern parse_frame_pattern(const std::string& pattern, long long frame_cou
   return p;
 }
 
-PngSequenceWriter::PngSequenceWriter(FramePattern pattern, int width, int height, int threads)
-    : pattern_(std::move(pattern)), width_(width), height_(height), capacity_(std::max(threads, 1)) {
+PngSequenceWriter::PngSequenceWriter(FramePattern pattern, int width, int height, int threads, long long first_index)
+    : pattern_(std::move(pattern)),
+      width_(width),
+      height_(height),
+      capacity_(std::max(threads, 1)),
+      first_(first_index),
+      queued_(first_index) {
   if (width <= 0 || height <= 0 || threads <= 0)
     throw std::invalid_argument("PngSequenceWriter needs a positive width, height and thread count");
   try {
@@ -107,7 +112,7 @@ PngSequenceWriter::~PngSequenceWriter() {
   if (finished_) return;
   std::error_code ec;
   for (size_t i = 0; i < saved_.size(); ++i)
-    if (saved_[i]) fs::remove(pattern_.name(static_cast<long long>(i)), ec);
+    if (saved_[i]) fs::remove(pattern_.name(first_ + static_cast<long long>(i)), ec);
 }
 
 void PngSequenceWriter::write(const std::uint8_t* bgra, int stride) {
@@ -177,7 +182,7 @@ void PngSequenceWriter::work() {
     --busy_;
     spare_.push_back(std::move(job.scanlines));
     if (error.empty())
-      saved_[job.index] = true;
+      saved_[job.index - first_] = true;
     else if (failure_.empty())
       failure_ = std::move(error);
     progress_.notify_all();

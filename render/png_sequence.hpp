@@ -37,8 +37,10 @@ FramePattern parse_frame_pattern(const std::string& pattern, long long frame_cou
 /// temporary name and renamed, so no file is ever half-written.
 class PngSequenceWriter {
  public:
-  /// Throws std::invalid_argument for a non-positive size or thread count.
-  PngSequenceWriter(FramePattern, int width, int height, int threads = 2);
+  /// `first_index`: the number of the first frame (a segment of a longer
+  /// render numbers its frames as the whole render does). Throws
+  /// std::invalid_argument for a non-positive size or thread count.
+  PngSequenceWriter(FramePattern, int width, int height, int threads = 2, long long first_index = 0);
   PngSequenceWriter(const PngSequenceWriter&) = delete;
   PngSequenceWriter& operator=(const PngSequenceWriter&) = delete;
   /// Not finished (error, interrupt): drops queued frames, waits for the
@@ -53,7 +55,7 @@ class PngSequenceWriter {
   /// Waits until every frame is on disk; throws OutputError for the first failure.
   void finish();
   /// Frames accepted by write(); all of them are on disk once finish() returns.
-  long long frames_written() const { return queued_; }
+  long long frames_written() const { return queued_ - first_; }
 
  private:
   struct Job {
@@ -67,7 +69,8 @@ class PngSequenceWriter {
   FramePattern pattern_;
   int width_, height_;
   size_t capacity_;
-  long long queued_ = 0;
+  long long first_;
+  long long queued_;  ///< the next frame's index
   bool finished_ = false;
 
   std::mutex mutex_;  // guards everything below
@@ -78,7 +81,7 @@ class PngSequenceWriter {
   int busy_ = 0;
   bool stopping_ = false;
   std::string failure_;
-  std::vector<bool> saved_;  // by index: on disk, for the cleanup of an unfinished run
+  std::vector<bool> saved_;  // by index - first_: on disk, for the cleanup of an unfinished run
   std::vector<std::thread> workers_;
 };
 

@@ -24,6 +24,21 @@ fs::path directory_of(const fs::path& p) {
   fs::path dir = p.parent_path();
   return dir.empty() ? fs::path(".") : dir;
 }
+
+/// This machine's name, as temporaries carry it: processes on other machines
+/// may share the directory (segments of one render on a cluster's shared
+/// disk), and only this machine can tell whether its own PIDs are gone.
+const std::string& host_name() {
+  static const std::string name = [] {
+    char text[256] = {};
+    if (gethostname(text, sizeof text - 1) != 0 || !text[0]) return std::string("host");
+    std::string host(text);
+    for (char& c : host)
+      if (c == '/' || c == '-') c = '_';
+    return host;
+  }();
+  return name;
+}
 }  // namespace
 
 void require_writable_directory(const fs::path& dir) {
@@ -72,7 +87,7 @@ TemporaryFile::TemporaryFile(fs::path final_path) : final_(std::move(final_path)
   std::string name = ".";
   name += final_.filename().string();
   name += kTag;
-  name += std::to_string(getpid());
+  name += host_name() + "-" + std::to_string(getpid());
   temp_ = directory_of(final_) / name;
 }
 
@@ -108,7 +123,10 @@ std::vector<fs::path> TemporaryFile::stale_in(const fs::path& dir) {
     std::string name = entry.path().filename().string();
     auto at = name.rfind(kTag);
     if (name.empty() || name[0] != '.' || at == std::string::npos) continue;
-    long pid = std::strtol(name.c_str() + at + std::strlen(kTag), nullptr, 10);
+    const std::string owner = name.substr(at + std::strlen(kTag));  // HOST-PID
+    const auto dash = owner.rfind('-');
+    if (dash == std::string::npos || owner.substr(0, dash) != host_name()) continue;  // another machine's
+    long pid = std::strtol(owner.c_str() + dash + 1, nullptr, 10);
     bool alive = pid > 0 && (kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
     if (!alive) stale.push_back(entry.path());
   }

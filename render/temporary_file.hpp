@@ -6,9 +6,10 @@ namespace vibra::render {
 
 /// A file written under a temporary name beside its final path and renamed
 /// into place only by commit(), so the final path never holds a partial file.
-/// Temporary names look like `.NAME.vibra-tmp-PID` so a killed run's leftovers
-/// are recognisable; the first TemporaryFile in a directory removes (and
-/// reports on stderr) those whose process is gone. The destructor removes an
+/// Temporary names look like `.NAME.vibra-tmp-HOST-PID` so a killed run's
+/// leftovers are recognisable; the first TemporaryFile in a directory removes
+/// (and reports on stderr) those of this host whose process is gone. Other
+/// hosts' temporaries are left alone: on a shared disk they may be live. The destructor removes an
 /// uncommitted temporary. An existing device or pipe (/dev/null, a FIFO) is
 /// written directly: there is nothing to rename.
 class TemporaryFile {
@@ -27,7 +28,7 @@ class TemporaryFile {
   /// Removes the temporary (best effort, never throws).
   void discard() noexcept;
 
-  /// Temporaries left in `dir` by killed runs (pattern `.*.vibra-tmp-*` whose PID is gone).
+  /// Temporaries left in `dir` by killed runs (`.*.vibra-tmp-HOST-PID`, this host, PID gone).
   static std::vector<std::filesystem::path> stale_in(const std::filesystem::path& dir);
 
  private:

@@ -17,6 +17,7 @@ extern "C" {
 #include <stdexcept>
 #include <thread>
 
+#include "render/av_error.hpp"
 #include "render/huge_pages.hpp"
 #include "render/output_error.hpp"
 #include "render/temporary_file.hpp"
@@ -75,6 +76,8 @@ int renew_frame_pixels(AVFrame* frame) {
 ///   flv     q   10 /  5 / 2   (quantizer 2..31, lower is better)
 ///   gif     fixed palette, no quality setting
 ///   raw     YUV 4:2:0 as it goes to the encoders, no quality setting
+/// Lossless (h264 and vp9 only): x264 at qp 0, VP9 with lossless=1; both
+/// decode to exactly the YUV 4:2:0 frames they were given.
 struct Codec {
   const char* name;     ///< as in VideoOptions::codec
   const char* label;    ///< for messages
@@ -126,12 +129,6 @@ const Container& find_container(const fs::path& path) {
   if (const Container* c = container_for(path)) return *c;
   throw OutputError("cannot tell the video format of '" + path.string() +
                     "': name it .mp4 (H.264), .webm (VP9), .mkv (H.264), .ogv (Theora), .gif, .flv or .yuv (raw)");
-}
-
-std::string av_error(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
-  return text;
 }
 
 /// A fixed palette suited to line art: a 6x6x6 colour cube (216 colours,
@@ -328,6 +325,11 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
           std::end(kX264Presets))
     throw OutputError("unknown x264 preset '" + o.preset +
                       "': choose ultrafast, superfast, veryfast, faster, fast, medium, slow, slower or veryslow");
+  const bool lossless = o.quality == VideoQuality::lossless;
+  if (lossless && codec_name != "h264" && codec_name != "vp9")
+    throw OutputError(std::string("--quality lossless needs H.264 or VP9, not ") + codec.label +
+                      ": write .mp4, .mkv or .webm");
+  if (lossless && o.crf >= 0) throw OutputError("--quality lossless and --crf exclude each other: give one of them");
   if (!o.preset.empty() && codec_name != "h264") notes_.push_back("the preset applies to H.264 only: ignored");
   if (!has_quality && o.crf >= 0) notes_.push_back(std::string(codec.label) + " has no quality setting: crf ignored");
   if (is_gif && o.fps > 50) notes_.push_back("GIF viewers slow down frames shorter than 0.02 s: use 50 fps or less");
@@ -370,7 +372,7 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
     c->color_primaries = AVCOL_PRI_BT709;
     c->color_trc = AVCOL_TRC_BT709;
   }
-  const int q = o.crf >= 0 ? o.crf : codec.quality[static_cast<int>(o.quality)];
+  const int q = o.crf >= 0 ? o.crf : lossless ? 0 : codec.quality[static_cast<int>(o.quality)];
   const std::string crf = std::to_string(q);
   AVDictionary* settings = nullptr;
   if (codec_name == "h264") {
@@ -392,10 +394,11 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
     if (o.preset.empty()) av_dict_set(&settings, "x264-params", "bframes=0:me=dia:subme=1:8x8dct=0", 0);
     // A ceiling: x264 signals the lowest profile its tools need (Main for
     // the default, High from superfast up, Constrained Baseline for ultrafast).
-    av_dict_set(&settings, "profile", "high", 0);
-    av_dict_set(&settings, "crf", crf.c_str(), 0);
+    // Lossless coding (qp 0) is High 4:4:4 Predictive's alone, even in 4:2:0.
+    av_dict_set(&settings, "profile", lossless ? "high444" : "high", 0);
+    av_dict_set(&settings, lossless ? "qp" : "crf", crf.c_str(), 0);
   } else if (codec_name == "vp9") {
-    av_dict_set(&settings, "crf", crf.c_str(), 0);
+    av_dict_set(&settings, lossless ? "lossless" : "crf", lossless ? "1" : crf.c_str(), 0);
     c->bit_rate = 0;  // with crf: constant quality
     av_dict_set(&settings, "row-mt", "1", 0);
     av_dict_set(&settings, "deadline", "realtime", 0);
@@ -443,6 +446,7 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
   const int written = avformat_write_header(m.format, &header);
   av_dict_free(&header);
   m.check(written, "writing the header", true);
+  m.next_pts = o.first_frame;
   m.worker = std::thread([&m] { m.work(); });
 }
 

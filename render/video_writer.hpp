@@ -10,7 +10,7 @@
 
 namespace vibra::render {
 
-enum class VideoQuality { draft, medium, high };
+enum class VideoQuality { draft, medium, high, lossless };
 
 struct VideoOptions {
   int width = 1280, height = 720;  ///< size of the frames passed to write(), pixels
@@ -20,7 +20,10 @@ struct VideoOptions {
   int crf = -1;                    ///< -1 = from quality; else the encoder's crf (quantizer for theora, flv)
   std::string preset;              ///< x264 preset; "" = veryfast without B-frames (measured best for line art)
   int threads = 0;                 ///< encoder threads; 0 = the codec's default for this machine
-  std::map<std::string, std::string> metadata;  ///< container metadata: title, comment
+  std::map<std::string, std::string> metadata;  ///< container metadata: title, comment, description
+  /// Timestamp of the first frame, in frames: a segment of a longer render
+  /// starts at its first frame's index (and, as every video, with a key frame).
+  long long first_frame = 0;
 };
 
 /// Encodes Cairo frames into a video file in process with FFmpeg's libraries,

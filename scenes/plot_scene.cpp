@@ -32,9 +32,22 @@ PlotScene::PlotScene(int width, int height, double t_end, SceneStyle style, cons
                             {15, style_.colors.wire.with_alpha(0.75)}, render::Anchor::bottom_left);
       }) {}
 
-void PlotScene::draw(render::Canvas& canvas, std::span<const double> row) {
+void PlotScene::prepare() {
   if (!prepared_) panel_.finish_recording(), prepared_ = true;
-  background_.paint(canvas, [&](render::Canvas& layer, bool from_start) { panel_.draw_progress(layer, row[0], from_start); });
+}
+
+StaticLayer::Grow PlotScene::progress_to(double t) {
+  return [this, t](render::Canvas& layer, bool from_start) { panel_.draw_progress(layer, t, from_start); };
+}
+
+void PlotScene::skip(const render::Canvas& canvas, std::span<const double> row) {
+  prepare();
+  background_.skip(canvas, progress_to(row[0]));
+}
+
+void PlotScene::draw(render::Canvas& canvas, std::span<const double> row) {
+  prepare();
+  background_.paint(canvas, progress_to(row[0]));
   panel_.draw(canvas, row[0], row, true);
   // The read-out sits top right: the panel's y label is top left.
   draw_readout(canvas, {area_.w * 0.55, 0, area_.w * 0.45, 40}, row[0], style_);

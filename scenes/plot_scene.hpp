@@ -20,8 +20,12 @@ class PlotScene final : public Scene {
   void record(std::span<const double> row) override { panel_.record(row); }
   void observe(std::span<const double> row) override { panel_.observe(row); }
   void draw(render::Canvas&, std::span<const double> row) override;
+  void skip(const render::Canvas&, std::span<const double> row) override;
 
  private:
+  void prepare();
+  StaticLayer::Grow progress_to(double t);
+
   SceneStyle style_;
   render::PixelRect area_;
   SeriesPanel panel_;

@@ -17,6 +17,7 @@
 #include "render/stop_signal.hpp"
 #include "render/temporary_file.hpp"
 #include "render/text.hpp"
+#include "render/video_concat.hpp"
 #include "scenes/frame_clock.hpp"
 #include "scenes/scene_factory.hpp"
 
@@ -54,6 +55,29 @@ std::string plain_text(const std::string& markup) {
   return out;
 }
 
+/// A hash (FNV-1a) of everything that shapes a render's frames and their
+/// coding, so that segments of different renders are told apart. Threads are
+/// left out: they change how fast, not what.
+std::uint64_t render_fingerprint(const RenderRequest& r, const std::string& caption, long long frames) {
+  const SceneConfig& c = r.scene;
+  std::string text = c.name + '\n' + c.model + '\n' + caption + '\n';
+  for (const auto& s : c.model_settings) text += s.key + '=' + s.value + '\n';
+  char numbers[512];
+  const auto& k = c.colors;
+  std::snprintf(numbers, sizeof numbers, "%d %d %.17g %.17g %d %d %d %.17g %lld", c.width, c.height, c.fps, c.speed,
+                int(c.frame_per_step), int(c.layout), int(c.window_mode), c.drag_magnification, frames);
+  text += numbers;
+  for (const render::Color& color : {k.background, k.bob, k.wire, k.gravity, k.wire_force, k.drag}) {
+    std::snprintf(numbers, sizeof numbers, " %.17g %.17g %.17g %.17g", color.r, color.g, color.b, color.a);
+    text += numbers;
+  }
+  text += '\n' + c.window + '\n' + r.video.codec + '\n' + r.video.quality + '\n' + std::to_string(r.video.crf) + '\n' +
+          r.video.preset;
+  std::uint64_t hash = 14695981039346656037ull;
+  for (unsigned char byte : text) hash = (hash ^ byte) * 1099511628211ull;
+  return hash;
+}
+
 /// Where the frames go: one target, or for a page its videos or frames.
 struct Outputs {
   std::vector<std::string> targets;  ///< video files or a frame pattern
@@ -61,7 +85,9 @@ struct Outputs {
   int digits = 4;
 };
 
-Outputs plan_outputs(const RenderRequest& r, long long frames) {
+Outputs plan_outputs(const RenderRequest& r, const render::FrameSegment& segment) {
+  const long long frames = segment.total;
+  if (r.segment && render::is_video_path(r.output)) return {{segment.file_name(r.output)}, "", 4};
   if (extension_of(r.output) != ".html") return {{r.output}, "", 4};
   const std::filesystem::path page(r.output);
   const std::string stem = page.stem().string();
@@ -71,6 +97,22 @@ Outputs plan_outputs(const RenderRequest& r, long long frames) {
   std::filesystem::create_directory(directory, ec);
   const render::FramePattern pattern = render::parse_frame_pattern((directory / "frame_%04d.png").string(), frames);
   return {{(directory / "frame_%04d.png").string()}, stem + "_frames/frame_", pattern.digits};
+}
+
+/// --skip-existing: whether the outputs are complete at their final paths.
+/// Outputs are renamed into place only when complete, so existence is proof;
+/// a segment video must also hold this segment (not one of another split).
+bool already_complete(const RenderRequest& r, const Outputs& outputs, const render::FrameSegment& segment) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (r.at || extension_of(r.output) == ".html") return fs::exists(r.output, ec);
+  const std::string& target = outputs.targets.front();
+  if (render::is_video_path(target))
+    return fs::exists(target, ec) && (!r.segment || render::read_segment_tag(target) == segment);
+  const render::FramePattern pattern = render::parse_frame_pattern(target, segment.total);
+  for (long long k = segment.first(); k < segment.end(); ++k)
+    if (!fs::exists(pattern.name(k), ec)) return false;
+  return true;
 }
 
 void write_page(const RenderRequest& r, const Outputs& outputs, long long frames, const Parameters& p,
@@ -136,6 +178,16 @@ void run_render(const RenderRequest& r) {
                      ".png/.svg/.pdf with --at");
   }
 
+  if (r.segment) {
+    if (still) throw UsageError("--segment splits a video or frame sequence; --at renders one still: drop one of them");
+    if (page)
+      throw UsageError("--segment cannot split a page (.html): render segments to .mp4, .mkv, .webm or PNG frames, "
+                       "join them with vibra concat");
+    if (render::is_video_path(r.output) && ext != ".mp4" && ext != ".mkv" && ext != ".webm")
+      throw UsageError("--segment needs a video that keeps timestamps: write .mp4, .mkv or .webm (or PNG frames), "
+                       "not " + ext);
+  }
+
   render::start_loading_fonts();  // overlaps the solver's pre-pass and the encoder's start
   const ModelDefinition& model = find_model(r.scene.model);
   const Parameters parameters = model_parameters_of(r.scene);
@@ -150,8 +202,22 @@ void run_render(const RenderRequest& r) {
   const FrameClock clock =
       r.scene.frame_per_step ? FrameClock::per_step(mesh.dt, mesh.steps) : FrameClock::by_speed(mesh.T, r.scene.fps, speed);
   if (clock.frames() > 100'000'000) throw UsageError("that is more than 1e8 frames: lower fps, raise speed or shorten T");
-
   const std::string caption = caption_of(r.scene, parameters, mesh);
+  render::FrameSegment segment{0, 1, clock.frames()};
+  if (r.segment) {
+    segment = {r.segment->index, r.segment->count, clock.frames(), render_fingerprint(r, caption, clock.frames())};
+    if (segment.frames() == 0)
+      throw UsageError("segment " + std::to_string(segment.index) + "/" + std::to_string(segment.count) +
+                       " has no frames: the render has only " + std::to_string(segment.total) +
+                       ", so use at most that many segments");
+  }
+  const Outputs outputs = still ? Outputs{} : plan_outputs(r, segment);
+  if (r.skip_existing && already_complete(r, outputs, segment)) {
+    const std::string& done = page || still ? r.output : outputs.targets.front();
+    if (!r.quiet) std::fprintf(stderr, "vibra: %s is already complete: skipped\n", done.c_str());
+    return;
+  }
+
   std::unique_ptr<Scene> scene = make_scene(r.scene, pre_pass->info(), caption);
 
   // Pre-pass: fixed view and plot ranges over the whole run, in constant memory.
@@ -180,29 +246,36 @@ void run_render(const RenderRequest& r) {
   if (still) return write_still(r, *scene, row_at(*r.at));
 
   std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name}, {"comment", plain_text(caption)}};
-  const Outputs outputs = plan_outputs(r, clock.frames());
+  if (r.segment) metadata["description"] = segment.tag();  // what vibra concat checks
   std::vector<std::unique_ptr<render::FrameSink>> sinks;
   for (const auto& target : outputs.targets)
     sinks.push_back(render::make_frame_sink(target, r.scene.width, r.scene.height, r.scene.fps, clock.frames(), r.video,
-                                            metadata));
+                                            metadata, segment.first()));
   std::unique_ptr<render::FrameSink> sink =
       sinks.size() == 1 ? std::move(sinks.front()) : render::make_tee_sink(std::move(sinks));
   if (!r.quiet)
     for (const auto& note : sink->notes()) std::fprintf(stderr, "vibra: %s\n", note.c_str());
   render::Canvas canvas = render::Canvas::image(r.scene.width, r.scene.height);
   canvas.track_damage();  // frames redraw, and the encoder converts, only what changed
-  render::Progress progress("vibra render", clock.frames(), r.quiet);
-  for (long long k = 0; k < clock.frames(); ++k) {
+  // A segment's earlier frames are not drawn, but the solver passes through
+  // them (moving plots see every step) and the scene keeps up with them, so
+  // its frames are the whole render's, byte for byte.
+  for (long long k = 0; k < segment.first(); ++k) {
+    if ((k & 0xff) == 0) render::throw_if_stop_requested();
+    scene->skip(canvas, row_at(clock.time(k)));
+  }
+  render::Progress progress("vibra render", segment.frames(), r.quiet);
+  for (long long k = segment.first(); k < segment.end(); ++k) {
     render::throw_if_stop_requested();
     canvas.begin_frame();
     scene->draw(canvas, row_at(clock.time(k)));
     canvas.flush();
     const render::Damage changed = canvas.changed();
     sink->write(canvas.data(), canvas.stride(), &changed);
-    progress.update(k + 1);
+    progress.update(k + 1 - segment.first());
   }
   sink->finish();
-  progress.finish(clock.frames());
+  progress.finish(segment.frames());
   if (page) write_page(r, outputs, clock.frames(), parameters, mesh);
   if (!r.quiet) std::fprintf(stderr, "vibra: wrote %s\n", (sink->description() + (page ? " and " + r.output : "")).c_str());
 }

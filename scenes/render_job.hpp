@@ -2,6 +2,7 @@
 #include <optional>
 #include <string>
 
+#include "render/frame_segment.hpp"
 #include "render/frame_sink.hpp"
 #include "scenes/scene_config.hpp"
 
@@ -15,6 +16,11 @@ struct RenderRequest {
   /// With -o PAGE.html: PNG frames and a page that steps through them,
   /// instead of PAGE.mp4 + PAGE.webm and a page with a video tag.
   bool frames_player = false;
+  /// Render only this segment of the frames (index and count; run_render sets
+  /// the total). A video segment goes to segment.file_name(output).
+  std::optional<render::FrameSegment> segment;
+  /// Do nothing when the output is already complete at its final path.
+  bool skip_existing = false;
   bool quiet = false;
 };
 

@@ -8,13 +8,19 @@ namespace vibra::scenes {
 /// A picture of a solution at one instant, fed solution rows (t first, then
 /// the model's columns). The render job calls record() for every step of a
 /// pre-pass (fixed ranges over the run), then, while rendering, observe() for
-/// every solver step and draw() for each frame.
+/// every solver step and draw() for each frame. A segment of a render calls
+/// skip() for each frame before its first, so that what its frames draw is
+/// what the whole render draws for them.
 class Scene {
  public:
   virtual ~Scene() = default;
   virtual void record(std::span<const double> row) = 0;
   virtual void observe(std::span<const double> row) = 0;
   virtual void draw(render::Canvas&, std::span<const double> row) = 0;
+  /// A frame not drawn: keeps up what drawing it would have changed for the
+  /// frames after it (the whole-run curves drawn so far), without drawing on
+  /// `canvas`, which only says the frames' size and kind.
+  virtual void skip(const render::Canvas&, std::span<const double> row) = 0;
 };
 
 }  // namespace vibra::scenes

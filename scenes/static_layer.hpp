@@ -27,15 +27,7 @@ class StaticLayer {
       if (grow) grow(canvas, true);
       return;
     }
-    const bool fresh = !cache_;
-    if (fresh) {
-      cache_.emplace(render::Canvas::image(canvas.width(), canvas.height()));
-      if (canvas.tracks_damage()) cache_->track_damage();
-      draw_(*cache_);
-    }
-    cache_->begin_frame();
-    if (grow) grow(*cache_, fresh);
-    cache_->flush();
+    const bool fresh = grow_for(canvas, grow);
 
     render::Damage region(canvas.width(), canvas.height());
     if (fresh || !canvas.tracks_damage() || painted_on_ != canvas.id()) {
@@ -60,7 +52,28 @@ class StaticLayer {
     canvas.mark_restored(region);
   }
 
+  /// For a frame that is not drawn (see Scene::skip): the layer grows as
+  /// paint() would grow it under `canvas`, which is not touched.
+  void skip(const render::Canvas& canvas, const Grow& grow) {
+    if (cairo_surface_get_type(canvas.surface()) == CAIRO_SURFACE_TYPE_IMAGE) grow_for(canvas, grow);
+  }
+
  private:
+  /// Makes the layer for frames like `canvas`'s if need be, then grows it by
+  /// one frame's worth; returns whether the layer was new.
+  bool grow_for(const render::Canvas& canvas, const Grow& grow) {
+    const bool fresh = !cache_;
+    if (fresh) {
+      cache_.emplace(render::Canvas::image(canvas.width(), canvas.height()));
+      if (canvas.tracks_damage()) cache_->track_damage();
+      draw_(*cache_);
+    }
+    cache_->begin_frame();
+    if (grow) grow(*cache_, fresh);
+    cache_->flush();
+    return fresh;
+  }
+
   std::function<void(render::Canvas&)> draw_;
   std::optional<render::Canvas> cache_;
   std::uint64_t painted_on_ = 0;  ///< Canvas::id of the canvas painted last: only it holds the layer already

@@ -66,9 +66,7 @@ void SystemScene::draw_static(render::Canvas& canvas) {
 
 void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   prepare();
-  background_.paint(canvas, [&](render::Canvas& layer, bool from_start) {
-    for (auto& panel : panels_) panel.draw_progress(layer, row[0], from_start);
-  });
+  background_.paint(canvas, progress_to(row[0]));
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw(canvas, row[0], row, i + 1 == panels_.size());
   if (diagram_->view_at(row)) {
     // A following view runs its ground off the sides: keep it out of the panels.
@@ -81,6 +79,17 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
     diagram_->draw(canvas, view_at(row), row);
   }
   draw_readout(canvas, diagram_area_, row[0], style_);
+}
+
+void SystemScene::skip(const render::Canvas& canvas, std::span<const double> row) {
+  prepare();
+  background_.skip(canvas, progress_to(row[0]));
+}
+
+StaticLayer::Grow SystemScene::progress_to(double t) {
+  return [this, t](render::Canvas& layer, bool from_start) {
+    for (auto& panel : panels_) panel.draw_progress(layer, t, from_start);
+  };
 }
 
 }  // namespace vibra::scenes

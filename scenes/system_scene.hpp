@@ -23,6 +23,7 @@ class SystemScene final : public Scene {
   void record(std::span<const double> row) override;
   void observe(std::span<const double> row) override;
   void draw(render::Canvas&, std::span<const double> row) override;
+  void skip(const render::Canvas&, std::span<const double> row) override;
 
   /// The diagram's world box over the run (after record()).
   const WorldBox& world_box() const { return world_; }
@@ -32,6 +33,8 @@ class SystemScene final : public Scene {
  private:
   void prepare();
   void draw_static(render::Canvas&);
+  /// The curves drawn so far, for the layer under frame time t.
+  StaticLayer::Grow progress_to(double t);
 
   int height_;
   SceneStyle style_;

@@ -41,6 +41,28 @@ inline CommandResult run_vibra(const std::string& args) {
   return result;
 }
 
+/// The standard output of a shell command (ffprobe, ffmpeg).
+inline std::string shell(const std::string& command) {
+  std::string out;
+  std::FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return out;
+  char buffer[4096];
+  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
+  ::pclose(pipe);
+  return out;
+}
+
+/// A file's bytes ("" when it cannot be read).
+inline std::string read_file(const std::filesystem::path& path) {
+  std::string bytes;
+  if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
+    char buffer[4096];
+    for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, f)) > 0;) bytes.append(buffer, n);
+    std::fclose(f);
+  }
+  return bytes;
+}
+
 /// Starts `vibra ARGS` as a child process, without a shell, its stdout and
 /// stderr written to the given files (e.g. /dev/null); returns its pid.
 inline pid_t spawn_vibra(const std::vector<std::string>& args, const std::string& out_file,

@@ -13,31 +13,18 @@
 
 #include "cli_support.hpp"
 
+using vibra::test::read_file;
 using vibra::test::run_vibra;
+using vibra::test::shell;
 using vibra::test::ScratchDirectory;
 namespace fs = std::filesystem;
 
 namespace {
-std::string shell(const std::string& command) {
-  std::string out;
-  std::FILE* pipe = ::popen(command.c_str(), "r");
-  char buffer[4096];
-  size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-  ::pclose(pipe);
-  return out;
-}
-
 /// ffprobe's flat key=value view of the first video stream and the format.
 std::string probe(const std::string& file) {
   return shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
                "stream=codec_name,profile,pix_fmt,width,height,color_range,color_space,avg_frame_rate,nb_read_frames,duration "
                "-show_entries format=duration:format_tags=title -of flat=s=_ '" + file + "'");
-}
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
 }
 
 const std::string kShort = " --size 320x180 --set periods=0.5 -q ";  // T = pi: 31 frames at 30 fps

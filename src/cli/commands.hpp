@@ -10,5 +10,6 @@ void add_render_command(CLI::App& app);
 void add_ascii_command(CLI::App& app);
 void add_plot_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
+void add_concat_command(CLI::App& app);
 
 }  // namespace vibra::cli

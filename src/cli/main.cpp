@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   vibra::cli::add_ascii_command(app);
   vibra::cli::add_plot_command(app);
   vibra::cli::add_analyze_command(app);
+  vibra::cli::add_concat_command(app);
   try {
     if (argc > 1 && argv[1][0] != '-') {
       std::string names;

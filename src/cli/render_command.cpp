@@ -1,10 +1,12 @@
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/segment_option.hpp"
 #include "core/error.hpp"
 #include "scenes/diagram_registry.hpp"
 #include "scenes/render_job.hpp"
@@ -22,6 +24,8 @@ struct RenderOptions {
   bool frames_player = false;
   std::string window, window_mode;
   std::optional<double> at;
+  std::string segment;
+  bool skip_existing = false;
   bool quiet = false;
   render::VideoSettings video;
 };
@@ -49,7 +53,8 @@ std::string scene_keys_help() {
   out += "\nExamples:\n  vibra render                                   # pendulum.mp4\n"
          "  vibra render pendulum_book -o frames/tmp_%04d.png\n"
          "  vibra render --set Theta=40 --set alpha=0.8 -o lecture.webm\n"
-         "  vibra render --at 3.2 -o still.svg\n";
+         "  vibra render --at 3.2 -o still.svg\n"
+         "  vibra render --segment 1/3 -o lecture.mp4             # lecture.seg-1-of-3.mp4; then vibra concat\n";
   return out;
 }
 
@@ -77,6 +82,8 @@ void run(const RenderOptions& o) {
   request.frames_player = o.frames_player;
   request.quiet = o.quiet;
   request.video = o.video;
+  if (!o.segment.empty()) request.segment = parse_segment_option(o.segment, [](const char* name) { return std::getenv(name); });
+  request.skip_existing = o.skip_existing;
   scenes::run_render(request);
 }
 }  // namespace
@@ -99,11 +106,18 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--frames-player", o->frames_player, "With -o PAGE.html: PNG frames and a page that steps through them");
   cmd->add_option("--at", o->at, "Render one still at this time");
   cmd->add_option("--codec", o->video.codec, "Video codec: h264, vp9, vp8, theora, gif (default from the extension)");
-  cmd->add_option("--quality", o->video.quality, "draft, medium or high")->capture_default_str();
+  cmd->add_option("--quality", o->video.quality,
+                  "draft, medium, high, or lossless (H.264 or VP9: decodes to exactly the frames drawn)")
+      ->capture_default_str();
   cmd->add_option("--crf", o->video.crf, "Constant rate factor (overrides --quality)");
   cmd->add_option("--preset", o->video.preset, "x264 preset, e.g. veryfast, medium");
   cmd->add_option("--threads", o->video.threads, "Threads for PNG compression and the encoder (default: one per core)")
       ->check(CLI::Range(1, 64));
+  cmd->add_option("--segment", o->segment,
+                  "K/N: only frames [K F/N, (K+1) F/N) of the F frames, to OUT.seg-K-of-N.EXT (video) or the frames' own "
+                  "numbers (PNG); auto: K and N of a Slurm job array; auto/N: K from JOB_COMPLETION_INDEX");
+  cmd->add_flag("--skip-existing", o->skip_existing,
+                "Do nothing when the output (or this segment) is already complete at its final path");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or messages");
   cmd->footer(scene_keys_help());
   cmd->callback([o] { run(*o); });
