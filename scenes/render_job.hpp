@@ -15,6 +15,10 @@ struct RenderRequest {
   /// With -o PAGE.html: PNG frames and a page that steps through them,
   /// instead of PAGE.mp4 + PAGE.webm and a page with a video tag.
   bool frames_player = false;
+  /// With -o PAGE.html: the CSV beside the page keeps every K-th step (and the last).
+  long long csv_every = 1;
+  /// The command that asked for the render, shown on a page.
+  std::string command_line;
   bool quiet = false;
 };
 

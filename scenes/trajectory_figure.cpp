@@ -38,13 +38,6 @@ std::string quantity_markup(const std::string& column) {
   return column;
 }
 
-/// Colours for the time panels in turn; vermillion is kept for the exact solution.
-render::Color panel_color(int k) {
-  using namespace render::palette;
-  const render::Color colors[] = {blue, green, purple, orange, sky};
-  return colors[k % 5];
-}
-
 /// A series fed from two columns of every row (column 0 is t).
 struct Feed {
   render::Series* series;
@@ -66,9 +59,13 @@ std::vector<std::string> default_plot_panels(const TrajectoryInfo& info) {
   return {info.columns[1]};
 }
 
-render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::string>& panels, int width, int height,
-                                 const std::string& title) {
-  const TrajectoryInfo& info = trajectory.info();
+render::Color time_panel_color(int k) {
+  using namespace render::palette;
+  const render::Color colors[] = {blue, green, purple, orange, sky};
+  return colors[k % 5];
+}
+
+std::vector<std::string> ordered_plot_panels(const TrajectoryInfo& info, const std::vector<std::string>& panels) {
   const std::vector<std::string> valid = plot_panel_names(info);
   for (const auto& name : panels) {
     if (std::find(valid.begin(), valid.end(), name) != valid.end()) continue;
@@ -92,7 +89,15 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
     const std::string panel = name == "exact" ? main : name;
     if (panel != main || std::find(order.begin(), order.end(), main) == order.end()) order.push_back(panel);
   }
+  return order;
+}
 
+render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::string>& panels, int width, int height,
+                                 const std::string& title) {
+  const TrajectoryInfo& info = trajectory.info();
+  const std::vector<std::string> order = ordered_plot_panels(info, panels);
+  const bool with_exact = std::find(panels.begin(), panels.end(), "exact") != panels.end();
+  const std::string& main = info.columns[1];
   render::Figure figure(width, height, title);
   const double T = info.mesh.T;
   std::vector<Feed> feeds;
@@ -112,7 +117,7 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
     const int p = figure.add_panel({quantity_markup(name), "<i>t</i>", render::AxisScale::linear,
                                     render::AxisScale::linear, false, std::make_pair(0.0, T)});
     const bool overlay = with_exact && name == main;
-    feeds.push_back({&figure.add_curve(p, overlay ? "numerical" : "", {panel_color(time_panels++), 2.2}, 0, T), 0, column});
+    feeds.push_back({&figure.add_curve(p, overlay ? "numerical" : "", {time_panel_color(time_panels++), 2.2}, 0, T), 0, column});
     if (overlay) {
       // The exact solution is a function: sample it at least as finely as the
       // mesh (so its envelope holds every peak) and at least 4 times per pixel column.

@@ -17,6 +17,15 @@ std::vector<std::string> plot_panel_names(const TrajectoryInfo&);
 /// y, theta, S and D for the pendulums (Exercise 1.25), else the main quantity.
 std::vector<std::string> default_plot_panels(const TrajectoryInfo&);
 
+/// Checks `panels` against the run and returns them in drawing order, with
+/// `exact` folded into the main quantity's panel (or standing in for it).
+/// Throws UsageError for an unknown panel (suggesting the nearest), an empty
+/// list, `exact` without an exact solution, or an endless run.
+std::vector<std::string> ordered_plot_panels(const TrajectoryInfo&, const std::vector<std::string>& panels);
+
+/// The colour of the k-th time panel (vermillion is kept for exact solutions).
+render::Color time_panel_color(int k);
+
 /// Streams the trajectory once into a figure of the named panels, stacked
 /// (time panels next to each other share the t axis). Throws UsageError for
 /// an unknown panel, `exact` without an exact solution, or an endless run.
