@@ -208,9 +208,20 @@ def check_lecture(browser, page, T, fps, frames, screenshot):
     check(browser.wait_for("document.getElementById('video').readyState >= 2", 20),
           "the video loads (readyState >= HAVE_CURRENT_DATA)")
     source = browser.js("document.getElementById('video').currentSrc")
-    print("      the source that plays: " + source.rsplit("/", 1)[-1])
+    h264 = browser.js("document.getElementById('video').canPlayType('video/mp4; codecs=avc1.4d401e')")
+    print(f"      the source that plays: {source.rsplit('/', 1)[-1]} (this Chromium's H.264 support: '{h264 or 'none'}')")
+    # Without H.264 (a Chromium built without proprietary codecs) the WebM must be the one that plays.
+    check(source.endswith(".mp4") if h264 else source.endswith(".webm"),
+          "the browser plays the first source it can: " + ("MP4" if h264 else "WebM, as it has no H.264"))
     duration = browser.js("document.getElementById('video').duration")
     check(abs(duration - frames / fps) < 1e-3, f"duration {duration:.6f} s = {frames} frames / {fps} fps")
+    # The WebM source, on its own, plays too (what Chromium without H.264 would show).
+    browser.js("(() => { const v = document.createElement('video'); v.id = 'webm-alone'; v.muted = true;"
+               " v.src = document.querySelector('source[type=\"video/webm\"]').src; document.body.append(v); })()")
+    webm_ok = browser.wait_for("document.getElementById('webm-alone').readyState >= 2", 20)
+    webm_duration = browser.js("document.getElementById('webm-alone').duration")
+    check(webm_ok and abs(webm_duration - frames / fps) < 1e-3, f"the WebM alone plays, {webm_duration:.6f} s long")
+    browser.js("document.getElementById('webm-alone').remove()")
 
     now = lambda: browser.js("document.getElementById('video').currentTime")
     settle = lambda: browser.wait_for("!document.getElementById('video').seeking", 5)
