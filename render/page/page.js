@@ -11,8 +11,11 @@
   const clock = page.clock;  // {fps, frames, interval}: frame k shows simulated time k * interval
   const lastFrame = clock ? clock.frames - 1 : 0;
   const frameAt = s => Math.min(lastFrame, Math.max(0, Math.floor(s * clock.fps + 1e-3)));
+  // Seeking to exactly k / fps may show frame k - 1 (Chromium truncates the
+  // time to microseconds, just below the frame's timestamp): aim 10 us in.
+  const frameTime = k => Math.min(lastFrame, Math.max(0, k)) / clock.fps + 1e-5;
   const simulatedTime = s => clock ? frameAt(s) * clock.interval : s;
-  const mediaTime = t => clock ? Math.min(lastFrame, Math.max(0, Math.round(t / clock.interval))) / clock.fps : t;
+  const mediaTime = t => clock ? frameTime(Math.round(t / clock.interval)) : t;
 
   function videoMedia(video) {
     return {
@@ -64,10 +67,10 @@
               : noMedia();
 
   // ---- Keys and buttons. ----------------------------------------------------
-  const step = n => { media.pause(); media.time = Math.min(lastFrame, Math.max(0, frameAt(media.time) + n)) / clock.fps; };
+  const step = n => { media.pause(); media.time = frameTime(frameAt(media.time) + n); };
   const toggle = () => (media.paused ? media.play() : media.pause());
   const home = () => { media.time = 0; };
-  const end = () => { media.pause(); media.time = lastFrame / clock.fps; };
+  const end = () => { media.pause(); media.time = frameTime(lastFrame); };
   if (clock) {
     $('play').onclick = toggle;
     $('back').onclick = () => step(-1);
