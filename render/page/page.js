@@ -121,9 +121,11 @@
     } else {
       const level = choice.level, w = choice.step, v = values(series, level);
       const first = Math.max(0, Math.floor((a - series.t0) / w) - 1), last = Math.min(level.cells - 1, Math.ceil((b - series.t0) / w) + 1);
+      // Where the curve is monotone over a cell its extremes lie at the
+      // cell's ends: drawn there, the line runs straight through them.
       for (let c = first; c <= last; c++) {
-        push(series.t0 + (c + 0.25) * w, v[2 * c]);
-        push(series.t0 + (c + 0.75) * w, v[2 * c + 1]);
+        push(series.t0 + (c + 0.02) * w, v[2 * c]);
+        push(series.t0 + (c + 0.98) * w, v[2 * c + 1]);
       }
     }
     return [xs, ys];
@@ -139,6 +141,13 @@
   const panelHeight = () => Math.max(140, Math.min(260, Math.round(window.innerHeight * 0.8 / Math.max(1, plots.panels.length))));
   const plotsElement = $('plots');
 
+  // Tick labels with as many decimals as their spacing needs (1.0005, not 1).
+  const ticks = (u, splits, axis, space, step) => {
+    let decimals = Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
+    while (decimals < 12 && splits.some(v => Math.abs(Number(v.toFixed(decimals)) - v) > step * 1e-6)) decimals++;
+    return splits.map(v => (Math.abs(v) < step * 1e-6 ? 0 : v).toFixed(decimals));
+  };
+
   const panels = plots.panels.map(panel => {
     const element = document.createElement('div');
     element.className = 'panel';
@@ -150,7 +159,7 @@
       legend: { show: false },
       cursor: { drag: { x: false, y: false, setScale: false }, sync: { key: 'vibra' }, points: { show: false } },
       scales: { x: { time: false, auto: false }, y: { auto: false } },
-      axes: [{ label: 't' }, { size: 60 }],
+      axes: [{ label: 't', values: ticks }, { size: 84, values: ticks }],
       series: [{ label: 't' }].concat(panel.series.map(s => ({
         label: s.label, stroke: s.color, width: 1.5, dash: s.dash ? [8, 5] : undefined,
         spanGaps: true, points: { show: false }, show: !hidden.has(s.key),
