@@ -69,7 +69,7 @@ TEST_CASE("a lecture page: video sources, plots' data, each fact once, the comma
   CHECK(lines(csv) == 1 + 16);
 }
 
-TEST_CASE("--frames-player: PNG frames and the same page around them", "[page]") {
+TEST_CASE("a frames-player page: PNG frames and the same page around them", "[page]") {
   ScratchDirectory dir;
   REQUIRE(run_vibra("render" + kShort + "--frames-player -o " + (dir / "player.html")).exit_code == 0);
   CHECK(fs::exists(dir / "player_frames/frame_0030.png"));
