@@ -86,8 +86,8 @@ std::string series_json(const PageSeries& s, long long budget_values) {
       q.add(pair ? std::optional(pair->first) : std::nullopt);
       q.add(pair ? std::optional(pair->second) : std::nullopt);
     }
-    out += (i ? "," : "") + std::string("{\"cells\":") + std::to_string(level.columns()) + ",\"data\":\"" +
-           q.base64_text() + "\"}";
+    if (i) out += ',';
+    out += "{\"cells\":" + std::to_string(level.columns()) + ",\"data\":\"" + q.base64_text() + "\"}";
   }
   out += "],\"exact\":";
   if (with_exact) {
@@ -133,8 +133,12 @@ std::string page_plots_json(const std::vector<PagePanel>& panels, size_t budget_
   const long long budget_values = static_cast<long long>(budget_bytes / 4 * 3 / 2 / std::max<size_t>(1, series));
   std::string out = "{\"t0\":" + number(t0) + ",\"t1\":" + number(t1) + ",\"panels\":[";
   for (size_t p = 0; p < panels.size(); ++p) {
-    out += (p ? "," : "") + std::string("{\"label\":") + json_string(panels[p].label) + ",\"series\":[";
-    for (size_t i = 0; i < panels[p].series.size(); ++i) out += (i ? "," : "") + series_json(panels[p].series[i], budget_values);
+    if (p) out += ',';
+    out += "{\"label\":" + json_string(panels[p].label) + ",\"series\":[";
+    for (size_t i = 0; i < panels[p].series.size(); ++i) {
+      if (i) out += ',';
+      out += series_json(panels[p].series[i], budget_values);
+    }
     out += "]}";
   }
   return out + "]}";

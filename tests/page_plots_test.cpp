@@ -95,7 +95,7 @@ TEST_CASE("1e7 samples: every zoom level keeps both spikes, the page's data stay
   CHECK(data.hi() == 3.0);
 
   std::vector<PagePanel> panels(1);
-  panels[0].label = "u";
+  panels[0].label.assign(1, 'u');  // not = "u": GCC 12 warns falsely (-Wrestrict, bug 105651)
   panels[0].series.push_back({"u", "run", render::palette::blue, false, std::move(data)});
   const std::string json = render::page_plots_json(panels, render::kPagePlotBudgetBytes);
   CHECK(json.size() <= render::kPagePlotBudgetBytes);
