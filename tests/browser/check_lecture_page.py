@@ -5,8 +5,9 @@ Drives Chromium through its DevTools protocol over --remote-debugging-pipe
 (standard library only). Renders a small pendulum page into a directory
 whose name has a space and non-ASCII letters, then checks: the video loads
 (readyState, duration = frames / fps; which source played is reported),
-ArrowRight while paused advances currentTime by 1 / fps, clicking a plot
-seeks there, the plots' cursor moves while playing, the wheel zooms all
+ArrowRight while paused advances currentTime by 1 / fps and shows that
+frame, clicking or dragging in a plot seeks there, the speed selector sets
+the rate, the plots' cursor moves while playing, the wheel zooms all
 time axes together and a double-click resets them; a figure page's legend
 hides a curve; a frames-player page steps with the same keys; no console
 errors; nothing fetched but file: and data: URLs. Saves a screenshot.
@@ -256,6 +257,24 @@ def check_lecture(browser, page, T, fps, frames, screenshot):
     settle()
     expected = round(0.75 * T / (T / (frames - 1))) / fps  # frames are evenly spaced over [0, T]
     check(abs(now() - expected) <= 1.01 / fps, f"a click at 3/4 of a plot seeks to {now():.4f} s (expected {expected:.4f})")
+
+    # Dragging from 1/4 to 1/2 of a plot scrubs the video along to t = T/2.
+    x0, y0 = plot_point(browser, 2, 0.25, 0.5)
+    x1, _ = plot_point(browser, 2, 0.5, 0.5)
+    browser.send("Input.dispatchMouseEvent", {"type": "mousePressed", "x": x0, "y": y0, "button": "left", "clickCount": 1})
+    for k in range(1, 6):
+        browser.send("Input.dispatchMouseEvent", {"type": "mouseMoved", "x": x0 + (x1 - x0) * k / 5, "y": y0,
+                                                  "button": "left", "buttons": 1})
+    browser.send("Input.dispatchMouseEvent", {"type": "mouseReleased", "x": x1, "y": y0, "button": "left", "clickCount": 1})
+    settle()
+    expected = round(0.5 * T / (T / (frames - 1))) / fps
+    check(abs(now() - expected) <= 1.01 / fps, f"a drag to 1/2 of a plot seeks to {now():.4f} s (expected {expected:.4f})")
+
+    browser.js("(() => { const s = document.getElementById('speed'); s.value = '2';"
+               " s.dispatchEvent(new Event('change')); })()")
+    check(browser.js("document.getElementById('video').playbackRate") == 2, "the speed selector sets 2x")
+    browser.js("(() => { const s = document.getElementById('speed'); s.value = '1';"
+               " s.dispatchEvent(new Event('change')); })()")
 
     cursor = lambda: browser.js("vibraPage.panels[0].playhead.style.transform")
     browser.key("Home", "Home", 36)
