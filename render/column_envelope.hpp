@@ -1,5 +1,6 @@
 #pragma once
 #include <algorithm>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -22,6 +23,13 @@ class ColumnEnvelope {
   double x1() const { return x1_; }
   /// Column of x, clamped to the range.
   int column_of(double x) const;
+
+  /// A column's two extremes in the order they occurred (the smallest first
+  /// when it came no later than the largest); nullopt for an empty column.
+  std::optional<std::pair<double, double>> extremes_in_order(int column) const;
+  /// The same curve in columns / factor columns (rounded up): each new column
+  /// merges `factor` neighbours, keeping their extremes and their order.
+  ColumnEnvelope coarsened(int factor) const;
 
   /// Pixel polyline through columns [0, last_column].
   template <class ToPixel>
@@ -50,6 +58,7 @@ class ColumnEnvelope {
  private:
   struct Cell {
     bool used = false;
+    bool min_first = true;  ///< the smallest value came no later than the largest
     double first = 0, last = 0, min = 0, max = 0;
   };
   std::vector<Cell> cells_;

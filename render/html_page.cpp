@@ -1,108 +1,125 @@
 #include "render/html_page.hpp"
 
 #include <cstdio>
+#include <map>
 
 #include "render/output_error.hpp"
+#include "render/page_assets.hpp"
 #include "render/temporary_file.hpp"
+#include "render/web_text.hpp"
 
 namespace vibra::render {
 
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 namespace {
 std::string mime_type(const std::string& source) {
-  auto ends = [&](const char* ext) {
-    const std::string e(ext);
-    return source.size() >= e.size() && source.compare(source.size() - e.size(), e.size(), e) == 0;
-  };
-  if (ends(".mp4")) return "video/mp4";
-  if (ends(".webm")) return "video/webm";
-  if (ends(".ogv")) return "video/ogg";
+  const std::string ext = std::filesystem::path(source).extension().string();
+  if (ext == ".mp4") return "video/mp4";
+  if (ext == ".webm") return "video/webm";
+  if (ext == ".ogv") return "video/ogg";
   return "video/x-matroska";
 }
 
-std::string head(const std::string& title) {
-  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + html_escape(title) +
-         "</title>\n<style>\n"
-         "body { font-family: 'DejaVu Sans', sans-serif; margin: 2em auto; max-width: 1320px; color: #1a1a1f; }\n"
-         "video, img { max-width: 100%; height: auto; border: 1px solid #ddd; }\n"
-         "table { border-collapse: collapse; margin-top: 1em; }\n"
-         "td { padding: 0.15em 1em 0.15em 0; } td:first-child { color: #666; }\n"
-         "button, input { font-size: 1em; margin-right: 0.5em; }\n"
-         "</style>\n</head>\n<body>\n<h1>" +
-         html_escape(title) + "</h1>\n";
+std::string href(const std::string& file) { return html_escape(url_path_escape(file)); }
+
+std::string media_html(const PageMedia& m) {
+  const std::string size = " width=\"" + std::to_string(m.width) + "\" height=\"" + std::to_string(m.height) + "\"";
+  switch (m.kind) {
+    case PageMedia::Kind::none: return "";
+    case PageMedia::Kind::frames:
+      return "<div id=\"media\"><img id=\"frames\"" + size + " alt=\"a frame of the animation\"></div>";
+    case PageMedia::Kind::video: break;
+  }
+  std::string out = "<div id=\"media\"><video id=\"video\" preload=\"auto\" playsinline muted loop" + size + ">\n";
+  for (const auto& s : m.videos) out += "  <source src=\"" + href(s) + "\" type=\"" + mime_type(s) + "\">\n";
+  if (!m.videos.empty())
+    out += "  Your browser plays none of these videos: download <a href=\"" + href(m.videos.front()) + "\">" +
+           html_escape(m.videos.front()) + "</a>.\n";
+  return out + "</video></div>";
 }
 
-std::string facts_table(const PageFacts& facts) {
-  std::string out = "<table>\n";
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
+std::string data_json(const LecturePage& page) {
+  const PageMedia& m = page.media;
+  std::string out = "{\"media\":";
+  switch (m.kind) {
+    case PageMedia::Kind::none: out += "{\"kind\":\"none\"},\"clock\":null"; break;
+    case PageMedia::Kind::video: out += "{\"kind\":\"video\"}"; break;
+    case PageMedia::Kind::frames:
+      out += "{\"kind\":\"frames\",\"prefix\":" + json_string(url_path_escape(m.frames_prefix)) +
+             ",\"digits\":" + std::to_string(m.digits) + "}";
+      break;
+  }
+  if (m.kind != PageMedia::Kind::none)
+    out += ",\"clock\":{\"fps\":" + number(m.fps) + ",\"frames\":" + std::to_string(m.frames) +
+           ",\"interval\":" + number(m.frame_interval) + "}";
+  return out + ",\"plots\":" + page_plots_json(page.panels, kPagePlotBudgetBytes) + "}";
+}
+
+std::string facts_rows(const PageFacts& facts) {
+  std::string out;
   for (const auto& [name, value] : facts)
     out += "<tr><td>" + html_escape(name) + "</td><td>" + html_escape(value) + "</td></tr>\n";
-  return out + "</table>\n";
+  return out;
+}
+
+std::string downloads_html(const std::vector<PageDownload>& downloads) {
+  if (downloads.empty()) return "";
+  std::string out = "<p class=\"downloads\">Download:";
+  for (size_t i = 0; i < downloads.size(); ++i)
+    out += std::string(i ? " &middot;" : "") + " <a href=\"" + href(downloads[i].file) + "\" download>" +
+           html_escape(downloads[i].label) + "</a>";
+  return out + "</p>";
+}
+
+/// Replaces each @NAME@ of the template by its value, in one pass: values
+/// (scripts, data) are never searched for names themselves.
+std::string fill(std::string_view text, const std::map<std::string, std::string>& values) {
+  std::string out;
+  size_t at = 0;
+  while (true) {
+    const size_t open = text.find('@', at);
+    const size_t close = open == std::string_view::npos ? open : text.find('@', open + 1);
+    if (close == std::string_view::npos) break;
+    const auto value = values.find(std::string(text.substr(open + 1, close - open - 1)));
+    if (value == values.end()) {
+      out += text.substr(at, close - at);
+      at = close;
+      continue;
+    }
+    out += text.substr(at, open - at);
+    out += value->second;
+    at = close + 1;
+  }
+  return out += text.substr(at);
 }
 }  // namespace
 
-std::string video_page_html(const std::string& title, const std::vector<std::string>& sources, int width, int height,
-                            const PageFacts& facts) {
-  std::string out = head(title);
-  out += "<video controls loop preload=\"auto\" width=\"" + std::to_string(width) + "\" height=\"" +
-         std::to_string(height) + "\">\n";
-  for (const auto& s : sources)
-    out += "  <source src=\"" + html_escape(s) + "\" type=\"" + mime_type(s) + "\">\n";
-  out += "  Your browser plays none of these formats: download <a href=\"" + html_escape(sources.front()) + "\">" +
-         html_escape(sources.front()) + "</a>.\n</video>\n";
-  return out + facts_table(facts) + "</body>\n</html>\n";
-}
-
-std::string frames_player_html(const std::string& title, const std::string& prefix, int digits, long long frames,
-                               double fps, int width, int height, const PageFacts& facts) {
-  char settings[256];
-  std::snprintf(settings, sizeof settings, "const frames = %lld, digits = %d; let fps = %g;\n", frames, digits, fps);
-  std::string out = head(title);
-  out += "<img id=\"frame\" width=\"" + std::to_string(width) + "\" height=\"" + std::to_string(height) + "\" alt=\"frame\">\n";
-  out += "<p><button id=\"play\">Pause</button><button id=\"back\">&#9664; step</button>"
-         "<button id=\"next\">step &#9654;</button>\n"
-         "speed <input id=\"speed\" type=\"range\" min=\"1\" max=\"120\" value=\"" +
-         std::to_string(static_cast<int>(fps)) +
-         "\"> <span id=\"fps\"></span> frames/s &nbsp; frame <span id=\"index\"></span> of " + std::to_string(frames) +
-         "</p>\n";
-  out += facts_table(facts);
-  out += "<script>\n" + std::string(settings) + "const prefix = \"" + html_escape(prefix) + "\";\n" + R"(let k = 0, playing = true, timer = null;
-const img = document.getElementById('frame');
-const name = i => prefix + String(i).padStart(digits, '0') + '.png';
-function show(i) {
-  k = (i + frames) % frames;
-  img.src = name(k);
-  document.getElementById('index').textContent = k;
-  new Image().src = name((k + 1) % frames);  // preload the next frame
-}
-function schedule() {
-  clearInterval(timer);
-  document.getElementById('fps').textContent = fps;
-  if (playing) timer = setInterval(() => show(k + 1), 1000 / fps);
-}
-document.getElementById('play').onclick = e => { playing = !playing; e.target.textContent = playing ? 'Pause' : 'Play'; schedule(); };
-document.getElementById('next').onclick = () => show(k + 1);
-document.getElementById('back').onclick = () => show(k - 1);
-document.getElementById('speed').oninput = e => { fps = Number(e.target.value); schedule(); };
-show(0);
-schedule();
-</script>
-</body>
-</html>
-)";
-  return out;
+std::string lecture_page_html(const LecturePage& page) {
+  const bool has_media = page.media.kind != PageMedia::Kind::none;
+  const std::string hint =
+      has_media ? "Space plays or pauses; &#8592; and &#8594; step one frame; Home and End go to the ends. Click or drag "
+                  "in a plot to seek. The wheel zooms the time axis; Shift+drag, or a drag on the time axis, pans; "
+                  "a double-click shows the whole run."
+                : "Click in a plot to mark a time. The wheel zooms the time axis; Shift+drag, or a drag on the time "
+                  "axis, pans; a double-click shows the whole run.";
+  return fill(page_asset("lecture.html.in"),
+              {{"TITLE", html_escape(page.title)},
+               {"UPLOT_CSS", std::string(page_asset("uPlot.min.css"))},
+               {"PAGE_CSS", std::string(page_asset("page.css"))},
+               {"MEDIA", media_html(page.media)},
+               {"CONTROLS_CLASS", has_media ? "" : "hidden"},
+               {"HINT", hint},
+               {"FACTS", facts_rows(page.facts)},
+               {"COMMAND", html_escape(page.command_line)},
+               {"DOWNLOADS", downloads_html(page.downloads)},
+               {"DATA", data_json(page)},
+               {"UPLOT_JS", std::string(page_asset("uPlot.iife.min.js"))},
+               {"PAGE_JS", std::string(page_asset("page.js"))}});
 }
 
 void write_text_file(const std::filesystem::path& path, const std::string& text) {

@@ -4,25 +4,47 @@
 #include <utility>
 #include <vector>
 
+#include "render/page_plots.hpp"
+
 namespace vibra::render {
 
-/// Facts about a render shown under the video or player: (name, value).
+/// Facts about a run shown in the page's table: (name, value), each name once.
 using PageFacts = std::vector<std::pair<std::string, std::string>>;
 
-/// An HTML5 page with a video tag whose sources are listed in order (MP4
-/// first: Safari needs H.264; then WebM for Chrome, Firefox, Opera).
-std::string video_page_html(const std::string& title, const std::vector<std::string>& sources, int width, int height,
-                            const PageFacts& facts);
+/// What a page shows above its plots, and how media time maps to the run's.
+struct PageMedia {
+  enum class Kind { none, video, frames };
+  Kind kind = Kind::none;
+  std::vector<std::string> videos;  ///< files relative to the page, in source order (MP4 first: Safari needs H.264)
+  std::string frames_prefix;        ///< frames: name prefix relative to the page ("x_frames/frame_")
+  int digits = 4;                   ///< frames: zero-padded index width
+  int width = 0, height = 0;
+  long long frames = 0;
+  double fps = 30;
+  double frame_interval = 0;  ///< simulated time from one frame to the next
+};
 
-/// The classic frame player: steps through PNG frames `prefix` + zero-padded
-/// index (`digits` wide) + ".png", with play/pause, step, and a speed control.
-std::string frames_player_html(const std::string& title, const std::string& prefix, int digits, long long frames,
-                               double fps, int width, int height, const PageFacts& facts);
+/// A file offered for download, relative to the page.
+struct PageDownload {
+  std::string label, file;
+};
+
+/// A lecture page: the media, the run's time series as interactive plots
+/// (uPlot, compiled in: the page needs no network), its facts, the command
+/// that made it and its downloads.
+struct LecturePage {
+  std::string title;
+  PageMedia media;
+  std::vector<PagePanel> panels;
+  PageFacts facts;
+  std::string command_line;
+  std::vector<PageDownload> downloads;
+};
+
+/// The page as one self-contained HTML file (template render/page/lecture.html.in).
+std::string lecture_page_html(const LecturePage&);
 
 /// Writes text to `path` through a temporary file (nothing partial is left).
 void write_text_file(const std::filesystem::path& path, const std::string& text);
-
-/// Escapes &, <, >, " for HTML text and attributes.
-std::string html_escape(const std::string&);
 
 }  // namespace vibra::render

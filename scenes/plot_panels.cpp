@@ -1,6 +1,7 @@
 #include "scenes/plot_panels.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.hpp"
 #include "core/parameters.hpp"
@@ -59,6 +60,21 @@ std::vector<std::string> panel_order(const TrajectoryInfo& info, const std::vect
     if (panel != main || std::find(order.begin(), order.end(), main) == order.end()) order.push_back(panel);
   }
   return order;
+}
+
+std::vector<std::string> ordered_plot_panels(const TrajectoryInfo& info, const std::vector<std::string>& panels) {
+  std::vector<std::string> order = panel_order(info, panels);
+  if (std::find(panels.begin(), panels.end(), "exact") != panels.end() && !info.exact)
+    throw UsageError("this run has no exact solution to overlay: drop 'exact' from --panels (undamped always has one, "
+                     "pendulum with alpha=0 its small-angle solution, two-body a circular orbit)");
+  if (!std::isfinite(info.mesh.T)) throw UsageError("a plot needs a finite end time: give T or periods");
+  return order;
+}
+
+render::Color time_panel_color(int k) {
+  using namespace render::palette;
+  const render::Color colors[] = {blue, green, purple, orange, sky};
+  return colors[k % 5];
 }
 
 }  // namespace vibra::scenes

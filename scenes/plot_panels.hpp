@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/trajectory.hpp"
+#include "render/color.hpp"
 
 namespace vibra::scenes {
 
@@ -29,5 +30,12 @@ std::vector<std::string> default_plot_panels(const TrajectoryInfo&);
 /// (or stands in for it when that is not listed). Throws UsageError for an
 /// unknown panel (naming the closest) or an empty list.
 std::vector<std::string> panel_order(const TrajectoryInfo&, const std::vector<std::string>& panels);
+
+/// panel_order, after checking that the run can be plotted: `exact` needs an
+/// exact solution, and a plot needs a finite end time (UsageError otherwise).
+std::vector<std::string> ordered_plot_panels(const TrajectoryInfo&, const std::vector<std::string>& panels);
+
+/// The colour of the k-th time panel (vermillion is kept for exact solutions).
+render::Color time_panel_color(int k);
 
 }  // namespace vibra::scenes

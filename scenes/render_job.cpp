@@ -2,9 +2,11 @@
 
 #include <cairo.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <span>
 
 #include "core/error.hpp"
@@ -19,6 +21,9 @@
 #include "render/text.hpp"
 #include "render/video_concat.hpp"
 #include "scenes/frame_clock.hpp"
+#include "scenes/page_plot_collector.hpp"
+#include "scenes/run_caption.hpp"
+#include "scenes/run_csv_file.hpp"
 #include "scenes/scene_factory.hpp"
 
 namespace vibra::scenes {
@@ -115,29 +120,52 @@ bool already_complete(const RenderRequest& r, const Outputs& outputs, const rend
   return true;
 }
 
-void write_page(const RenderRequest& r, const Outputs& outputs, long long frames, const Parameters& p,
-                const TimeMesh& mesh) {
-  render::PageFacts facts = {{"scene", r.scene.name}, {"model", r.scene.model},
-                             {"scheme", std::string(scheme_info(mesh.scheme).name)}};
-  char number[64];
-  std::snprintf(number, sizeof number, "%.6g", mesh.dt);
-  facts.emplace_back("dt", number);
-  std::snprintf(number, sizeof number, "%.6g", mesh.T);
-  facts.emplace_back("T", number);
-  for (const auto& a : p.given_assignments()) facts.emplace_back(a.substr(0, a.find('=')), a.substr(a.find('=') + 1));
-  facts.emplace_back("frames", std::to_string(frames) + " at " + std::to_string(int(r.scene.fps)) + " fps");
-  facts.emplace_back("made by", "vibra render");
-  const std::string title = "vibra: " + r.scene.name;
-  std::string html;
+render::PageFacts page_facts(const RenderRequest& r, long long frames, const Parameters& p, const TimeMesh& mesh,
+                             double speed) {
+  auto format = [](const char* pattern, double x) {
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, x);
+    return std::string(text);
+  };
+  render::PageFacts facts = {{"scene", r.scene.name}};
+  for (auto& fact : run_facts(r.scene.model, p, mesh)) facts.push_back(std::move(fact));
+  facts.emplace_back("frames", std::to_string(frames) + " at " + format("%g", r.scene.fps) + " fps (" +
+                                   format("%.3g", frames / r.scene.fps) + " s of video)");
+  facts.emplace_back("speed", r.scene.frame_per_step ? "one frame per step"
+                                                     : format("%.4g", speed) + " time units per second of video");
+  facts.emplace_back("size", std::to_string(r.scene.width) + "x" + std::to_string(r.scene.height));
+  return facts;
+}
+
+/// A page beside its videos (or frames) and CSV, with the run's time series.
+void write_page(const RenderRequest& r, const Outputs& outputs, const FrameClock& clock, render::PageFacts facts,
+                std::vector<render::PagePanel> panels, const std::string& csv_name) {
+  render::LecturePage page;
+  page.title = "vibra: " + r.scene.name;
+  render::PageMedia& media = page.media;
+  media.width = r.scene.width + (r.scene.width & 1);  // videos are even-sized
+  media.height = r.scene.height + (r.scene.height & 1);
+  media.frames = clock.frames();
+  media.fps = r.scene.fps;
+  media.frame_interval = clock.interval();
   if (r.frames_player) {
-    html = render::frames_player_html(title, outputs.frames_prefix, outputs.digits, frames, r.scene.fps, r.scene.width,
-                                      r.scene.height, facts);
+    media.kind = render::PageMedia::Kind::frames;
+    media.frames_prefix = outputs.frames_prefix;
+    media.digits = outputs.digits;
+    media.width = r.scene.width, media.height = r.scene.height;
   } else {
-    std::vector<std::string> sources;
-    for (const auto& t : outputs.targets) sources.push_back(std::filesystem::path(t).filename().string());
-    html = render::video_page_html(title, sources, r.scene.width + (r.scene.width & 1), r.scene.height + (r.scene.height & 1), facts);
+    media.kind = render::PageMedia::Kind::video;
+    for (const auto& t : outputs.targets) {
+      const std::string name = std::filesystem::path(t).filename().string();
+      media.videos.push_back(name);
+      page.downloads.push_back({extension_of(name) == ".mp4" ? "MP4 video" : "WebM video", name});
+    }
   }
-  render::write_text_file(r.output, html);
+  page.downloads.push_back({"CSV of the run", csv_name});
+  page.panels = std::move(panels);
+  page.facts = std::move(facts);
+  page.command_line = r.command_line;
+  render::write_text_file(r.output, render::lecture_page_html(page));
 }
 
 /// Writes one picture at the request's time: PNG, SVG or PDF.
@@ -170,6 +198,8 @@ void run_render(const RenderRequest& r) {
     throw UsageError("-o " + r.output + " is one picture: add --at T to choose its time");
   const bool page = ext == ".html";
   if (r.frames_player && !page) throw UsageError("--frames-player writes a page: give -o PLAYER.html");
+  if (r.csv_every < 1) throw UsageError("--every must be at least 1: the page's CSV keeps every K-th step");
+  if (r.csv_every != 1 && !page) throw UsageError("--every thins the CSV beside a page: give -o PAGE.html, or drop --every");
   if (!still && !page && !render::is_video_path(r.output) && !render::is_frame_pattern(r.output)) {
     if (ext == ".png")
       throw UsageError("-o " + r.output + " is one picture: add --at T, or give a pattern such as frames/tmp_%04d.png");
@@ -220,11 +250,20 @@ void run_render(const RenderRequest& r) {
 
   std::unique_ptr<Scene> scene = make_scene(r.scene, pre_pass->info(), caption);
 
-  // Pre-pass: fixed view and plot ranges over the whole run, in constant memory.
+  // Pre-pass: fixed view and plot ranges over the whole run, in constant
+  // memory; for a page also its time series and its CSV.
+  std::optional<PagePlotCollector> page_plots;
+  std::optional<RunCsvFile> csv;
+  const std::filesystem::path csv_path = std::filesystem::path(r.output).replace_extension(".csv");
+  if (page) {
+    page_plots.emplace(pre_pass->info(), page_panel_names(pre_pass->info()), r.scene.name);
+    csv.emplace(csv_path, pre_pass->info().columns, r.csv_every);
+  }
   std::vector<double> row(pre_pass->width());
   do {
     pre_pass->row(row);
     scene->record(row);
+    if (page) page_plots->observe(row), csv->write(pre_pass->index(), pre_pass->done(), row);
     if ((pre_pass->index() & 0xfff) == 0) render::throw_if_stop_requested();
   } while (pre_pass->advance());
   pre_pass.reset();
@@ -276,7 +315,11 @@ void run_render(const RenderRequest& r) {
   }
   sink->finish();
   progress.finish(segment.frames());
-  if (page) write_page(r, outputs, clock.frames(), parameters, mesh);
+  if (page) {
+    csv->commit();
+    write_page(r, outputs, clock, page_facts(r, clock.frames(), parameters, mesh, speed), page_plots->take_panels(),
+               csv_path.filename().string());
+  }
   if (!r.quiet) std::fprintf(stderr, "vibra: wrote %s\n", (sink->description() + (page ? " and " + r.output : "")).c_str());
 }
 

@@ -21,6 +21,10 @@ struct RenderRequest {
   std::optional<render::FrameSegment> segment;
   /// Do nothing when the output is already complete at its final path.
   bool skip_existing = false;
+  /// With -o PAGE.html: the CSV beside the page keeps every K-th step (and the last).
+  long long csv_every = 1;
+  /// The command that asked for the render, shown on a page.
+  std::string command_line;
   bool quiet = false;
 };
 

@@ -11,13 +11,6 @@ namespace vibra::scenes {
 namespace {
 using render::palette::blue;
 
-/// Colours for the time panels in turn; vermillion is kept for the exact solution.
-render::Color panel_color(int k) {
-  using namespace render::palette;
-  const render::Color colors[] = {blue, green, purple, orange, sky};
-  return colors[k % 5];
-}
-
 /// A series fed from two columns of every row (column 0 is t).
 struct Feed {
   render::Series* series;
@@ -28,12 +21,8 @@ struct Feed {
 render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::string>& panels, int width, int height,
                                  const std::string& title) {
   const TrajectoryInfo& info = trajectory.info();
-  const std::vector<std::string> order = panel_order(info, panels);
+  const std::vector<std::string> order = ordered_plot_panels(info, panels);
   const bool with_exact = std::find(panels.begin(), panels.end(), "exact") != panels.end();
-  if (with_exact && !info.exact)
-    throw UsageError("this run has no exact solution to overlay: drop 'exact' from --panels (undamped always has one, "
-                     "pendulum with alpha=0 its small-angle solution, two-body a circular orbit)");
-  if (!std::isfinite(info.mesh.T)) throw UsageError("a plot needs a finite end time: give T or periods");
   const std::string& main = info.columns[1];
 
   render::Figure figure(width, height, title);
@@ -55,7 +44,7 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
     const int p = figure.add_panel({quantity_markup(name), "<i>t</i>", render::AxisScale::linear,
                                     render::AxisScale::linear, false, std::make_pair(0.0, T)});
     const bool overlay = with_exact && name == main;
-    feeds.push_back({&figure.add_curve(p, overlay ? "numerical" : "", {panel_color(time_panels++), 2.2}, 0, T), 0, column});
+    feeds.push_back({&figure.add_curve(p, overlay ? "numerical" : "", {time_panel_color(time_panels++), 2.2}, 0, T), 0, column});
     if (overlay) {
       // The exact solution is a function: sample it at least as finely as the
       // mesh (so its envelope holds every peak) and at least 4 times per pixel column.

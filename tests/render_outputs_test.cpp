@@ -101,19 +101,6 @@ TEST_CASE("other containers: mkv, ogv, gif, vp8 webm", "[render][video]") {
   }
 }
 
-TEST_CASE("an HTML page: MP4 first, then WebM, with the parameters", "[render][video]") {
-  ScratchDirectory dir;
-  REQUIRE(run_vibra("render" + kShort + "--set alpha=0.3 -o " + (dir / "lecture.html")).exit_code == 0);
-  const std::string page = read_file(dir / "lecture.html");
-  CHECK(fs::exists(dir / "lecture.mp4"));
-  CHECK(fs::exists(dir / "lecture.webm"));
-  CHECK(page.find("lecture.mp4") < page.find("lecture.webm"));
-  CHECK_THAT(page, Catch::Contains("video/mp4") && Catch::Contains("alpha") && Catch::Contains("0.3"));
-  REQUIRE(run_vibra("render" + kShort + "--frames-player -o " + (dir / "player.html")).exit_code == 0);
-  CHECK(fs::exists(dir / "player_frames/frame_0030.png"));
-  CHECK_THAT(read_file(dir / "player.html"), Catch::Contains("player_frames/frame_") && Catch::Contains("speed"));
-}
-
 TEST_CASE("stills: PNG, SVG and PDF at a chosen time", "[render]") {
   ScratchDirectory dir;
   for (const char* name : {"s.png", "s.svg", "s.pdf"})

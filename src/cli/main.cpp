@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <string>
 
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "core/error.hpp"
 #include "render/output_error.hpp"
@@ -12,6 +13,7 @@ int main(int argc, char** argv) {
   // each command handles quietly, rather than killing us mid-buffer.
   std::signal(SIGPIPE, SIG_IGN);
   vibra::render::install_stop_handlers();
+  vibra::cli::remember_command_line(argc, argv);
 
   CLI::App app{"vibra: vibration ODEs from Linge & Langtangen chapter 1, solved, drawn, animated"};
   app.require_subcommand(1);

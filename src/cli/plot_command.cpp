@@ -1,14 +1,20 @@
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/list_option.hpp"
 #include "cli/model_help.hpp"
 #include "core/error.hpp"
 #include "render/figure.hpp"
 #include "scenes/comparison_figure.hpp"
+#include "render/html_page.hpp"
+#include "render/stop_signal.hpp"
+#include "render/temporary_file.hpp"
+#include "scenes/page_plot_collector.hpp"
 #include "scenes/run_caption.hpp"
 #include "scenes/scene_config.hpp"
 #include "scenes/trajectory_figure.hpp"
@@ -27,7 +33,7 @@ struct PlotOptions {
 };
 
 constexpr const char* kUsage =
-    "Usage: vibra plot MODEL [--set KEY=VALUE]... [--compare KEY=V1,V2,...] -o FILE.png|svg|pdf [--panels LIST] "
+    "Usage: vibra plot MODEL [--set KEY=VALUE]... [--compare KEY=V1,V2,...] -o FILE.png|svg|pdf|html [--panels LIST] "
     "[--size WxH]\n";
 constexpr const char* kExamples =
     "\nPanels: any column of the model but t (against t; neighbours share the t axis), exact (the exact\n"
@@ -43,7 +49,8 @@ constexpr const char* kExamples =
     "  vibra plot undamped --panels u,exact --set periods=4 -o u.svg\n"
     "  vibra plot elastic-pendulum --set Theta=40 --set eps=0.1 -o path.pdf\n"
     "  vibra plot undamped --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 --set steps_per_period=40 \\\n"
-    "      --set periods=4 -o schemes.png\n";
+    "      --set periods=4 -o schemes.png\n"
+    "  vibra plot pendulum --set periods=200 -o pendulum.html   # interactive, zoomable (time panels only)\n";
 
 int figure_height(size_t panels) { return panels > 2 ? 960 : 720; }
 
@@ -60,13 +67,40 @@ void plot_comparison(const PlotOptions& o, const Parameters& parameters) {
       .write(o.output);
 }
 
+/// FIGURE.html: the run's time series as a page of linked, zoomable plots.
+void write_figure_page(const PlotOptions& o) {
+  if (!o.size.empty())
+    throw UsageError("--size sets a picture's size, and a page's plots fit the browser window: drop --size");
+  const Parameters parameters = model_settings(o.model, o.settings);
+  std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
+  const TrajectoryInfo& info = trajectory->info();
+  const std::vector<std::string> panels =
+      o.panels.empty() ? scenes::page_panel_names(info) : word_list("--panels", o.panels);
+  scenes::PagePlotCollector collector(info, panels, o.model);
+  render::require_writable_directory(std::filesystem::absolute(o.output).parent_path());
+  std::vector<double> row(trajectory->width());
+  do {
+    trajectory->row(row);
+    collector.observe(row);
+    if ((trajectory->index() & 0xffff) == 0) render::throw_if_stop_requested();
+  } while (trajectory->advance());
+  render::LecturePage page;
+  page.title = "vibra: " + o.model;
+  page.panels = collector.take_panels();
+  page.facts = scenes::run_facts(o.model, parameters, info.mesh);
+  page.command_line = command_line();
+  render::write_text_file(o.output, render::lecture_page_html(page));
+}
+
 void run_plot(const PlotOptions& o) {
   if (o.help || o.model.empty()) {
     std::printf("%s%s\n%s", kUsage, kExamples, o.model.empty() ? models_help().c_str() : model_keys_help(find_model(o.model)).c_str());
     if (!o.help) throw UsageError("vibra plot needs a MODEL, e.g. vibra plot pendulum -o pendulum.png");
     return;
   }
-  if (o.output.empty()) throw UsageError("vibra plot needs an output file: add -o FILE.png, FILE.svg or FILE.pdf");
+  if (o.output.empty())
+    throw UsageError("vibra plot needs an output file: add -o FILE.png, FILE.svg, FILE.pdf or FILE.html");
+  if (std::filesystem::path(o.output).extension() == ".html") return write_figure_page(o);
   render::require_picture_extension(o.output);
   const Parameters parameters = model_settings(o.model, o.settings);
   if (!o.compare.empty()) return plot_comparison(o, parameters);
@@ -82,13 +116,14 @@ void run_plot(const PlotOptions& o) {
 
 void add_plot_command(CLI::App& app) {
   auto o = std::make_shared<PlotOptions>();
-  CLI::App* cmd = app.add_subcommand("plot", "Draw a model's solution as a static figure (PNG, SVG or PDF)");
+  CLI::App* cmd =
+      app.add_subcommand("plot", "Draw a model's solution as a figure (PNG, SVG or PDF) or an interactive page (HTML)");
   cmd->set_help_flag();  // our own help lists the model's keys
   cmd->add_flag("-h,--help", o->help, "Usage, panels and examples; with MODEL, the model's keys");
   cmd->add_option("MODEL", o->model, "Model name (vibra solve --help lists them)");
   cmd->add_option("--set", o->settings, "KEY=VALUE, repeatable (vibra plot MODEL --help lists keys)")
       ->allow_extra_args(false);
-  cmd->add_option("-o,--output", o->output, "Picture file: .png, .svg or .pdf");
+  cmd->add_option("-o,--output", o->output, "Picture file: .png, .svg or .pdf; or .html for zoomable plots");
   cmd->add_option("--panels", o->panels, "Comma-separated panels, e.g. theta,S,D or u,exact or path");
   cmd->add_option("--compare", o->compare, "KEY=V1,V2,...: one run per value of KEY, drawn together (up to 8)")
       ->allow_extra_args(false);

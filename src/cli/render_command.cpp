@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/segment_option.hpp"
 #include "core/error.hpp"
@@ -22,6 +23,7 @@ struct RenderOptions {
   std::string size, layout, fps, speed;
   bool frame_per_step = false;
   bool frames_player = false;
+  long long every = 1;
   std::string window, window_mode;
   std::optional<double> at;
   std::string segment;
@@ -54,7 +56,8 @@ std::string scene_keys_help() {
          "  vibra render pendulum_book -o frames/tmp_%04d.png\n"
          "  vibra render --set Theta=40 --set alpha=0.8 -o lecture.webm\n"
          "  vibra render --at 3.2 -o still.svg\n"
-         "  vibra render --segment 1/3 -o lecture.mp4             # lecture.seg-1-of-3.mp4; then vibra concat\n";
+         "  vibra render --segment 1/3 -o lecture.mp4             # lecture.seg-1-of-3.mp4; then vibra concat\n"
+         "  vibra render --set periods=40 -o lecture.html        # video, zoomable plots, CSV\n";
   return out;
 }
 
@@ -80,6 +83,8 @@ void run(const RenderOptions& o) {
   request.output = o.output.empty() ? request.scene.name + ".mp4" : o.output;
   request.at = o.at;
   request.frames_player = o.frames_player;
+  request.csv_every = o.every;
+  request.command_line = command_line();
   request.quiet = o.quiet;
   request.video = o.video;
   if (!o.segment.empty()) request.segment = parse_segment_option(o.segment, [](const char* name) { return std::getenv(name); });
@@ -94,7 +99,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("SCENE", o->scene, "Built-in scene name or a TOML scene file")->capture_default_str();
   cmd->add_option("--set", o->settings, "KEY=VALUE: a scene key or a model key, repeatable");
   cmd->add_option("-o,--output", o->output,
-                  "OUT.mp4|.webm|.mkv|.ogv|.gif|.yuv, PAGE.html (MP4 + WebM + page), frames/tmp_%04d.png or a directory, or a "
+                  "OUT.mp4|.webm|.mkv|.ogv|.gif|.yuv, PAGE.html (MP4 + WebM + CSV + an interactive page), frames/tmp_%04d.png or a directory, or a "
                   "still .png/.svg/.pdf with --at (default: SCENE.mp4)");
   cmd->add_option("--size", o->size, "Frame size WxH, e.g. 1920x1080");
   cmd->add_option("--fps", o->fps, "Frames per second");
@@ -104,6 +109,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--window", o->window, "Plot window: a time or N periods (8periods); default the whole run");
   cmd->add_option("--window-mode", o->window_mode, "drawing, movement (default) or jumps");
   cmd->add_flag("--frames-player", o->frames_player, "With -o PAGE.html: PNG frames and a page that steps through them");
+  cmd->add_option("--every", o->every, "With -o PAGE.html: the CSV beside the page keeps every K-th step (and the last)");
   cmd->add_option("--at", o->at, "Render one still at this time");
   cmd->add_option("--codec", o->video.codec, "Video codec: h264, vp9, vp8, theora, gif (default from the extension)");
   cmd->add_option("--quality", o->video.quality,
