@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "cli/list_option.hpp"
+#include "app/list_option.hpp"
 #include "cli/model_help.hpp"
 #include "core/error.hpp"
 #include "render/figure.hpp"
@@ -46,7 +46,7 @@ void run_plot(const PlotOptions& o) {
   const Parameters parameters = model_settings(o.model, o.settings);
   std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
   const std::vector<std::string> panels =
-      o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : word_list("--panels", o.panels);
+      o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : app::word_list("--panels", o.panels);
   int width = 1280, height = panels.size() > 2 ? 960 : 720;
   if (!o.size.empty()) scenes::parse_size(o.size, width, height);
   const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);
