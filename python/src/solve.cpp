@@ -134,7 +134,8 @@ void bind_solve(py::module_& m) {
     py::list out;
     for (const ModelDefinition& model : all_models()) {
       py::list keys;
-      for (const KeySpec& key : model_parameters(model).specs())
+      const Parameters parameters = model_parameters(model);
+      for (const KeySpec& key : parameters.specs())
         keys.append(py::dict(py::arg("name") = key.name, py::arg("default") = key.default_value,
                              py::arg("unit") = key.unit, py::arg("meaning") = key.meaning));
       out.append(py::dict(py::arg("name") = model.name, py::arg("summary") = model.summary,

@@ -85,8 +85,8 @@ def test_figure_html_and_errors(in_tmp):
     assert "w_tilde" in repr(table)
     with pytest.raises(ValueError, match="--steps-per-period"):
         vibra.frequency(steps_per_period=[2])
-    with pytest.raises(ValueError, match="unknown scheme"):
+    with pytest.raises(ValueError, match="not a valid scheme"):
         vibra.energy(schemes="rk5")
-    with pytest.raises(ValueError):
+    with pytest.raises(OSError, match="end the file name in .png, .svg or .pdf"):
         vibra.frequency(out="figure.gif")
     assert not (in_tmp / "figure.gif").exists()

@@ -21,7 +21,7 @@ def probe(path):
 
 
 def test_a_video_decodes_and_plays_inline(in_tmp):
-    video = vibra.render(T=1, fps=10, size=(320, 180), Theta=40)
+    video = vibra.render(T=1, speed=1, fps=10, size=(320, 180), Theta=40)
     assert isinstance(video, vibra.Video)
     assert os.fspath(video) == "pendulum.mp4" and (in_tmp / "pendulum.mp4").is_file()
     stream = probe(video)
