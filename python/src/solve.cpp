@@ -6,6 +6,7 @@
 #include "bindings.hpp"
 #include "core/error.hpp"
 #include "core/models/model.hpp"
+#include "render/huge_pages.hpp"
 
 namespace vibra::python {
 
@@ -42,12 +43,14 @@ size_t fill_rows(Trajectory& trajectory, long long every, double* data, size_t c
   {
     py::gil_scoped_release release;
     long long until_check = kSignalCheckSteps;
+    long long phase = trajectory.index() % every;  // counted, not divided, per step
     while (rows < capacity) {
-      if (trajectory.index() % every == 0 || trajectory.done()) {
+      if (phase == 0 || trajectory.done()) {
         trajectory.row(row);
         for (size_t c = 0; c < width; ++c) data[c * capacity + rows] = row[c];
         ++rows;
       }
+      if (++phase == every) phase = 0;
       if (!trajectory.advance()) {
         finished = true;
         break;
@@ -76,7 +79,7 @@ py::tuple solve(const std::string& model, const std::vector<std::string>& settin
   const size_t rows = row_count(steps, every), width = trajectory->width();
   if (rows > std::numeric_limits<size_t>::max() / sizeof(double) / width)
     throw UsageError("that is too many rows: raise every or dt, or lower T");
-  std::unique_ptr<double[]> data(new double[rows * width]);  // uninitialised: each element is written once
+  TableMemory data = allocate_table(rows, width);  // uninitialised: each element is written once
   bool finished = false;
   fill_rows(*trajectory, every, data.get(), rows, finished);
   return py::make_tuple(trajectory->info().columns, owning_array(std::move(data), rows, width),
@@ -97,7 +100,7 @@ class Stream {
     if (rows < 1) throw UsageError("chunk must be >= 1");
     if (finished_) return py::none();
     const size_t width = trajectory_->width(), capacity = static_cast<size_t>(rows);
-    std::unique_ptr<double[]> data(new double[capacity * width]);
+    TableMemory data = allocate_table(capacity, width);
     const size_t written = fill_rows(*trajectory_, every_, data.get(), capacity, finished_);
     py::array_t<double> chunk = owning_array(std::move(data), capacity, width);
     if (written == capacity) return chunk;
@@ -113,9 +116,15 @@ class Stream {
 };
 }  // namespace
 
-py::array_t<double> owning_array(std::unique_ptr<double[]> data, size_t rows, size_t columns) {
+void FreeTable::operator()(double* data) const { render::free_huge_page_memory(data); }
+
+TableMemory allocate_table(size_t rows, size_t columns) {
+  return TableMemory(static_cast<double*>(render::allocate_huge_page_memory(rows * columns * sizeof(double))));
+}
+
+py::array_t<double> owning_array(TableMemory data, size_t rows, size_t columns) {
   double* pointer = data.release();
-  py::capsule owner(pointer, [](void* p) { delete[] static_cast<double*>(p); });
+  py::capsule owner(pointer, [](void* p) { render::free_huge_page_memory(p); });
   const py::ssize_t row_stride = sizeof(double), column_stride = static_cast<py::ssize_t>(rows * sizeof(double));
   return py::array_t<double>({static_cast<py::ssize_t>(rows), static_cast<py::ssize_t>(columns)},
                              {row_stride, column_stride}, pointer, owner);
