@@ -61,6 +61,16 @@ def test_ctrl_c_interrupts_solve():
         timer.cancel()
 
 
+def test_a_blow_up_in_a_later_chunk_raises_solution_error():
+    chunks = vibra.stream("undamped", scheme="forward-euler", dt=0.3, T=1e5, chunk=100)
+    first = next(chunks)
+    assert len(first) == 100
+    with pytest.raises(vibra.SolutionError) as error:
+        for _ in chunks:
+            pass
+    assert error.value.step > 100 and error.value.t == pytest.approx(0.3 * error.value.step)
+
+
 def test_bad_chunk_size():
     with pytest.raises(ValueError, match="chunk must be >= 1"):
         next(vibra.stream("undamped", chunk=0))

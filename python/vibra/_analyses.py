@@ -58,7 +58,10 @@ class Table:
 
     def _repr_html_(self):
         head = "".join(f"<th>{html.escape(name)}</th>" for name in self._columns)
-        body = "".join("<tr>" + "".join(f"<td>{html.escape(cell)}</td>" for cell in row) + "</tr>"
+        # Numbers align right, words left, as the command line prints them.
+        align = ["left" if column.dtype.kind == "U" else "right" for column in self._columns.values()]
+        body = "".join("<tr>" + "".join(f'<td style="text-align: {a}">{html.escape(cell)}</td>'
+                                        for a, cell in zip(align, row)) + "</tr>"
                        for row in self._rows())
         return (f"<table><caption style=\"caption-side: top\">{html.escape(self.heading)}</caption>"
                 f"<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>")
