@@ -23,4 +23,17 @@ void throw_if_stop_requested() {
   if (int sig = stop_signal()) throw Interrupted{sig};
 }
 
+ScopedStopHandlers::ScopedStopHandlers() {
+  sigaction(SIGINT, nullptr, &previous_[0]);
+  sigaction(SIGTERM, nullptr, &previous_[1]);
+  g_stop_signal.store(0);
+  install_stop_handlers();
+}
+
+ScopedStopHandlers::~ScopedStopHandlers() {
+  sigaction(SIGINT, &previous_[0], nullptr);
+  sigaction(SIGTERM, &previous_[1], nullptr);
+  if (const int sig = g_stop_signal.exchange(0)) std::raise(sig);
+}
+
 }  // namespace vibra::render

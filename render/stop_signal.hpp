@@ -3,6 +3,8 @@
 // render and output loops poll between frames, so they can stop cleanly,
 // remove their temporary files and exit with 128 + signal.
 
+#include <csignal>
+
 namespace vibra::render {
 
 /// Installs SIGINT and SIGTERM handlers that only record the signal.
@@ -21,5 +23,21 @@ struct Interrupted {
 
 /// Throws Interrupted if a stop was requested.
 void throw_if_stop_requested();
+
+/// The stop handlers for the lifetime of the object, in a process that has
+/// handlers of its own (the Python module inside an interpreter or a notebook
+/// kernel). On destruction the handlers found are put back, and a signal
+/// recorded meanwhile is forgotten and raised again, so the host's handler
+/// sees it (Python then raises KeyboardInterrupt).
+class ScopedStopHandlers {
+ public:
+  ScopedStopHandlers();
+  ~ScopedStopHandlers();
+  ScopedStopHandlers(const ScopedStopHandlers&) = delete;
+  ScopedStopHandlers& operator=(const ScopedStopHandlers&) = delete;
+
+ private:
+  struct sigaction previous_[2];  // SIGINT's and SIGTERM's
+};
 
 }  // namespace vibra::render

@@ -1,7 +1,6 @@
 #include "cli/analysis_output.hpp"
 
-#include "render/temporary_file.hpp"
-#include "scenes/scene_config.hpp"
+#include <cstdio>
 
 namespace vibra::cli {
 
@@ -11,30 +10,21 @@ void add_output_options(CLI::App& cmd, AnalysisOutput& o) {
   cmd.add_option("--size", o.size, "Figure size WxH in pixels")->capture_default_str();
 }
 
-void check_output(const AnalysisOutput& o) {
-  int width = 0, height = 0;
-  scenes::parse_size(o.size, width, height);
-  if (o.figure.empty()) return;
-  render::require_picture_extension(o.figure);
-  const std::filesystem::path directory = std::filesystem::path(o.figure).parent_path();
-  render::require_writable_directory(directory.empty() ? "." : directory);
-}
+void check_output(const AnalysisOutput& o) { app::check_figure_output(o.figure, o.size); }
 
-void print_table(const AnalysisOutput& o, const std::string& heading, const Table& table) {
-  if (o.csv) {
-    table.print_csv(stdout);
-  } else {
-    if (!heading.empty()) std::printf("%s\n", heading.c_str());
-    table.print_aligned(stdout);
+void show(const AnalysisOutput& o, const app::ExperimentResult& result) {
+  for (size_t i = 0; i < result.tables.size(); ++i) {
+    if (i) std::printf("\n");
+    const app::TitledTable& t = result.tables[i];
+    if (o.csv) {
+      t.table.print_csv(stdout);
+    } else {
+      if (!t.heading.empty()) std::printf("%s\n", t.heading.c_str());
+      t.table.print_aligned(stdout);
+    }
   }
   std::fflush(stdout);
-}
-
-void write_figure(const AnalysisOutput& o, const std::function<render::Figure(int width, int height)>& make_figure) {
-  if (o.figure.empty()) return;
-  int width = 0, height = 0;
-  scenes::parse_size(o.size, width, height);
-  make_figure(width, height).write(o.figure);
+  app::write_figure(result, o.figure, o.size);
 }
 
 }  // namespace vibra::cli

@@ -4,9 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/list_option.hpp"
-#include "cli/table.hpp"
-#include "render/figure.hpp"
+#include "app/experiments.hpp"
 
 namespace vibra::cli {
 
@@ -25,9 +23,8 @@ void add_output_options(CLI::App&, AnalysisOutput&);
 /// end in a refused path. Throws UsageError / OutputError.
 void check_output(const AnalysisOutput&);
 
-/// Prints the table on stdout: aligned under `heading`, or as CSV.
-void print_table(const AnalysisOutput&, const std::string& heading, const Table&);
-/// Writes the figure `make_figure(width, height)` when -o was given.
-void write_figure(const AnalysisOutput&, const std::function<render::Figure(int width, int height)>& make_figure);
+/// Prints the experiment's tables on stdout (aligned under their headings, or
+/// as CSV; a blank line between tables) and writes its figure when -o was given.
+void show(const AnalysisOutput&, const app::ExperimentResult&);
 
 }  // namespace vibra::cli

@@ -1,43 +1,27 @@
 #include "cli/analyses.hpp"
 #include "cli/analysis_output.hpp"
-#include "core/analysis/model_convergence.hpp"
-#include "core/error.hpp"
-#include "scenes/analysis_figures.hpp"
 
 namespace vibra::cli {
 
 namespace {
 struct ConvergenceOptions {
-  std::string model;
-  std::vector<std::string> settings;
-  int levels = 5;
+  app::ConvergenceOptions experiment;
   AnalysisOutput output;
 };
 
 void run(const ConvergenceOptions& o) {
-  if (o.model.empty())
-    throw UsageError("vibra analyze convergence needs a MODEL, e.g. vibra analyze convergence undamped --set scheme=rk4");
   check_output(o.output);
-  const ModelConvergence study = model_convergence(o.model, o.settings, o.levels);
-  Table table({"i", "dt", "E", "r"});
-  for (size_t i = 0; i < study.levels.size(); ++i) {
-    const ConvergenceLevel& level = study.levels[i];
-    table.add_row({static_cast<long long>(i), level.dt, level.error, level.rate});
-  }
-  const std::string what = o.model + ", scheme " + study.scheme + " (order " + std::to_string(study.order) + ")";
-  print_table(o.output, "Convergence of " + what + ": E = sqrt(dt sum (u^n - u_e(t_n))^2), r = ln(E_{i-1}/E_i) / ln 2",
-              table);
-  write_figure(o.output, [&](int w, int h) { return scenes::convergence_figure(study, "Convergence of " + what, w, h); });
+  show(o.output, app::convergence_experiment(o.experiment));
 }
 }  // namespace
 
 void add_convergence_analysis(CLI::App& analyze) {
   auto o = std::make_shared<ConvergenceOptions>();
   CLI::App* cmd = analyze.add_subcommand("convergence", "Errors and convergence rates for halved dt against the exact solution");
-  cmd->add_option("MODEL", o->model, "A model with an exact solution: undamped, or two-body with a circular orbit");
-  cmd->add_option("--set", o->settings, "KEY=VALUE model setting, repeatable; dt (or steps_per_period) is the first level's")
+  cmd->add_option("MODEL", o->experiment.model, "A model with an exact solution: undamped, or two-body with a circular orbit");
+  cmd->add_option("--set", o->experiment.settings, "KEY=VALUE model setting, repeatable; dt (or steps_per_period) is the first level's")
       ->allow_extra_args(false);
-  cmd->add_option("--levels", o->levels, "Number of dt values, each half the one before")->capture_default_str();
+  cmd->add_option("--levels", o->experiment.levels, "Number of dt values, each half the one before")->capture_default_str();
   add_output_options(*cmd, o->output);
   cmd->footer("Example:\n  vibra analyze convergence undamped --set scheme=rk4 --set T=4 --levels 6 -o convergence_rk4.png\n");
   cmd->callback([o] { run(*o); });

@@ -12,11 +12,9 @@
 #include <thread>
 #include <vector>
 
+#include "app/ascii_plot.hpp"
 #include "cli/commands.hpp"
-#include "cli/model_help.hpp"
 #include "core/error.hpp"
-#include "render/ascii_plotter.hpp"
-#include "render/decimal_format.hpp"
 #include "render/stop_signal.hpp"
 
 namespace vibra::cli {
@@ -51,74 +49,25 @@ int terminal_columns() {
 }
 
 void run(const AsciiOptions& o) {
-  const ModelDefinition& model = find_model(o.model);
-  Parameters parameters = model_settings(o.model, o.settings);
-  std::unique_ptr<Trajectory> trajectory = model.build(parameters);
-  const TrajectoryInfo& info = trajectory->info();
-
-  // The series: the main quantity (or the chosen columns), then the exact solution.
-  std::vector<int> columns;
-  for (const auto& name : o.columns.empty() ? std::vector<std::string>{info.columns[1]} : split(o.columns)) {
-    const auto it = std::find(info.columns.begin() + 1, info.columns.end(), name);
-    if (it == info.columns.end()) {
-      std::string valid;
-      for (size_t i = 1; i < info.columns.size(); ++i) valid += (valid.empty() ? "" : ", ") + info.columns[i];
-      throw UsageError("model " + o.model + " has no column '" + name + "': choose from " + valid);
-    }
-    columns.push_back(static_cast<int>(it - info.columns.begin()));
-  }
-  if (o.exact && !info.exact)
-    throw UsageError("model " + o.model + " has no exact solution with these settings: drop --exact "
-                     "(undamped has one; pendulum has the small-angle one when alpha=0)");
-  const size_t series = columns.size() + (o.exact ? 1 : 0);
-  if (o.symbols.size() < series)
-    throw UsageError("--symbols '" + o.symbols + "' has fewer symbols than the " + std::to_string(series) + " series");
-
-  std::vector<double> row(trajectory->width()), values(series);
-  auto fill_values = [&] {
-    for (size_t i = 0; i < columns.size(); ++i) values[i] = row[columns[i]];
-    if (o.exact) values[columns.size()] = info.exact(row[0]);
-  };
-
-  // The range: given, or 1.2 times the model's known amplitude, or 1.2 times
-  // the largest initial value.
-  double ymin, ymax;
-  if (o.ymin.has_value() != o.ymax.has_value()) throw UsageError("give both --ymin and --ymax, or neither");
-  if (o.ymin) {
-    ymin = *o.ymin, ymax = *o.ymax;
-  } else {
-    trajectory->row(row);
-    fill_values();
-    double largest = columns.size() == 1 ? info.amplitude_bound : 0;
-    for (double v : values) largest = std::max(largest, std::abs(v));
-    if (!(largest > 0)) largest = 1;
-    ymax = 1.2 * largest, ymin = -ymax;
-  }
-
-  int width = 0;
+  app::AsciiPlotOptions plot_options{o.model, o.settings};
   if (o.width == "auto") {
-    width = std::max(10, terminal_columns() - 8);  // room for the counter
+    plot_options.width = std::max(10, terminal_columns() - 8);  // room for the counter
   } else {
     try {
       size_t used = 0;
-      width = std::stoi(o.width, &used);
+      plot_options.width = std::stoi(o.width, &used);
       if (used != o.width.size()) throw std::invalid_argument("");
     } catch (const std::exception&) {
       throw UsageError("--width " + o.width + " is not a whole number or auto");
     }
   }
-  if (width < 1 || width > 10000) throw UsageError("--width must be 1..10000 (or auto)");
-  std::optional<render::AsciiPlotter> plotter;
-  try {
-    plotter.emplace(render::AsciiPlotterOptions{ymin, ymax, width, o.symbols});
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string(e.what()) + ": check --ymin, --ymax, --width and --symbols");
-  }
-  const std::string counter = o.counter.empty() ? (info.mesh.period > 0 ? "period" : "time") : o.counter;
-  if (counter != "period" && counter != "time" && counter != "none")
-    throw UsageError("--counter " + counter + " is not one of period, time, none");
-  if (counter == "period" && !(info.mesh.period > 0))
-    throw UsageError("model " + o.model + " has no period with these settings: use --counter time");
+  plot_options.symbols = o.symbols;
+  plot_options.ymin = o.ymin;
+  plot_options.ymax = o.ymax;
+  plot_options.exact = o.exact;
+  plot_options.counter = o.counter;
+  if (!o.columns.empty()) plot_options.columns = split(o.columns);
+  app::AsciiPlot plot(plot_options);
   if (o.rate < 0) throw UsageError("--rate must be >= 0 lines per second");
 
   // Lines go through one large buffer: a terminal sees each line at once, a
@@ -132,43 +81,30 @@ void run(const AsciiOptions& o) {
     return ok;  // false: the reader is gone (| head), so stop quietly
   };
 
-  if (series > 1) {  // a legend line: symbol and name of each series
-    std::string legend;
-    for (size_t i = 0; i < columns.size(); ++i) legend += std::string(legend.empty() ? "" : "   ") + o.symbols[i] + " " + info.columns[columns[i]];
-    if (o.exact) legend += std::string("   ") + o.symbols[columns.size()] + " " + info.exact_label;
-    legend += '\n';
+  if (!plot.legend().empty()) {
+    const std::string legend = plot.legend() + '\n';
     std::memcpy(out.data(), legend.data(), std::min(legend.size(), out.size()));
     used = std::min(legend.size(), out.size());
   }
-  const double inverse_period = info.mesh.period > 0 ? 1 / info.mesh.period : 0;
-  const bool show_counter = counter != "none", by_period = counter == "period";
   const auto pause = std::chrono::duration<double>(o.rate > 0 ? 1 / o.rate : 0);
   do {
     if (render::stop_requested()) {  // keep the complete lines already made
       flush();
       throw render::Interrupted{render::stop_signal(), "every line written is complete"};
     }
-    trajectory->row(row);
-    fill_values();
-    const std::string_view line = plotter->line(values);
-    if (used + line.size() + 400 > out.size()) {
+    const std::string_view line = plot.line();
+    if (used + line.size() + 1 > out.size()) {
       if (!flush()) return;
-      if (line.size() + 400 > out.size()) out.resize(line.size() + 400);
+      if (line.size() + 1 > out.size()) out.resize(line.size() + 1);
     }
-    char* p = out.data() + used;
-    std::memcpy(p, line.data(), line.size());
-    p += line.size();
-    if (show_counter) {
-      *p++ = ' ';
-      p = render::format_one_decimal(p, by_period ? row[0] * inverse_period : row[0]);
-    }
-    *p++ = '\n';
-    used = p - out.data();
+    std::memcpy(out.data() + used, line.data(), line.size());
+    used += line.size();
+    out[used++] = '\n';
     if (terminal || o.rate > 0) {
       if (!flush()) return;
       if (o.rate > 0) std::this_thread::sleep_for(pause);
     }
-  } while (trajectory->advance());
+  } while (plot.advance());
   flush();
 }
 }  // namespace

@@ -40,10 +40,4 @@ std::string model_keys_help(const ModelDefinition& model) {
   return out;
 }
 
-Parameters model_settings(const std::string& model_name, const std::vector<std::string>& assignments) {
-  Parameters p = model_parameters(find_model(model_name));
-  for (const auto& a : assignments) p.assign(a);
-  return p;
-}
-
 }  // namespace vibra::cli

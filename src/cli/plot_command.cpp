@@ -6,7 +6,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
-#include "cli/list_option.hpp"
+#include "app/list_option.hpp"
 #include "cli/model_help.hpp"
 #include "core/error.hpp"
 #include "render/figure.hpp"
@@ -60,7 +60,7 @@ void plot_comparison(const PlotOptions& o, const Parameters& parameters) {
   Comparison comparison(find_model(o.model), parameters, parse_comparison(o.compare[0]));
   const TrajectoryInfo& info = comparison.trajectory(0).info();
   const std::vector<std::string> panels =
-      o.panels.empty() ? scenes::default_comparison_panels(info) : word_list("--panels", o.panels);
+      o.panels.empty() ? scenes::default_comparison_panels(info) : app::word_list("--panels", o.panels);
   int width = 1280, height = figure_height(panels.size());
   if (!o.size.empty()) scenes::parse_size(o.size, width, height);
   scenes::comparison_figure(comparison, panels, width, height, scenes::comparison_caption(o.model, comparison))
@@ -75,7 +75,7 @@ void write_figure_page(const PlotOptions& o) {
   std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
   const TrajectoryInfo& info = trajectory->info();
   const std::vector<std::string> panels =
-      o.panels.empty() ? scenes::page_panel_names(info) : word_list("--panels", o.panels);
+      o.panels.empty() ? scenes::page_panel_names(info) : app::word_list("--panels", o.panels);
   scenes::PagePlotCollector collector(info, panels, o.model);
   render::require_writable_directory(std::filesystem::absolute(o.output).parent_path());
   std::vector<double> row(trajectory->width());
@@ -106,7 +106,7 @@ void run_plot(const PlotOptions& o) {
   if (!o.compare.empty()) return plot_comparison(o, parameters);
   std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
   const std::vector<std::string> panels =
-      o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : word_list("--panels", o.panels);
+      o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : app::word_list("--panels", o.panels);
   int width = 1280, height = figure_height(panels.size());
   if (!o.size.empty()) scenes::parse_size(o.size, width, height);
   const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);

@@ -12,9 +12,13 @@ struct UsageError : std::runtime_error {
 };
 
 /// The solution became non-finite or an implicit step did not converge.
-/// The message names the step and time; the CLI exits with code 2.
+/// The message names the step and time, which are also kept as numbers (for
+/// the Python module's exception); the CLI exits with code 2.
 struct SolutionError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  SolutionError(const std::string& message, long long step, double t)
+      : std::runtime_error(message), step(step), t(t) {}
+  long long step;
+  double t;
 };
 
 }  // namespace vibra

@@ -27,6 +27,8 @@ const std::vector<ModelDefinition>& all_models();
 const ModelDefinition& find_model(const std::string& name);
 /// Empty settings for a model: its keys plus the time keys.
 Parameters model_parameters(const ModelDefinition&);
+/// Settings for `model_name` with the user's KEY=VALUE assignments applied.
+Parameters model_settings(const std::string& model_name, const std::vector<std::string>& assignments);
 
 /// Throws UsageError when a model other than `undamped` is asked for centered-adjusted.
 void reject_adjusted_scheme(const TimeMesh&, const std::string& model);

@@ -31,4 +31,10 @@ Parameters model_parameters(const ModelDefinition& model) {
   return Parameters("model " + model.name, std::move(keys));
 }
 
+Parameters model_settings(const std::string& model_name, const std::vector<std::string>& assignments) {
+  Parameters p = model_parameters(find_model(model_name));
+  for (const auto& a : assignments) p.assign(a);
+  return p;
+}
+
 }  // namespace vibra

@@ -40,7 +40,8 @@ class ThetaMethod {
       if (delta.norm() <= 1e-13 * (1 + y.norm())) break;
       if (iteration == 50 || !y.allFinite())
         throw SolutionError("Newton's method did not converge at step " + std::to_string(n_ + 1) +
-                            " (t = " + std::to_string(t1) + "): reduce dt");
+                            " (t = " + std::to_string(t1) + "): reduce dt",
+                            n_ + 1, t1);
     }
     y_ = y;
     ++n_;

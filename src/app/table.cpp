@@ -1,10 +1,10 @@
-#include "cli/table.hpp"
+#include "app/table.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 
-namespace vibra::cli {
+namespace vibra::app {
 
 namespace {
 std::string aligned_text(const Table::Cell& cell) {
@@ -67,4 +67,4 @@ void Table::print_csv(std::FILE* out) const {
   }
 }
 
-}  // namespace vibra::cli
+}  // namespace vibra::app

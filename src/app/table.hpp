@@ -4,7 +4,7 @@
 #include <variant>
 #include <vector>
 
-namespace vibra::cli {
+namespace vibra::app {
 
 /// A table of results, printed with aligned columns for people or as CSV for
 /// programs. Reals show 4 significant digits when aligned and the shortest
@@ -16,6 +16,8 @@ class Table {
   explicit Table(std::vector<std::string> columns) : columns_(std::move(columns)) {}
   void add_row(std::vector<Cell> cells) { rows_.push_back(std::move(cells)); }
   size_t rows() const { return rows_.size(); }
+  const std::vector<std::string>& columns() const { return columns_; }
+  const Cell& cell(size_t row, size_t column) const { return rows_[row][column]; }
 
   void print_aligned(std::FILE*) const;
   void print_csv(std::FILE*) const;
@@ -25,4 +27,4 @@ class Table {
   std::vector<std::vector<Cell>> rows_;
 };
 
-}  // namespace vibra::cli
+}  // namespace vibra::app

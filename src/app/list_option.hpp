@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-namespace vibra::cli {
+namespace vibra::app {
 
 /// A comma-separated option value as words (spaces dropped); throws
 /// UsageError naming `option` when it is empty.
@@ -12,4 +12,4 @@ std::vector<std::string> word_list(const std::string& option, const std::string&
 /// such as 2*pi/40; throws UsageError naming `option` and the bad item.
 std::vector<double> positive_list(const std::string& option, const std::string& text);
 
-}  // namespace vibra::cli
+}  // namespace vibra::app

@@ -1,4 +1,4 @@
-#include "cli/list_option.hpp"
+#include "app/list_option.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -6,7 +6,7 @@
 #include "core/error.hpp"
 #include "core/expression.hpp"
 
-namespace vibra::cli {
+namespace vibra::app {
 
 std::vector<std::string> word_list(const std::string& option, const std::string& text) {
   std::vector<std::string> out;
@@ -29,4 +29,4 @@ std::vector<double> positive_list(const std::string& option, const std::string& 
   return out;
 }
 
-}  // namespace vibra::cli
+}  // namespace vibra::app

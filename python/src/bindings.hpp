@@ -1,0 +1,34 @@
+#pragma once
+// The parts of the module vibra._vibra, one file each. The pure-Python
+// package vibra wraps them with keyword arguments and display objects.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vibra::python {
+
+namespace py = pybind11;
+
+void bind_errors(py::module_&);
+void bind_solve(py::module_&);
+void bind_ascii(py::module_&);
+void bind_render(py::module_&);
+void bind_analyses(py::module_&);
+
+/// Uninitialised memory for a table of doubles, in huge pages when large
+/// (a 400 MB run then faults in 200 times instead of 100000).
+struct FreeTable {
+  void operator()(double* data) const;
+};
+using TableMemory = std::unique_ptr<double[], FreeTable>;
+TableMemory allocate_table(size_t rows, size_t columns);
+
+/// A (rows, columns) float64 array in column-major order that views `data`
+/// and owns it through a capsule: numpy frees it with the last view.
+py::array_t<double> owning_array(TableMemory data, size_t rows, size_t columns);
+
+}  // namespace vibra::python

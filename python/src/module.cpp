@@ -1,0 +1,10 @@
+#include "bindings.hpp"
+
+PYBIND11_MODULE(_vibra, m) {
+  m.doc() = "vibra's C++ core: solvers, scenes and analyses (use the package vibra)";
+  vibra::python::bind_errors(m);
+  vibra::python::bind_solve(m);
+  vibra::python::bind_ascii(m);
+  vibra::python::bind_render(m);
+  vibra::python::bind_analyses(m);
+}

@@ -1,0 +1,48 @@
+// vibra.render: a scene's video or one still, written through the same
+// render job as `vibra render`, with the GIL released and Ctrl-C (or a
+// notebook's stop button) stopping it cleanly.
+#include <optional>
+
+#include "bindings.hpp"
+#include "core/error.hpp"
+#include "render/stop_signal.hpp"
+#include "scenes/render_job.hpp"
+
+namespace vibra::python {
+
+namespace {
+void render(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& settings,
+            const std::string& output, std::optional<double> at, bool frame_per_step, bool frames_player,
+            const render::VideoSettings& video, bool quiet) {
+  scenes::RenderRequest request;
+  request.scene = scenes::load_scene(scene);
+  for (const auto& [key, value] : settings) scenes::apply_setting(request.scene, {key, value, "vibra.render"});
+  if (frame_per_step) request.scene.frame_per_step = true;
+  request.output = output;
+  request.at = at;
+  request.frames_player = frames_player;
+  request.quiet = quiet;
+  request.video = video;
+  py::gil_scoped_release release;
+  render::ScopedStopHandlers stop_handlers;
+  scenes::run_render(request);
+}
+}  // namespace
+
+void bind_render(py::module_& m) {
+  m.def(
+      "render",
+      [](const std::string& scene, const std::vector<std::pair<std::string, std::string>>& settings,
+         const std::string& output, std::optional<double> at, bool frame_per_step, bool frames_player,
+         const std::string& codec, const std::string& quality, int crf, const std::string& preset, int threads,
+         bool quiet) {
+        render::VideoSettings video{codec, quality, crf, preset, threads};
+        render(scene, settings, output, at, frame_per_step, frames_player, video, quiet);
+      },
+      py::arg("scene"), py::arg("settings"), py::arg("output"), py::arg("at"), py::arg("frame_per_step"),
+      py::arg("frames_player"), py::arg("codec"), py::arg("quality"), py::arg("crf"), py::arg("preset"),
+      py::arg("threads"), py::arg("quiet"));
+  m.def("scene_names", &scenes::builtin_scene_names);
+}
+
+}  // namespace vibra::python

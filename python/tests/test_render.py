@@ -1,0 +1,83 @@
+"""vibra.render: videos and stills that decode, show themselves in a
+notebook (embedded or linked) and are path-like."""
+
+import base64
+import json
+import os
+import signal
+import subprocess
+import threading
+
+import pytest
+
+import vibra
+from vibra import _media
+
+
+def probe(path):
+    out = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-show_streams", "-of", "json", os.fspath(path)],
+                         capture_output=True, text=True, check=True).stdout
+    return json.loads(out)["streams"][0]
+
+
+def test_a_video_decodes_and_plays_inline(in_tmp):
+    video = vibra.render(T=1, speed=1, fps=10, size=(320, 180), Theta=40)
+    assert isinstance(video, vibra.Video)
+    assert os.fspath(video) == "pendulum.mp4" and (in_tmp / "pendulum.mp4").is_file()
+    stream = probe(video)
+    assert (stream["codec_name"], stream["width"], stream["height"]) == ("h264", 320, 180)
+    assert int(stream["nb_read_frames"]) >= 10
+    html = video._repr_mimebundle_()["text/html"]
+    assert html.startswith("<video") and "data:video/mp4;base64," in html
+    embedded = html.split("base64,", 1)[1].split('"', 1)[0]
+    assert base64.b64decode(embedded) == (in_tmp / "pendulum.mp4").read_bytes()
+    with open(video, "rb") as f:  # path-like
+        assert f.read(12)[4:8] == b"ftyp"
+
+
+def test_a_large_video_is_linked_not_embedded(in_tmp, monkeypatch):
+    (in_tmp / "clips").mkdir()
+    video = vibra.render(out=in_tmp / "clips" / "big.webm", T=0.5, fps=10, size="320x180")
+    assert probe(video)["codec_name"] == "vp9"
+    monkeypatch.setattr(_media, "EMBED_LIMIT", 0)
+    html = video._repr_html_()
+    assert "base64" not in html and 'src="clips/big.webm"' in html and 'type="video/webm"' in html
+
+
+def test_a_still_is_an_image(in_tmp):
+    image = vibra.render(at=0.5, size=(400, 300), layout="fbd", out="still.png")
+    assert isinstance(image, vibra.Image)
+    stream = probe(image)
+    assert (stream["codec_name"], stream["width"], stream["height"]) == ("png", 400, 300)
+    bundle = image._repr_mimebundle_()
+    assert base64.b64decode(bundle["image/png"]) == (in_tmp / "still.png").read_bytes()
+    svg = vibra.render(at=0.5, out="still.svg", size="400x300")
+    assert svg._repr_mimebundle_()["image/svg+xml"].lstrip().startswith("<?xml")
+
+
+def test_default_still_name_and_scene_keys(in_tmp):
+    image = vibra.render("pendulum_book", at=0, size=(200, 150))
+    assert os.fspath(image) == "pendulum_book.png" and (in_tmp / "pendulum_book.png").is_file()
+
+
+def test_bad_input_raises_value_error_and_leaves_nothing(in_tmp, cli):
+    with pytest.raises(ValueError) as error:
+        vibra.render(layot="fbd", T=1)
+    assert "layot" in str(error.value) and "layout" in str(error.value)
+    with pytest.raises(ValueError, match="size"):
+        vibra.render(size=(320,), T=1)
+    with pytest.raises(ValueError, match="one picture"):
+        vibra.render(out="x.svg", T=1)
+    assert list(in_tmp.iterdir()) == []
+
+
+def test_ctrl_c_stops_a_render_and_keeps_no_partial_file(in_tmp):
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            vibra.render(T=2000, size=(320, 180), fps=10, quality="draft")
+    finally:
+        timer.cancel()
+    assert not (in_tmp / "pendulum.mp4").exists()
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # Python's handler is back

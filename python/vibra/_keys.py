@@ -1,0 +1,43 @@
+"""Model and scene keys given as Python keywords, turned into the KEY=VALUE
+text the command line's --set takes."""
+
+import numbers
+
+
+def value_text(key, value):
+    """`value` as --set would take it: numbers in full precision, strings
+    (expressions, angles such as "0.7rad", formulas, choices) as they are."""
+    if isinstance(value, str):
+        return value
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise ValueError(f"{key}={value!r} is not a number or a string: "
+                         f"write e.g. {key}=0.5 or {key}=\"2*pi/40\"")
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    return repr(float(value))
+
+
+def assignments(keys):
+    """["KEY=VALUE", ...] for a dict of keywords."""
+    return [f"{key}={value_text(key, value)}" for key, value in keys.items()]
+
+
+def comma_list(name, value):
+    """A comma-separated option from a list/tuple of numbers or words, a single
+    one, or a string as the command line takes it; None stays None."""
+    if value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (list, tuple)):
+        return ",".join(value_text(name, item) for item in value)
+    return value_text(name, value)
+
+
+def size_text(size):
+    """(1280, 720) or "1280x720" as "1280x720"."""
+    if isinstance(size, str):
+        return size
+    try:
+        width, height = size
+    except (TypeError, ValueError):
+        raise ValueError(f"size={size!r} is not (width, height) or \"WxH\": write e.g. size=(1280, 720)") from None
+    return f"{value_text('size', width)}x{value_text('size', height)}"

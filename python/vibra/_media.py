@@ -1,0 +1,109 @@
+"""vibra.render and what it returns: a Video or an Image that shows itself
+in a notebook cell and is path-like (open(video), os.fspath(video))."""
+
+import base64
+import html
+import os
+from pathlib import Path
+
+from . import _vibra
+from ._keys import assignments, size_text, value_text
+
+# Videos up to this size are embedded in the notebook as a data URI; larger
+# ones are linked by their path relative to the notebook's directory, so the
+# notebook file stays small.
+EMBED_LIMIT = 20 * 2**20
+
+VIDEO_TYPES = {".mp4": "video/mp4", ".webm": "video/webm", ".mkv": "video/x-matroska", ".ogv": "video/ogg"}
+
+
+class _Output(os.PathLike):
+    def __init__(self, path):
+        self.path = Path(path)
+
+    def __fspath__(self):
+        return os.fspath(self.path)
+
+    @property
+    def data(self):
+        """The file's bytes."""
+        return self.path.read_bytes()
+
+    def _relative_url(self):
+        return html.escape(os.path.relpath(self.path).replace(os.sep, "/"))
+
+    def _data_uri(self, mime):
+        return f"data:{mime};base64," + base64.b64encode(self.data).decode("ascii")
+
+    def __repr__(self):
+        return f"{type(self).__name__}({os.fspath(self.path)!r})"
+
+
+class Video(_Output):
+    """A rendered video file. In a notebook it plays in the cell: embedded up
+    to EMBED_LIMIT bytes, linked by its relative path beyond."""
+
+    def _repr_html_(self):
+        suffix = self.path.suffix.lower()
+        embed = self.path.stat().st_size <= EMBED_LIMIT
+        if suffix == ".gif":
+            src = self._data_uri("image/gif") if embed else self._relative_url()
+            return f'<img src="{src}" alt="{html.escape(self.path.name)}">'
+        mime = VIDEO_TYPES.get(suffix, "video/mp4")
+        src = self._data_uri(mime) if embed else self._relative_url()
+        return (f'<video controls loop style="max-width: 100%"><source src="{src}" type="{mime}">'
+                f'<a href="{self._relative_url()}">{html.escape(self.path.name)}</a></video>')
+
+    def _repr_mimebundle_(self, include=None, exclude=None):
+        return {"text/html": self._repr_html_(), "text/plain": repr(self)}
+
+
+class Image(_Output):
+    """A still (PNG, SVG or PDF) that shows itself in a notebook."""
+
+    def _repr_mimebundle_(self, include=None, exclude=None):
+        suffix = self.path.suffix.lower()
+        bundle = {"text/plain": repr(self)}
+        if suffix == ".png":
+            bundle["image/png"] = base64.b64encode(self.data).decode("ascii")
+        elif suffix == ".svg":
+            bundle["image/svg+xml"] = self.data.decode("utf-8")
+        else:
+            bundle["text/html"] = self._repr_html_()
+        return bundle
+
+    def _repr_html_(self):
+        suffix = self.path.suffix.lower()
+        if suffix == ".png":
+            return f'<img src="{self._data_uri("image/png")}" alt="{html.escape(self.path.name)}">'
+        return f'<a href="{self._relative_url()}">{html.escape(self.path.name)}</a>'
+
+
+def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=None, speed=None,
+           window=None, window_mode=None, frame_per_step=False, frames_player=False,
+           codec="", quality="medium", crf=-1, preset="", threads=0, quiet=True, **keys):
+    """Renders a scene as `vibra render` does: a video (out="name.mp4", .webm,
+    .mkv, .ogv or .gif; default SCENE.mp4), or with at=T one still (out=
+    "name.png", .svg or .pdf; default SCENE.png). PNG frame patterns
+    ("frames/tmp_%04d.png") and pages ("page.html") are written too and
+    returned as a Path. Other keywords are scene keys (size=(1280, 720) or
+    "1280x720", fps, layout="fbd", speed, window="8periods", ...) or keys of
+    the scene's model (Theta=40, alpha=0.8, T=20). Returns a Video or an Image.
+    """
+    settings = []
+    for key, value in (("size", size), ("fps", fps), ("layout", layout), ("speed", speed),
+                       ("window", window), ("window_mode", window_mode)):
+        if value is not None:
+            settings.append((key, size_text(value) if key == "size" else value_text(key, value)))
+    settings += [tuple(a.split("=", 1)) for a in assignments(keys)]
+    if out is None:
+        out = Path(scene).stem + (".png" if at is not None else ".mp4")
+    out = os.fspath(out)
+    _vibra.render(scene, settings, out, None if at is None else float(at), frame_per_step, frames_player,
+                  codec, quality, crf, preset, threads, quiet)
+    suffix = Path(out).suffix.lower()
+    if at is not None:
+        return Image(out)
+    if suffix in VIDEO_TYPES or suffix == ".gif":
+        return Video(out)
+    return Path(out)

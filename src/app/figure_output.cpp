@@ -1,0 +1,25 @@
+#include <filesystem>
+
+#include "app/experiments.hpp"
+#include "render/temporary_file.hpp"
+#include "scenes/scene_config.hpp"
+
+namespace vibra::app {
+
+void check_figure_output(const std::string& figure, const std::string& size) {
+  int width = 0, height = 0;
+  scenes::parse_size(size, width, height);
+  if (figure.empty()) return;
+  render::require_picture_extension(figure);
+  const std::filesystem::path directory = std::filesystem::path(figure).parent_path();
+  render::require_writable_directory(directory.empty() ? "." : directory);
+}
+
+void write_figure(const ExperimentResult& result, const std::string& figure, const std::string& size) {
+  if (figure.empty()) return;
+  int width = 0, height = 0;
+  scenes::parse_size(size, width, height);
+  result.figure(width, height).write(figure);
+}
+
+}  // namespace vibra::app
