@@ -50,7 +50,7 @@ bool EventTrajectory::advance() {
   Knot at = knots_.back();
   for (int events = 0;; ++events) {
     if (events > 10000)
-      throw SolutionError("more than 10000 events in step " + std::to_string(index_) + ": reduce dt");
+      throw SolutionError("more than 10000 events in step " + std::to_string(index_) + ": reduce dt", index_, t_target);
     Sample<1> next = take_step();
     next.t = t_target;  // every step taken here ends on the mesh point
     if (!std::isfinite(next.u[0]) || !std::isfinite(next.v[0])) report_non_finite(index_, t_target);
