@@ -4,14 +4,17 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "core/event_trajectory.hpp"
 #include "core/models/model.hpp"
 #include "core/models/sliding_box_law.hpp"
 #include "core/models/vibration_law.hpp"
 #include "core/road_profile.hpp"
 #include "render/canvas.hpp"
+#include "scenes/bouncing_ball_diagram.hpp"
 #include "scenes/bumpy_road_diagram.hpp"
 #include "scenes/diagram_registry.hpp"
 #include "scenes/oscillator_diagram.hpp"
+#include "scenes/rlc_diagram.hpp"
 #include "scenes/scene_factory.hpp"
 #include "scenes/sliding_box_diagram.hpp"
 #include "scenes/washing_machine_diagram.hpp"
@@ -137,6 +140,57 @@ TEST_CASE("bumpy road diagram: the wheel on the road, the body at L + u over the
     const auto view = d.view_at(row);
     REQUIRE(view);
     CHECK(view->center().x() == Approx(row[3]));
+  }
+}
+
+TEST_CASE("bouncing ball diagram: the ball on the ground at h, v to one scale, the weight down, impacts as the model's",
+          "[scene][diagram]") {
+  const Recorded r = record("bouncing_ball");
+  auto& d = as<BouncingBallDiagram>(r);
+  // The impacts the diagram marks are the ones the model finds.
+  auto run = find_model("bouncing-ball").build(model_parameters_of(r.config));
+  std::vector<double> impacts;
+  dynamic_cast<EventTrajectory&>(*run).on_event([&](const EventTrajectory::Event& e) { impacts.push_back(e.t); });
+  while (run->advance()) {
+  }
+  REQUIRE(d.impacts().size() == impacts.size());
+  for (size_t i = 0; i < impacts.size(); ++i) CHECK(d.impacts()[i] == Approx(impacts[i]).epsilon(1e-9));
+  double per_speed = 0, longest = 0, highest = 0;
+  for (const auto& row : r.rows) {
+    highest = std::max(highest, row[1]);
+    CHECK(d.ball_center(row).y() - d.radius() == Approx(row[1]).margin(1e-15));
+    const auto v = d.velocity_arrow(row), w = d.weight_arrow(row);
+    CHECK(v.to.x() == v.from.x());
+    CHECK(v.from.y() == d.ball_center(row).y());
+    if (std::abs(row[2]) > 0.1) {
+      if (per_speed == 0) per_speed = (v.to.y() - v.from.y()) / row[2];
+      CHECK((v.to.y() - v.from.y()) / row[2] == Approx(per_speed).epsilon(1e-12));
+    }
+    longest = std::max(longest, std::abs(v.to.y() - v.from.y()));
+    // Gravity points down, ending at the ball's bottom: on the ground, never in it.
+    CHECK(w.to.y() < w.from.y());
+    CHECK(w.to.y() == Approx(row[1]).margin(1e-12));
+  }
+  CHECK(per_speed > 0);
+  CHECK(longest == Approx(0.42 * highest).epsilon(1e-9));
+}
+
+TEST_CASE("rlc diagram: the current's arrow follows I, the plates' signs follow q", "[scene][diagram]") {
+  const Recorded r = record("rlc", {{"R", "0.3"}});
+  auto& d = as<RlcDiagram>(r);
+  double largest_I = 0, largest_q = 0;
+  for (const auto& row : r.rows) largest_I = std::max(largest_I, std::abs(row[2])), largest_q = std::max(largest_q, std::abs(row[1]));
+  for (const auto& row : r.rows) {
+    // Clockwise for I > 0: left to right along the top wire, at the loop's middle.
+    const auto a = d.current_arrow(row);
+    CHECK(a.to.y() == a.from.y());
+    CHECK(a.to.x() - a.from.x() == Approx(RlcDiagram::kLongestCurrent * row[2] / largest_I).margin(1e-12));
+    CHECK(0.5 * (a.from.x() + a.to.x()) == Approx(2));
+    // I > 0 charges the right plate (the one nearer `to`): it is positive when q > 0.
+    const auto c = d.capacitor(row);
+    CHECK(c.sign_of_to_plate == (row[1] > 0 ? 1 : row[1] < 0 ? -1 : 0));
+    CHECK(c.marks == std::lround(5 * std::abs(row[1]) / largest_q));
+    CHECK(c.plate_from[1].x() > c.plate_from[0].x());
   }
 }
 
