@@ -85,10 +85,10 @@ void draw_capacitor(Canvas& canvas, const WorldView& view, const Point& from, co
     draw_line(canvas, view, g.plate_from[i], g.plate_to[i], {sign == 0 ? stroke.color : tint.with_alpha(0.4 + 0.6 * strength),
                                                              2.2 * stroke.width});
     // The signs sit outside the gap beside the plate, in pairs off the wire.
-    const double mark = 0.06 * plate;
+    const double mark = 0.05 * plate;
     const Stroke ink{tint, 1.3 * stroke.width};
     for (int k = 0; k < g.marks; ++k) {
-      const double level = (k % 2 == 0 ? 1 : -1) * (0.15 + 0.14 * (k / 2)) * plate;
+      const double level = (k % 2 == 0 ? 1 : -1) * (0.12 + 0.15 * (k / 2)) * plate;
       const Point p = 0.5 * (g.plate_from[i] + g.plate_to[i]) + level * across + (i == 0 ? -1.0 : 1.0) * 0.6 * gap * along;
       draw_line(canvas, view, p - mark * along, p + mark * along, ink);
       if (sign > 0) draw_line(canvas, view, p - mark * across, p + mark * across, ink);
