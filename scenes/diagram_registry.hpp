@@ -47,5 +47,6 @@ DiagramKind sliding_box_diagram_kind();
 DiagramKind bumpy_road_diagram_kind();
 DiagramKind bouncing_ball_diagram_kind();
 DiagramKind rlc_diagram_kind();
+DiagramKind elastic_pendulum_diagram_kind();
 
 }  // namespace vibra::scenes

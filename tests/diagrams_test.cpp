@@ -13,6 +13,7 @@
 #include "scenes/bouncing_ball_diagram.hpp"
 #include "scenes/bumpy_road_diagram.hpp"
 #include "scenes/diagram_registry.hpp"
+#include "scenes/elastic_pendulum_diagram.hpp"
 #include "scenes/oscillator_diagram.hpp"
 #include "scenes/rlc_diagram.hpp"
 #include "scenes/scene_factory.hpp"
@@ -192,6 +193,30 @@ TEST_CASE("rlc diagram: the current's arrow follows I, the plates' signs follow 
     CHECK(c.marks == std::lround(5 * std::abs(row[1]) / largest_q));
     CHECK(c.plate_from[1].x() > c.plate_from[0].x());
   }
+}
+
+TEST_CASE("elastic pendulum diagram: mg, the wire's force (L - beta)/(1 - beta) toward the pivot and the drag, one scale",
+          "[scene][diagram]") {
+  const double beta = 0.9, gamma = 0.05;
+  const Recorded r = record("elastic_pendulum", {{"gamma", "0.05"}});
+  auto& d = as<ElasticPendulumDiagram>(r);
+  const double per = d.force_scale().per_force();
+  REQUIRE(per > 0);
+  for (const auto& row : r.rows) {
+    const Point p(row[1], row[2]), v(row[3], row[4]), pivot(0, 1);
+    const double L = (p - pivot).norm();
+    const auto a = d.force_arrows(row);
+    CHECK((a[0].to - a[0].from - Point(0, -per)).norm() < 1e-12);
+    const Point wire = per * (L - beta) / (1 - beta) * (pivot - p) / L;
+    CHECK((a[1].to - a[1].from - wire).norm() < 1e-12);
+    const Point drag = -per * gamma / (beta * beta) * v.norm() * v;
+    CHECK((a[2].to - a[2].from - drag).norm() < 1e-12);
+    for (const auto& arrow : a) CHECK((arrow.from - p).norm() == 0);
+  }
+  // The trail passes through every row's position within its spacing.
+  const auto& trail = d.trail().points();
+  REQUIRE(trail.size() > 10);
+  CHECK(trail.front().p.x() == Approx(r.rows.front()[1]));
 }
 
 TEST_CASE("nothing is clipped: over the run no drawing touches the frame's edge, small or large", "[scene][diagram]") {
