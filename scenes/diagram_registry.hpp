@@ -48,5 +48,6 @@ DiagramKind bumpy_road_diagram_kind();
 DiagramKind bouncing_ball_diagram_kind();
 DiagramKind rlc_diagram_kind();
 DiagramKind elastic_pendulum_diagram_kind();
+DiagramKind orbit_diagram_kind();
 
 }  // namespace vibra::scenes

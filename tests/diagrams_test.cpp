@@ -14,6 +14,7 @@
 #include "scenes/bumpy_road_diagram.hpp"
 #include "scenes/diagram_registry.hpp"
 #include "scenes/elastic_pendulum_diagram.hpp"
+#include "scenes/orbit_diagram.hpp"
 #include "scenes/oscillator_diagram.hpp"
 #include "scenes/rlc_diagram.hpp"
 #include "scenes/scene_factory.hpp"
@@ -217,6 +218,50 @@ TEST_CASE("elastic pendulum diagram: mg, the wire's force (L - beta)/(1 - beta) 
   const auto& trail = d.trail().points();
   REQUIRE(trail.size() > 10);
   CHECK(trail.front().p.x() == Approx(r.rows.front()[1]));
+}
+
+TEST_CASE("orbit diagram: gravity -x/|x|^3 and v to their scales; the circular orbit keeps radius 1",
+          "[scene][diagram]") {
+  const Recorded r = record("orbit");
+  auto& d = as<OrbitDiagram>(r);
+  CHECK(d.circle_radius() == 1);
+  Point gravity_per(0, 0), speed_per(0, 0);
+  for (const auto& row : r.rows) {
+    const Point x(row[1], row[2]), v(row[3], row[4]);
+    const auto a = d.arrows(row);
+    const Point g = -x / std::pow(x.norm(), 3);
+    // Parallel to the force and the velocity, with one length per unit over the run.
+    CHECK(std::abs((a[0].to - a[0].from).x() * g.y() - (a[0].to - a[0].from).y() * g.x()) < 1e-12);
+    CHECK((a[0].to - a[0].from).dot(g) > 0);
+    CHECK((a[0].to - a[0].from).norm() / g.norm() == Approx(0.45 / 1).epsilon(1e-6));
+    CHECK((a[1].to - a[1].from).norm() / v.norm() == Approx(0.45).epsilon(1e-6));
+    CHECK((a[1].to - a[1].from).dot(v) > 0);
+  }
+  for (const auto& p : d.trail().points()) CHECK(p.p.norm() == Approx(1).epsilon(1e-7));
+}
+
+TEST_CASE("orbit diagram: Euler-Cromer's drift shows in the trail after 100 orbits, PEFRL's does not",
+          "[scene][diagram]") {
+  auto drift = [](const std::string& scheme) {
+    const Recorded r = record("orbit", {{"scheme", scheme}, {"periods", "100"}, {"steps_per_period", "200"}});
+    double worst = 0;
+    for (const auto& p : as<OrbitDiagram>(r).trail().points()) worst = std::max(worst, std::abs(p.p.norm() - 1));
+    return worst;
+  };
+  const double euler_cromer = drift("euler-cromer"), pefrl = drift("pefrl");
+  CHECK(euler_cromer > 1e-2);
+  CHECK(pefrl < 1e-6);
+}
+
+TEST_CASE("orbit diagram: --window keeps the last orbits of the trail", "[scene][diagram]") {
+  const Recorded r = record("orbit", {{"window", "1periods"}, {"periods", "3"}});
+  auto& d = as<OrbitDiagram>(r);
+  CHECK(d.window() == Approx(2 * M_PI));
+  CHECK(as<OrbitDiagram>(record("orbit")).window() == 0);
+  // One orbit's worth of trail at the end: the points of the last 2 pi.
+  const auto last = d.trail().between(6 * M_PI - 2 * M_PI, 6 * M_PI);
+  CHECK(last.size() > 100);
+  CHECK(last.size() < d.trail().points().size() / 2);
 }
 
 TEST_CASE("nothing is clipped: over the run no drawing touches the frame's edge, small or large", "[scene][diagram]") {
