@@ -9,7 +9,9 @@ namespace vibra::scenes {
 const std::vector<DiagramKind>& all_diagrams() {
   static const std::vector<DiagramKind> kinds = {pendulum_diagram_kind(),       oscillator_diagram_kind(),
                                                  washing_machine_diagram_kind(), sliding_box_diagram_kind(),
-                                                 bumpy_road_diagram_kind()};
+                                                 bumpy_road_diagram_kind(),    bouncing_ball_diagram_kind(),
+                                                 rlc_diagram_kind(),              elastic_pendulum_diagram_kind(),
+                                                 orbit_diagram_kind()};
   return kinds;
 }
 

@@ -45,5 +45,9 @@ DiagramKind oscillator_diagram_kind();
 DiagramKind washing_machine_diagram_kind();
 DiagramKind sliding_box_diagram_kind();
 DiagramKind bumpy_road_diagram_kind();
+DiagramKind bouncing_ball_diagram_kind();
+DiagramKind rlc_diagram_kind();
+DiagramKind elastic_pendulum_diagram_kind();
+DiagramKind orbit_diagram_kind();
 
 }  // namespace vibra::scenes

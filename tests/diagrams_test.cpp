@@ -4,14 +4,19 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "core/event_trajectory.hpp"
 #include "core/models/model.hpp"
 #include "core/models/sliding_box_law.hpp"
 #include "core/models/vibration_law.hpp"
 #include "core/road_profile.hpp"
 #include "render/canvas.hpp"
+#include "scenes/bouncing_ball_diagram.hpp"
 #include "scenes/bumpy_road_diagram.hpp"
 #include "scenes/diagram_registry.hpp"
+#include "scenes/elastic_pendulum_diagram.hpp"
+#include "scenes/orbit_diagram.hpp"
 #include "scenes/oscillator_diagram.hpp"
+#include "scenes/rlc_diagram.hpp"
 #include "scenes/scene_factory.hpp"
 #include "scenes/sliding_box_diagram.hpp"
 #include "scenes/washing_machine_diagram.hpp"
@@ -138,6 +143,125 @@ TEST_CASE("bumpy road diagram: the wheel on the road, the body at L + u over the
     REQUIRE(view);
     CHECK(view->center().x() == Approx(row[3]));
   }
+}
+
+TEST_CASE("bouncing ball diagram: the ball on the ground at h, v to one scale, the weight down, impacts as the model's",
+          "[scene][diagram]") {
+  const Recorded r = record("bouncing_ball");
+  auto& d = as<BouncingBallDiagram>(r);
+  // The impacts the diagram marks are the ones the model finds.
+  auto run = find_model("bouncing-ball").build(model_parameters_of(r.config));
+  std::vector<double> impacts;
+  dynamic_cast<EventTrajectory&>(*run).on_event([&](const EventTrajectory::Event& e) { impacts.push_back(e.t); });
+  while (run->advance()) {
+  }
+  REQUIRE(d.impacts().size() == impacts.size());
+  for (size_t i = 0; i < impacts.size(); ++i) CHECK(d.impacts()[i] == Approx(impacts[i]).epsilon(1e-9));
+  double per_speed = 0, longest = 0, highest = 0;
+  for (const auto& row : r.rows) {
+    highest = std::max(highest, row[1]);
+    CHECK(d.ball_center(row).y() - d.radius() == Approx(row[1]).margin(1e-15));
+    const auto v = d.velocity_arrow(row), w = d.weight_arrow(row);
+    CHECK(v.to.x() == v.from.x());
+    CHECK(v.from.y() == d.ball_center(row).y());
+    if (std::abs(row[2]) > 0.1) {
+      if (per_speed == 0) per_speed = (v.to.y() - v.from.y()) / row[2];
+      CHECK((v.to.y() - v.from.y()) / row[2] == Approx(per_speed).epsilon(1e-12));
+    }
+    longest = std::max(longest, std::abs(v.to.y() - v.from.y()));
+    // Gravity points down, ending at the ball's bottom: on the ground, never in it.
+    CHECK(w.to.y() < w.from.y());
+    CHECK(w.to.y() == Approx(row[1]).margin(1e-12));
+  }
+  CHECK(per_speed > 0);
+  CHECK(longest == Approx(0.42 * highest).epsilon(1e-9));
+}
+
+TEST_CASE("rlc diagram: the current's arrow follows I, the plates' signs follow q", "[scene][diagram]") {
+  const Recorded r = record("rlc", {{"R", "0.3"}});
+  auto& d = as<RlcDiagram>(r);
+  double largest_I = 0, largest_q = 0;
+  for (const auto& row : r.rows) largest_I = std::max(largest_I, std::abs(row[2])), largest_q = std::max(largest_q, std::abs(row[1]));
+  for (const auto& row : r.rows) {
+    // Clockwise for I > 0: left to right along the top wire, at the loop's middle.
+    const auto a = d.current_arrow(row);
+    CHECK(a.to.y() == a.from.y());
+    CHECK(a.to.x() - a.from.x() == Approx(RlcDiagram::kLongestCurrent * row[2] / largest_I).margin(1e-12));
+    CHECK(0.5 * (a.from.x() + a.to.x()) == Approx(2));
+    // I > 0 charges the right plate (the one nearer `to`): it is positive when q > 0.
+    const auto c = d.capacitor(row);
+    CHECK(c.sign_of_to_plate == (row[1] > 0 ? 1 : row[1] < 0 ? -1 : 0));
+    CHECK(c.marks == std::lround(5 * std::abs(row[1]) / largest_q));
+    CHECK(c.plate_from[1].x() > c.plate_from[0].x());
+  }
+}
+
+TEST_CASE("elastic pendulum diagram: mg, the wire's force (L - beta)/(1 - beta) toward the pivot and the drag, one scale",
+          "[scene][diagram]") {
+  const double beta = 0.9, gamma = 0.05;
+  const Recorded r = record("elastic_pendulum", {{"gamma", "0.05"}});
+  auto& d = as<ElasticPendulumDiagram>(r);
+  const double per = d.force_scale().per_force();
+  REQUIRE(per > 0);
+  for (const auto& row : r.rows) {
+    const Point p(row[1], row[2]), v(row[3], row[4]), pivot(0, 1);
+    const double L = (p - pivot).norm();
+    const auto a = d.force_arrows(row);
+    CHECK((a[0].to - a[0].from - Point(0, -per)).norm() < 1e-12);
+    const Point wire = per * (L - beta) / (1 - beta) * (pivot - p) / L;
+    CHECK((a[1].to - a[1].from - wire).norm() < 1e-12);
+    const Point drag = -per * gamma / (beta * beta) * v.norm() * v;
+    CHECK((a[2].to - a[2].from - drag).norm() < 1e-12);
+    for (const auto& arrow : a) CHECK((arrow.from - p).norm() == 0);
+  }
+  // The trail passes through every row's position within its spacing.
+  const auto& trail = d.trail().points();
+  REQUIRE(trail.size() > 10);
+  CHECK(trail.front().p.x() == Approx(r.rows.front()[1]));
+}
+
+TEST_CASE("orbit diagram: gravity -x/|x|^3 and v to their scales; the circular orbit keeps radius 1",
+          "[scene][diagram]") {
+  const Recorded r = record("orbit");
+  auto& d = as<OrbitDiagram>(r);
+  CHECK(d.circle_radius() == 1);
+  Point gravity_per(0, 0), speed_per(0, 0);
+  for (const auto& row : r.rows) {
+    const Point x(row[1], row[2]), v(row[3], row[4]);
+    const auto a = d.arrows(row);
+    const Point g = -x / std::pow(x.norm(), 3);
+    // Parallel to the force and the velocity, with one length per unit over the run.
+    CHECK(std::abs((a[0].to - a[0].from).x() * g.y() - (a[0].to - a[0].from).y() * g.x()) < 1e-12);
+    CHECK((a[0].to - a[0].from).dot(g) > 0);
+    CHECK((a[0].to - a[0].from).norm() / g.norm() == Approx(0.45 / 1).epsilon(1e-6));
+    CHECK((a[1].to - a[1].from).norm() / v.norm() == Approx(0.45).epsilon(1e-6));
+    CHECK((a[1].to - a[1].from).dot(v) > 0);
+  }
+  for (const auto& p : d.trail().points()) CHECK(p.p.norm() == Approx(1).epsilon(1e-7));
+}
+
+TEST_CASE("orbit diagram: Euler-Cromer's drift shows in the trail after 100 orbits, PEFRL's does not",
+          "[scene][diagram]") {
+  auto drift = [](const std::string& scheme) {
+    const Recorded r = record("orbit", {{"scheme", scheme}, {"periods", "100"}, {"steps_per_period", "200"}});
+    double worst = 0;
+    for (const auto& p : as<OrbitDiagram>(r).trail().points()) worst = std::max(worst, std::abs(p.p.norm() - 1));
+    return worst;
+  };
+  const double euler_cromer = drift("euler-cromer"), pefrl = drift("pefrl");
+  CHECK(euler_cromer > 1e-2);
+  CHECK(pefrl < 1e-6);
+}
+
+TEST_CASE("orbit diagram: --window keeps the last orbits of the trail", "[scene][diagram]") {
+  const Recorded r = record("orbit", {{"window", "1periods"}, {"periods", "3"}});
+  auto& d = as<OrbitDiagram>(r);
+  CHECK(d.window() == Approx(2 * M_PI));
+  CHECK(as<OrbitDiagram>(record("orbit")).window() == 0);
+  // One orbit's worth of trail at the end: the points of the last 2 pi.
+  const auto last = d.trail().between(6 * M_PI - 2 * M_PI, 6 * M_PI);
+  CHECK(last.size() > 100);
+  CHECK(last.size() < d.trail().points().size() / 2);
 }
 
 TEST_CASE("nothing is clipped: over the run no drawing touches the frame's edge, small or large", "[scene][diagram]") {

@@ -90,4 +90,10 @@ struct ResonanceOptions {
 /// Exercise 1.22: steady amplitudes of u'' + beta u' + u = sin(gamma t) against the formula.
 ExperimentResult resonance_experiment(const ResonanceOptions&);
 
+struct BouncesOptions {
+  std::vector<std::string> settings;  ///< bouncing-ball KEY=VALUE
+};
+/// Exercise 1.24: every impact of the bouncing ball, located inside the step.
+ExperimentResult bounces_experiment(const BouncesOptions&);
+
 }  // namespace vibra::app

@@ -12,5 +12,6 @@ void add_amplitude_analysis(CLI::App& analyze);
 void add_orbit_analysis(CLI::App& analyze);
 void add_resonance_analysis(CLI::App& analyze);
 void add_period_analysis(CLI::App& analyze);
+void add_bounces_analysis(CLI::App& analyze);
 
 }  // namespace vibra::cli

@@ -17,9 +17,11 @@ void add_analyze_command(CLI::App& app) {
   add_orbit_analysis(*cmd);
   add_resonance_analysis(*cmd);
   add_period_analysis(*cmd);
+  add_bounces_analysis(*cmd);
   // Our own check instead of require_subcommand, so a misspelt experiment is named and corrected.
   auto unknown = std::make_shared<std::string>();
-  cmd->add_option("EXPERIMENT", *unknown, "convergence, energy, empirical, frequency, amplitude, orbit, period or resonance");
+  cmd->add_option("EXPERIMENT", *unknown,
+                  "convergence, energy, empirical, frequency, amplitude, orbit, resonance, period or bounces");
   cmd->callback([cmd, unknown] {
     if (!cmd->get_subcommands().empty()) return;
     std::vector<std::string> names;
@@ -42,6 +44,7 @@ void add_analyze_command(CLI::App& app) {
       "  vibra analyze amplitude -o amplitudes.png\n"
       "  vibra analyze orbit --scheme pefrl --orbits 100\n"
       "  vibra analyze period pendulum --set alpha=0 --set Theta=60 --csv\n"
+      "  vibra analyze bounces --set C_R=0.5 --csv\n"
       "vibra analyze EXPERIMENT --help shows an experiment's options.\n");
 }
 

@@ -94,6 +94,7 @@ bool EventTrajectory::advance() {
     const double remaining = t_target - t_event;
     if (rest_ || remaining <= 1e-12 * dt) {
       knots_.push_back(knot({t_target, after.u, after.v}));
+      stepper_dt_ = 0;  // the stepper still follows the old segment past the event: restart it below
       break;
     }
     restart(after, remaining);

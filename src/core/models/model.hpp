@@ -42,6 +42,8 @@ ModelDefinition two_body_model();
 ModelDefinition resonance_model();
 ModelDefinition sliding_box_model();
 ModelDefinition bumpy_road_model();
+ModelDefinition bouncing_ball_model();
+ModelDefinition rlc_model();
 
 class RoadProfile;
 /// The road a bumpy-road run drives on (its keys road, A, wavelength, seed,

@@ -8,7 +8,8 @@ const std::vector<ModelDefinition>& all_models() {
                                                       pendulum_model(),          physical_pendulum_model(),
                                                       elastic_pendulum_model(), two_body_model(),
                                                       resonance_model(),        sliding_box_model(),
-                                                      bumpy_road_model()};
+                                                      bumpy_road_model(),         bouncing_ball_model(),
+                                                      rlc_model()};
   return models;
 }
 

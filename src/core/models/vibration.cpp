@@ -31,20 +31,6 @@ double reach(const std::function<double(double)>& potential, double u0, double E
   return largest;
 }
 
-/// The exact solution of the linear spring without forcing (docs/models.md):
-/// undamped, or underdamped linear damping, zeta = b / (2 sqrt(k m)) < 1.
-std::function<double(double)> free_linear_solution(const VibrationLaw& law, double I, double V) {
-  if (!law.linear_spring() || law.F || !(law.k > 0)) return {};
-  const double w = std::sqrt(law.k / law.mass);
-  if (law.damping == Damping::none) return [=](double t) { return I * std::cos(w * t) + V / w * std::sin(w * t); };
-  if (law.damping != Damping::linear) return {};
-  const double zeta = law.b / (2 * std::sqrt(law.k * law.mass));
-  if (zeta >= 1) return {};
-  const double wd = w * std::sqrt(1 - zeta * zeta);
-  return [=](double t) {
-    return std::exp(-zeta * w * t) * (I * std::cos(wd * t) + (V + zeta * w * I) / wd * std::sin(wd * t));
-  };
-}
 }  // namespace
 
 // m u'' + f(u') + s(u) = F(t) (1.71): a linear spring k u, or s and F typed as formulas.
@@ -77,16 +63,7 @@ ModelDefinition vibration_model() {
     info.mesh = resolve_time_mesh(p, w > 0 ? 2 * M_PI / w : 0, w);
     reject_adjusted_scheme(info.mesh, name);
     if ((info.exact = free_linear_solution(law, I, V))) info.exact_label = "exact";
-    std::shared_ptr<SecondOrderSystem<1>> system;
-    if (law.linear_spring() && !law.F) {
-      system = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::spring(law.k / law.mass));
-    } else {
-      system = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::general([law](const Vec<1>& u, double t) {
-        return Vec<1>((law.external(t) - law.spring(u[0])) / law.mass);
-      }));
-    }
-    system->damping = law.damping;
-    system->damping_per_mass = law.b / law.mass;
+    auto system = law.system();
     info.damped = law.damping != Damping::none;
     // 0.5 m v^2 + P(u), P(u) = integral_0^u s: exact for the linear spring,
     // by quadrature for any formula s (exact in one pass for a polynomial).

@@ -18,9 +18,39 @@ VibrationLaw VibrationLaw::from(const Parameters& p) {
     law.k = p.number("k");
     if (!std::isfinite(law.k)) throw UsageError("k=" + p.text("k") + " must be a finite number");
   }
-  const Expression F = p.formula("F");
-  if (F.text().find_first_not_of(" 0.") != std::string::npos) law.F = F;
+  law.F = unless_zero(p.formula("F"));
   return law;
+}
+
+std::optional<Expression> VibrationLaw::unless_zero(const Expression& F) {
+  if (F.text().find_first_not_of(" 0.") == std::string::npos) return std::nullopt;
+  return F;
+}
+
+std::shared_ptr<SecondOrderSystem<1>> VibrationLaw::system() const {
+  std::shared_ptr<SecondOrderSystem<1>> out;
+  if (linear_spring() && !F) {
+    out = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::spring(k / mass));
+  } else {
+    out = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::general(
+        [law = *this](const Vec<1>& u, double t) { return Vec<1>((law.external(t) - law.spring(u[0])) / law.mass); }));
+  }
+  out->damping = damping;
+  out->damping_per_mass = b / mass;
+  return out;
+}
+
+std::function<double(double)> free_linear_solution(const VibrationLaw& law, double I, double V) {
+  if (!law.linear_spring() || law.F || !(law.k > 0)) return {};
+  const double w = std::sqrt(law.k / law.mass);
+  if (law.damping == Damping::none) return [=](double t) { return I * std::cos(w * t) + V / w * std::sin(w * t); };
+  if (law.damping != Damping::linear) return {};
+  const double zeta = law.b / (2 * std::sqrt(law.k * law.mass));
+  if (zeta >= 1) return {};
+  const double wd = w * std::sqrt(1 - zeta * zeta);
+  return [=](double t) {
+    return std::exp(-zeta * w * t) * (I * std::cos(wd * t) + (V + zeta * w * I) / wd * std::sin(wd * t));
+  };
 }
 
 double VibrationLaw::small_oscillation_stiffness() const {

@@ -1,5 +1,7 @@
 #pragma once
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <optional>
 
 #include "core/expression.hpp"
@@ -37,6 +39,15 @@ struct VibrationLaw {
   double small_oscillation_stiffness() const;
   /// The potential energy P(u) = integral of s from 0 to u (exact for the linear spring).
   bool linear_spring() const { return !s; }
+  /// The system u'' = (F(t) - s(u))/m - f(u')/m that the schemes step.
+  std::shared_ptr<SecondOrderSystem<1>> system() const;
+  /// A forcing formula, or none when it is written as 0.
+  static std::optional<Expression> unless_zero(const Expression&);
 };
+
+/// The exact solution of the linear spring without forcing (docs/models.md):
+/// undamped, or underdamped linear damping, zeta = b / (2 sqrt(k m)) < 1;
+/// empty otherwise.
+std::function<double(double)> free_linear_solution(const VibrationLaw&, double I, double V);
 
 }  // namespace vibra

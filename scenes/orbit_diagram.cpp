@@ -1,0 +1,90 @@
+#include "scenes/orbit_diagram.hpp"
+
+#include "render/annotations.hpp"
+#include "render/shapes.hpp"
+#include "scenes/diagram_registry.hpp"
+#include "scenes/scene_config.hpp"
+
+namespace vibra::scenes {
+
+namespace {
+constexpr double kStar = 0.09, kPlanet = 0.045, kLongestArrow = 0.45;
+Point position(std::span<const double> row) { return Point(row[1], row[2]); }
+Point velocity(std::span<const double> row) { return Point(row[3], row[4]); }
+Point gravity(std::span<const double> row) {
+  const Point x = position(row);
+  const double r = x.norm();
+  return -x / (r * r * r);
+}
+}  // namespace
+
+OrbitDiagram::OrbitDiagram(double window, double t_end, SceneColors colors)
+    : window_(window), t_end_(t_end), colors_(colors) {
+  bodies_.setEmpty();
+}
+
+std::vector<PanelSpec> OrbitDiagram::panels() const {
+  // x and y; the distance's drift r - r(0) is left out while the axis cannot
+  // label a range of 1e-9 (PEFRL's) legibly.
+  return {{"<i>x</i>", {{"", colors_.bob, [](std::span<const double> r) { return r[1]; }}}},
+          {"<i>y</i>", {{"", colors_.bob, [](std::span<const double> r) { return r[2]; }}}}};
+}
+
+void OrbitDiagram::record(std::span<const double> row, WorldBox&) {
+  if (first_) {
+    // Circular when the speed is the circular one, 1/sqrt(r), across the radius.
+    const Point x = position(row), v = velocity(row);
+    const double r = x.norm();
+    if (r > 0 && std::abs(x.dot(v)) < 1e-12 * r * v.norm() && std::abs(v.squaredNorm() * r - 1) < 1e-12)
+      circle_radius_ = r;
+    first_ = false;
+  }
+  bodies_.extend(position(row));
+  trail_.add(row[0], position(row));
+  gravity_.see(gravity(row).norm());
+  speed_.see(velocity(row).norm());
+}
+
+void OrbitDiagram::finish_recording(WorldBox& world) {
+  gravity_.set_longest(kLongestArrow);
+  speed_.set_longest(kLongestArrow);
+  const Point reach(kLongestArrow + 0.12, kLongestArrow + 0.12);
+  if (!bodies_.isEmpty()) world.extend(bodies_.min() - reach), world.extend(bodies_.max() + reach);
+  world.extend(Point(-kStar - 0.1, -kStar - 0.1));
+  world.extend(Point(kStar + 0.1, kStar + 0.1));
+  world.extend(Point(-circle_radius_, -circle_radius_));
+  world.extend(Point(circle_radius_, circle_radius_));
+}
+
+std::array<OrbitDiagram::Arrow, 2> OrbitDiagram::arrows(std::span<const double> row) const {
+  const Point x = position(row);
+  return {Arrow{x, x + gravity_.per_force() * gravity(row)}, Arrow{x, x + speed_.per_force() * velocity(row)}};
+}
+
+void OrbitDiagram::draw_static(render::Canvas& canvas, const render::WorldView& view) const {
+  if (circle_radius_ > 0)
+    render::draw_arc(canvas, view, Point::Zero(), circle_radius_, 0, 2 * M_PI, {colors_.wire.with_alpha(0.55), 1.4, true});
+  render::draw_circle(canvas, view, Point::Zero(), kStar, render::palette::orange, {colors_.wire, 1.4});
+}
+
+void OrbitDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
+  // Without a window the whole run's path stays, fading only slightly.
+  trail_.draw(canvas, view, row[0], window_ > 0 ? window_ : 2 * t_end_ + 1, colors_.bob, 1.6);
+  const Point x = position(row);
+  render::draw_circle(canvas, view, x, kPlanet, colors_.bob, {colors_.wire, 1.4});
+  const auto a = arrows(row);
+  render::draw_force_arrow(canvas, view, {a[0].from, a[0].to, colors_.gravity, "<i>F</i>"}, colors_.background);
+  render::draw_force_arrow(canvas, view, {a[1].from, a[1].to, colors_.wire_force, "<i>v</i>"}, colors_.background);
+}
+
+DiagramKind orbit_diagram_kind() {
+  return {"orbit",
+          "planet around a star: its trail (the last orbits with --window), the exact circle dashed, arrows for "
+          "gravity and velocity (section 1.12.10)",
+          {"two-body"}, [](const DiagramInput& in) {
+            return std::make_unique<OrbitDiagram>(window_width(in.config, in.info.mesh.period), in.info.mesh.T,
+                                                  in.config.colors);
+          }};
+}
+
+}  // namespace vibra::scenes
