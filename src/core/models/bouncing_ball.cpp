@@ -70,6 +70,9 @@ ModelDefinition bouncing_ball_model() {
                        "such as centered, velocity-verlet or rk4");
     info.amplitude_bound = apex;
     info.exact = exact_height(h0, V, g, C_R, eps_v), info.exact_label = "exact";
+    info.damped = C_R < 1;  // impacts take energy out
+    info.energy = [g](std::span<const double> row) { return EnergyParts{0.5 * row[2] * row[2], g * row[1]}; };
+    info.energy_unit = "J/kg";
 
     EventLaw events;
     events.system = std::make_shared<SecondOrderSystem<1>>(

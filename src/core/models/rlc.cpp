@@ -44,6 +44,12 @@ ModelDefinition rlc_model() {
     reject_adjusted_scheme(info.mesh, name);
     if ((info.exact = free_linear_solution(law, q0, I0))) info.exact_label = "exact";
     // Without a source the energy L I^2/2 + q^2/(2C) only falls.
+    info.damped = law.b > 0;
+    // Energy in the inductor's field and the capacitor's: 0.5 L I^2 + q^2/(2C).
+    info.energy = [L = law.mass, inverse_C = law.k](std::span<const double> row) {
+      return EnergyParts{0.5 * L * row[2] * row[2], 0.5 * inverse_C * row[1] * row[1]};
+    };
+    info.energy_unit = "J";
     if (!law.F) info.amplitude_bound = std::sqrt(q0 * q0 + I0 * I0 / (w * w));
     return std::make_unique<SecondOrderTrajectory<1>>(law.system(), Vec<1>(q0), Vec<1>(I0), info,
                                                       [law](const Sample<1>& x, std::span<double> out) {
