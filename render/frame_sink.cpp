@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "render/created_directory.hpp"
 #include "render/output_error.hpp"
 #include "render/png_sequence.hpp"
 #include "render/video_writer.hpp"
@@ -39,9 +40,12 @@ class VideoSink final : public FrameSink {
 class PngSink final : public FrameSink {
  public:
   PngSink(FramePattern pattern, int width, int height, int threads)
-      : pattern_(pattern), writer_(std::move(pattern), width, height, threads) {}
+      : pattern_(pattern), directory_(pattern.directory), writer_(std::move(pattern), width, height, threads) {}
   void write(const std::uint8_t* bgra, int stride, const Damage*) override { writer_.write(bgra, stride); }
-  void finish() override { writer_.finish(); }
+  void finish() override {
+    writer_.finish();
+    directory_.keep();
+  }
   std::string description() const override {
     return std::to_string(writer_.frames_written()) + " frames " + pattern_.name(0).string() + " ... " +
            pattern_.name(std::max(0LL, writer_.frames_written() - 1)).string();
@@ -49,6 +53,7 @@ class PngSink final : public FrameSink {
 
  private:
   FramePattern pattern_;
+  CreatedDirectory directory_;  ///< before the writer: removed after its frames
   PngSequenceWriter writer_;
 };
 class TeeSink final : public FrameSink {

@@ -1,5 +1,6 @@
 #include "cli/analysis_output.hpp"
 
+#include "cli/wrote_message.hpp"
 #include "render/temporary_file.hpp"
 #include "scenes/scene_config.hpp"
 
@@ -9,6 +10,7 @@ void add_output_options(CLI::App& cmd, AnalysisOutput& o) {
   cmd.add_flag("--csv", o.csv, "Print the table as CSV");
   cmd.add_option("-o,--output", o.figure, "Also draw the figure: FILE.png, FILE.svg or FILE.pdf");
   cmd.add_option("--size", o.size, "Figure size WxH in pixels")->capture_default_str();
+  cmd.add_flag("-q,--quiet", o.quiet, "No message on stderr after writing the figure");
 }
 
 void check_output(const AnalysisOutput& o) {
@@ -35,6 +37,7 @@ void write_figure(const AnalysisOutput& o, const std::function<render::Figure(in
   int width = 0, height = 0;
   scenes::parse_size(o.size, width, height);
   make_figure(width, height).write(o.figure);
+  say_wrote(o.quiet, o.figure);
 }
 
 }  // namespace vibra::cli

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -32,6 +33,7 @@ struct AsciiOptions {
   std::string counter;  ///< period | time | none; "" = period when the model has one
   double rate = 0;
   std::string columns;
+  bool legend = false;
 };
 
 /// Splits "a,b,c".
@@ -48,6 +50,23 @@ int terminal_columns() {
   winsize size{};
   if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0) return size.ws_col;
   return 80;
+}
+
+/// The largest |value| of the given columns (and the exact solution, if
+/// given) over the run, or its first kPrePassSteps steps for a longer or
+/// endless one: the range then holds every series shown.
+double largest_value(Trajectory& run, const std::vector<int>& columns, const std::function<double(double)>& exact) {
+  constexpr long long kPrePassSteps = 1'000'000;
+  std::vector<double> row(run.width());
+  double largest = 0;
+  do {
+    run.row(row);
+    for (int c : columns)
+      if (std::isfinite(row[c])) largest = std::max(largest, std::abs(row[c]));
+    if (exact) largest = std::max(largest, std::abs(exact(row[0])));
+    if ((run.index() & 0xffff) == 0) render::throw_if_stop_requested();
+  } while (run.index() < kPrePassSteps && run.advance());
+  return largest;
 }
 
 void run(const AsciiOptions& o) {
@@ -87,11 +106,16 @@ void run(const AsciiOptions& o) {
   if (o.ymin) {
     ymin = *o.ymin, ymax = *o.ymax;
   } else {
-    trajectory->row(row);
-    fill_values();
-    double largest = columns.size() == 1 ? info.amplitude_bound : 0;
-    for (double v : values) largest = std::max(largest, std::abs(v));
-    if (!(largest > 0)) largest = 1;
+    double largest = 0;
+    if (columns.size() == 1) {  // the classic plot: the model's known amplitude, as the book's plotter
+      trajectory->row(row);
+      fill_values();
+      largest = info.amplitude_bound;
+      for (double v : values) largest = std::max(largest, std::abs(v));
+    } else {  // several columns (theta, S, D differ in size): a pre-pass finds a range that holds them all
+      largest = largest_value(*model.build(parameters), columns, o.exact ? info.exact : nullptr);
+    }
+    if (!(largest > 0) || !std::isfinite(largest)) largest = 1;
     ymax = 1.2 * largest, ymin = -ymax;
   }
 
@@ -132,7 +156,9 @@ void run(const AsciiOptions& o) {
     return ok;  // false: the reader is gone (| head), so stop quietly
   };
 
-  if (series > 1) {  // a legend line: symbol and name of each series
+  // A legend line (symbol and name of each series) with --columns or --legend:
+  // the classic two-series run stays the book's plotter, line for line.
+  if (o.legend || !o.columns.empty()) {
     std::string legend;
     for (size_t i = 0; i < columns.size(); ++i) legend += std::string(legend.empty() ? "" : "   ") + o.symbols[i] + " " + info.columns[columns[i]];
     if (o.exact) legend += std::string("   ") + o.symbols[columns.size()] + " " + info.exact_label;
@@ -183,7 +209,10 @@ void add_ascii_command(CLI::App& app) {
   cmd->add_option("--ymin", o->ymin, "Lower end of the y axis (with --ymax)");
   cmd->add_option("--ymax", o->ymax, "Upper end of the y axis (with --ymin)");
   cmd->add_flag("--exact", o->exact, "Add the exact solution as the last series");
-  cmd->add_option("--columns", o->columns, "Series to plot, e.g. theta,S,D (default: the main quantity)");
+  cmd->add_option("--columns", o->columns,
+                  "Series to plot, e.g. theta,S,D (default: the main quantity); a legend line comes first, and the "
+                  "default range holds every series over the run (its first million steps if longer)");
+  cmd->add_flag("--legend", o->legend, "Start with a line naming each series' symbol (always with --columns)");
   cmd->add_option("--counter", o->counter, "period (t/P, one decimal), time, or none");
   cmd->add_option("--rate", o->rate, "Lines per second, to watch (the book used 10); default: as fast as it computes");
   cmd->footer(

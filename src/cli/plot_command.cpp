@@ -6,6 +6,7 @@
 #include "cli/commands.hpp"
 #include "cli/list_option.hpp"
 #include "cli/model_help.hpp"
+#include "cli/wrote_message.hpp"
 #include "core/error.hpp"
 #include "render/figure.hpp"
 #include "scenes/run_caption.hpp"
@@ -22,6 +23,7 @@ struct PlotOptions {
   std::string panels;
   std::string size;
   bool help = false;
+  bool quiet = false;
 };
 
 constexpr const char* kUsage = "Usage: vibra plot MODEL [--set KEY=VALUE]... -o FILE.png|svg|pdf [--panels LIST] [--size WxH]\n";
@@ -51,6 +53,7 @@ void run_plot(const PlotOptions& o) {
   if (!o.size.empty()) scenes::parse_size(o.size, width, height);
   const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);
   scenes::trajectory_figure(*trajectory, panels, width, height, title).write(o.output);
+  say_wrote(o.quiet, o.output);
 }
 }  // namespace
 
@@ -65,6 +68,7 @@ void add_plot_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "Picture file: .png, .svg or .pdf");
   cmd->add_option("--panels", o->panels, "Comma-separated panels, e.g. theta,S,D or u,exact or path");
   cmd->add_option("--size", o->size, "Picture size WxH in pixels (default 1280x720, 1280x960 for 3+ panels)");
+  cmd->add_flag("-q,--quiet", o->quiet, "No message on stderr after writing");
   cmd->callback([o] { run_plot(*o); });
 }
 

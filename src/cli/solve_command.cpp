@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/model_help.hpp"
+#include "cli/wrote_message.hpp"
 #include "core/csv_writer.hpp"
 #include "core/error.hpp"
 #include "render/output_error.hpp"
@@ -20,6 +21,7 @@ struct SolveOptions {
   std::string output;
   long long every = 1;
   bool help = false;
+  bool quiet = false;
 };
 
 void run_solve(const SolveOptions& o) {
@@ -62,6 +64,7 @@ void run_solve(const SolveOptions& o) {
         throw render::OutputError("writing '" + o.output + "' failed (disk full?): free space or choose another path");
       out = stdout;
       file->commit();
+      say_wrote(o.quiet, o.output);
     }
   } catch (...) {
     close();
@@ -80,6 +83,7 @@ void add_solve_command(CLI::App& app) {
       ->allow_extra_args(false);
   cmd->add_option("-o,--output", options->output, "CSV file (default: standard output)");
   cmd->add_option("--every", options->every, "Write every K-th step (the last step is always written)");
+  cmd->add_flag("-q,--quiet", options->quiet, "No message on stderr after writing a file");
   cmd->callback([options] { run_solve(*options); });
 }
 

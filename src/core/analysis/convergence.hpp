@@ -7,7 +7,7 @@
 
 namespace vibra {
 
-/// One row of a convergence study (SPEC 7).
+/// One row of a convergence study.
 struct ConvergenceLevel {
   double dt;
   double error;  ///< E = sqrt(dt sum_n (u^n - u_e(t_n))^2) over the whole mesh
@@ -22,5 +22,19 @@ double l2_error(Trajectory&, const std::function<double(double)>& exact);
 std::vector<ConvergenceLevel> convergence_study(const std::function<std::unique_ptr<Trajectory>(double dt)>& make,
                                                 const std::function<double(double)>& exact, double dt0,
                                                 int levels);
+
+/// Rates "settle" when the last two agree within this: the errors then follow
+/// one power of dt, the asymptotic range where the rate means the order.
+constexpr double kSettledRateTolerance = 0.05;
+
+/// Whether the study has at least two rates and the last two agree within
+/// kSettledRateTolerance.
+bool rates_settled(const std::vector<ConvergenceLevel>&);
+
+/// As convergence_study, but halves dt until the rates settle (at least
+/// `min_levels` levels) or `max_levels` levels are done, whichever is first.
+std::vector<ConvergenceLevel> convergence_until_settled(
+    const std::function<std::unique_ptr<Trajectory>(double dt)>& make, const std::function<double(double)>& exact,
+    double dt0, int min_levels, int max_levels);
 
 }  // namespace vibra
