@@ -127,14 +127,18 @@ void run_render(const RenderRequest& r) {
     throw UsageError("--at renders one still: give -o FILE.png, FILE.svg or FILE.pdf");
   if (!still && (ext == ".svg" || ext == ".pdf"))
     throw UsageError("-o " + r.output + " is one picture: add --at T to choose its time");
-  const bool page = ext == ".html";
+  const bool page = ext == ".html", stream = r.output == "-";
   if (r.frames_player && !page) throw UsageError("--frames-player writes a page: give -o PLAYER.html");
-  if (!still && !page && !render::is_video_path(r.output) && !render::is_frame_pattern(r.output)) {
+  if (stream && still) throw UsageError("--at writes one picture to a file: give -o FILE.png, FILE.svg or FILE.pdf");
+  if (r.video.transparent && page && !r.frames_player)
+    throw UsageError("a page's MP4 cannot be transparent: add --frames-player (PNG frames), or write .webm or .mov");
+  render::check_output_settings(r.output, r.video);
+  if (!still && !page && !stream && !render::is_video_path(r.output) && !render::is_frame_pattern(r.output)) {
     if (ext == ".png")
       throw UsageError("-o " + r.output + " is one picture: add --at T, or give a pattern such as frames/tmp_%04d.png");
     throw UsageError("cannot tell what to write from -o " + r.output +
-                     ": use .mp4, .webm, .mkv, .ogv, .gif, .yuv, .html, a frame pattern frames/tmp_%04d.png, a directory, or "
-                     ".png/.svg/.pdf with --at");
+                     ": use .mp4, .webm, .mkv, .mov, .ogv, .gif, .yuv, .html, a frame pattern frames/tmp_%04d.png, a "
+                     "directory, - (standard output) with --format, or .png/.svg/.pdf with --at");
   }
 
   render::start_loading_fonts();  // overlaps the solver's pre-pass and the encoder's start
@@ -152,7 +156,9 @@ void run_render(const RenderRequest& r) {
       r.scene.frame_per_step ? FrameClock::per_step(mesh.dt, mesh.steps) : FrameClock::by_speed(mesh.T, r.scene.fps, speed);
 
   const std::string caption = caption_of(r.scene, parameters, mesh);
-  std::unique_ptr<Scene> scene = make_scene(r.scene, pre_pass->info(), caption);
+  SceneConfig drawn = r.scene;
+  if (r.video.transparent) drawn.colors.background = drawn.colors.background.with_alpha(0);  // cleared, not painted
+  std::unique_ptr<Scene> scene = make_scene(drawn, pre_pass->info(), caption);
 
   // Pre-pass: fixed view and plot ranges over the whole run, in constant memory.
   std::vector<double> row(pre_pass->width());

@@ -24,6 +24,7 @@ struct PlotOptions {
   std::string size;
   bool help = false;
   bool quiet = false;
+  bool transparent = false;
 };
 
 constexpr const char* kUsage = "Usage: vibra plot MODEL [--set KEY=VALUE]... -o FILE.png|svg|pdf [--panels LIST] [--size WxH]\n";
@@ -52,7 +53,9 @@ void run_plot(const PlotOptions& o) {
   int width = 1280, height = panels.size() > 2 ? 960 : 720;
   if (!o.size.empty()) scenes::parse_size(o.size, width, height);
   const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);
-  scenes::trajectory_figure(*trajectory, panels, width, height, title).write(o.output);
+  render::Figure figure = scenes::trajectory_figure(*trajectory, panels, width, height, title);
+  figure.set_transparent(o.transparent);
+  figure.write(o.output);
   say_wrote(o.quiet, o.output);
 }
 }  // namespace
@@ -68,6 +71,7 @@ void add_plot_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "Picture file: .png, .svg or .pdf");
   cmd->add_option("--panels", o->panels, "Comma-separated panels, e.g. theta,S,D or u,exact or path");
   cmd->add_option("--size", o->size, "Picture size WxH in pixels (default 1280x720, 1280x960 for 3+ panels)");
+  cmd->add_flag("--transparent", o->transparent, "No background: PNG with alpha, SVG/PDF without the paper rectangle");
   cmd->add_flag("-q,--quiet", o->quiet, "No message on stderr after writing");
   cmd->callback([o] { run_plot(*o); });
 }

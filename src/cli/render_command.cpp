@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "core/error.hpp"
+#include "render/standard_output.hpp"
 #include "scenes/render_job.hpp"
 #include "scenes/scene_config.hpp"
 
@@ -38,7 +39,9 @@ std::string scene_keys_help() {
   out += "\nExamples:\n  vibra render                                   # pendulum.mp4\n"
          "  vibra render pendulum_book -o frames/tmp_%04d.png\n"
          "  vibra render --set Theta=40 --set alpha=0.8 -o lecture.webm\n"
-         "  vibra render --at 3.2 -o still.svg\n";
+         "  vibra render --at 3.2 -o still.svg\n"
+         "  vibra render --transparent -o overlay.webm          # or .mov, or frames/tmp_%04d.png\n"
+         "  vibra render -o - --format y4m | ffplay -            # watch while it renders\n";
   return out;
 }
 
@@ -66,7 +69,11 @@ void run(const RenderOptions& o) {
   request.frames_player = o.frames_player;
   request.quiet = o.quiet;
   request.video = o.video;
-  scenes::run_render(request);
+  try {
+    scenes::run_render(request);
+  } catch (const render::StreamClosed&) {
+    // -o - and the reader has gone (a closed player, `| head -c`): a pipeline's normal end.
+  }
 }
 }  // namespace
 
@@ -76,8 +83,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("SCENE", o->scene, "Built-in scene name or a TOML scene file")->capture_default_str();
   cmd->add_option("--set", o->settings, "KEY=VALUE: a scene key or a model key, repeatable");
   cmd->add_option("-o,--output", o->output,
-                  "OUT.mp4|.webm|.mkv|.ogv|.gif|.yuv, PAGE.html (MP4 + WebM + page), frames/tmp_%04d.png or a directory, or a "
-                  "still .png/.svg/.pdf with --at (default: SCENE.mp4)");
+                  "OUT.mp4|.webm|.mkv|.mov|.ogv|.gif|.yuv|.nut, PAGE.html (MP4 + WebM + page), frames/tmp_%04d.png or a "
+                  "directory (created if missing), - for standard output (with --format), or a still .png/.svg/.pdf with "
+                  "--at (default: SCENE.mp4)");
   cmd->add_option("--size", o->size, "Frame size WxH, e.g. 1920x1080");
   cmd->add_option("--fps", o->fps, "Frames per second");
   cmd->add_option("--speed", o->speed, "Simulated time units per second of video");
@@ -93,6 +101,11 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--preset", o->video.preset, "x264 preset, e.g. veryfast, medium");
   cmd->add_option("--threads", o->video.threads, "Threads for PNG compression and the encoder (default: one per core)")
       ->check(CLI::Range(1, 64));
+  cmd->add_option("--format", o->video.format,
+                  "With -o - (standard output): y4m (raw frames, for ffplay -), nut or matroska (H.264)");
+  cmd->add_flag("--transparent", o->video.transparent,
+                "No background: PNG with alpha, .webm (VP9 with alpha), .mov (ProRes 4444), SVG/PDF without the "
+                "background rectangle");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or messages");
   cmd->footer(scene_keys_help());
   cmd->callback([o] { run(*o); });
