@@ -193,10 +193,18 @@ struct GifPalette {
 
 }  // namespace
 
+/// 'NAME', for messages.
+static std::string quoted(const fs::path& path) {
+  std::string text = "'";
+  text += path.string();
+  text += '\'';
+  return text;
+}
+
 struct VideoWriter::Impl {
   explicit Impl(const fs::path& final_path)
       : streaming(final_path == VideoWriter::kStandardOutput),
-        target(streaming ? "standard output" : "'" + final_path.string() + "'") {
+        target(streaming ? std::string("standard output") : quoted(final_path)) {
     if (!streaming) file.emplace(final_path);
   }
   ~Impl();

@@ -129,7 +129,6 @@ void run_render(const RenderRequest& r) {
     throw UsageError("-o " + r.output + " is one picture: add --at T to choose its time");
   const bool page = ext == ".html", stream = r.output == "-";
   if (r.frames_player && !page) throw UsageError("--frames-player writes a page: give -o PLAYER.html");
-  if (stream && still) throw UsageError("--at writes one picture to a file: give -o FILE.png, FILE.svg or FILE.pdf");
   if (r.video.transparent && page && !r.frames_player)
     throw UsageError("a page's MP4 cannot be transparent: add --frames-player (PNG frames), or write .webm or .mov");
   render::check_output_settings(r.output, r.video);

@@ -40,6 +40,26 @@ inline CommandResult run_vibra(const std::string& args) {
   return result;
 }
 
+/// Everything a shell command writes on stdout (binary safe).
+inline std::string shell_output(const std::string& command) {
+  std::string out;
+  std::FILE* pipe = ::popen(command.c_str(), "r");
+  std::array<char, 1 << 16> buffer;
+  size_t n;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) out.append(buffer.data(), n);
+  ::pclose(pipe);
+  return out;
+}
+
+/// In a forked child: becomes `vibra ARGS` (exit 127 if that fails).
+[[noreturn]] inline void exec_vibra(const std::vector<std::string>& args) {
+  std::vector<char*> argv{const_cast<char*>(VIBRA_EXE)};
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  ::execv(VIBRA_EXE, argv.data());
+  ::_exit(127);
+}
+
 /// Starts `vibra ARGS` as a child process, without a shell, its stdout and
 /// stderr written to the given files (e.g. /dev/null); returns its pid.
 inline pid_t spawn_vibra(const std::vector<std::string>& args, const std::string& out_file,
@@ -50,11 +70,7 @@ inline pid_t spawn_vibra(const std::vector<std::string>& args, const std::string
     const int err = ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     ::dup2(out, 1);
     ::dup2(err, 2);
-    std::vector<char*> argv{const_cast<char*>(VIBRA_EXE)};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(VIBRA_EXE, argv.data());
-    ::_exit(127);
+    exec_vibra(args);
   }
   return pid;
 }

@@ -18,19 +18,11 @@ using vibra::test::ScratchDirectory;
 namespace fs = std::filesystem;
 
 namespace {
-std::string shell(const std::string& command) {
-  std::string out;
-  std::FILE* pipe = ::popen(command.c_str(), "r");
-  char buffer[4096];
-  size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-  ::pclose(pipe);
-  return out;
-}
+using vibra::test::shell_output;
 
 /// ffprobe's flat key=value view of the first video stream and the format.
 std::string probe(const std::string& file) {
-  return shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+  return shell_output("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
                "stream=codec_name,profile,pix_fmt,width,height,color_range,color_space,avg_frame_rate,nb_read_frames,duration "
                "-show_entries format=duration:format_tags=title -of flat=s=_ '" + file + "'");
 }
@@ -76,7 +68,7 @@ TEST_CASE("MP4: H.264 Main, yuv420p, BT.709 tv range, exact frames and duration,
   CHECK_THAT(p, Catch::Contains("stream_0_duration=\"1.033333\""));  // 31 frames / 30 fps, exactly
   const std::string bytes = read_file(file);
   CHECK(bytes.find("moov") < bytes.find("mdat"));
-  CHECK(shell("ffmpeg -v error -i '" + file + "' -f null - 2>&1").empty());  // every frame decodes
+  CHECK(shell_output("ffmpeg -v error -i '" + file + "' -f null - 2>&1").empty());  // every frame decodes
 }
 
 TEST_CASE("WebM: VP9 yuv420p with the right frame count", "[render][video]") {
@@ -87,7 +79,7 @@ TEST_CASE("WebM: VP9 yuv420p with the right frame count", "[render][video]") {
   INFO(p);
   CHECK_THAT(p, Catch::Contains("codec_name=\"vp9\"") && Catch::Contains("pix_fmt=\"yuv420p\"") &&
                     Catch::Contains("nb_read_frames=\"31\"") && Catch::Contains("duration=\"1.03"));
-  CHECK(shell("ffmpeg -v error -i '" + file + "' -f null - 2>&1").empty());
+  CHECK(shell_output("ffmpeg -v error -i '" + file + "' -f null - 2>&1").empty());
 }
 
 TEST_CASE("odd sizes are rounded up to even for 4:2:0, and said once", "[render][video]") {

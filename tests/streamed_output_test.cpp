@@ -18,16 +18,6 @@ using vibra::test::ScratchDirectory;
 namespace {
 const std::string kShort = "render --size 320x180 --set periods=0.5 -q -o - ";  // 31 frames at 30 fps
 
-std::string shell(const std::string& command) {
-  std::string out;
-  std::FILE* pipe = ::popen(command.c_str(), "r");
-  char buffer[4096];
-  size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-  ::pclose(pipe);
-  return out;
-}
-
 struct Ended {
   int exit_code = -1;
   std::string err;
@@ -45,11 +35,7 @@ Ended read_then_close(const std::vector<std::string>& args, std::size_t keep) {
     ::dup2(fds[1], 1);
     const int err = ::open((logs / "err").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     ::dup2(err, 2);
-    std::vector<char*> argv{const_cast<char*>(VIBRA_EXE)};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(VIBRA_EXE, argv.data());
-    ::_exit(127);
+    vibra::test::exec_vibra(args);
   }
   ::close(fds[1]);
   std::vector<char> buffer(keep);
@@ -104,7 +90,7 @@ TEST_CASE("-o - --format y4m writes a YUV4MPEG2 header and every frame", "[strea
   // And FFmpeg reads it as the same 31 frames.
   ScratchDirectory dir;
   REQUIRE(run_vibra(kShort + "--format y4m > " + (dir / "x.y4m")).exit_code == 0);
-  CHECK_THAT(shell("ffprobe -v error -count_frames -show_entries stream=codec_name,width,height,nb_read_frames,color_range "
+  CHECK_THAT(vibra::test::shell_output("ffprobe -v error -count_frames -show_entries stream=codec_name,width,height,nb_read_frames,color_range "
                    "-of flat=s=_ '" + (dir / "x.y4m") + "'"),
              Catch::Contains("codec_name=\"rawvideo\"") && Catch::Contains("nb_read_frames=\"31\"") &&
                  Catch::Contains("width=320") && Catch::Contains("color_range=\"tv\""));
@@ -117,7 +103,7 @@ TEST_CASE("-o - --format nut or matroska streams H.264 that a pipe reader decode
     const std::string command = std::string(VIBRA_EXE) + " " + kShort + "--format " + format + " 2>" + (dir / "err") +
                                 " | ffprobe -v error -count_frames -show_entries stream=codec_name,width,height,nb_read_frames "
                                 "-of flat=s=_ -";
-    const std::string probe = shell(command);
+    const std::string probe = vibra::test::shell_output(command);
     CHECK_THAT(probe, Catch::Contains("codec_name=\"h264\"") && Catch::Contains("width=320") &&
                           Catch::Contains("nb_read_frames=\"31\""));
   }
@@ -147,5 +133,5 @@ TEST_CASE("-o - needs a stream format; --format needs -o -", "[stream][cli]") {
   vibra::test::check_refused("render -o -", "add --format y4m");
   vibra::test::check_refused("render -o - --format webm", "--format webm is not a stream format");
   vibra::test::check_refused("render --format y4m -o OUT.mp4", "--format is for -o -");
-  vibra::test::check_refused("render -o - --format y4m --at 1", "--at writes one picture");
+  vibra::test::check_refused("render -o - --format y4m --at 1", "--at renders one still");
 }
