@@ -269,7 +269,9 @@ void VideoWriter::Impl::check(int code, const std::string& what, bool output) co
     throw OutputError("the reader of standard output has gone");
   }
   std::string fix;
-  if (code == AVERROR(ENOSPC) || code == AVERROR(EDQUOT))
+  if ((code == AVERROR(ENOSPC) || code == AVERROR(EDQUOT)) && streaming)
+    fix = "free some disk space where standard output goes";
+  else if (code == AVERROR(ENOSPC) || code == AVERROR(EDQUOT))
     fix = "free some disk space or choose another directory";
   else if (code == AVERROR(EFBIG))
     fix = "the file size limit was reached: raise it (ulimit -f) or lower the quality";
