@@ -476,6 +476,7 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
   } else if (codec_name == "prores") {
     av_dict_set(&settings, "profile", "4444", 0);
     av_dict_set(&settings, "vendor", "apl0", 0);  // as Apple's encoder tags it: some editors look for it
+    c->thread_count = 0;  // one slice thread per core: ProRes costs about 0.12 s of CPU per 720p frame
   } else if (codec_name == "theora" || codec_name == "flv") {
     c->flags |= AV_CODEC_FLAG_QSCALE;
     c->global_quality = FF_QP2LAMBDA * q;
