@@ -9,7 +9,7 @@ scripts/setup --bench >/dev/null  # the peers' packages, and a current build
 STEPS=${1:-10000000}
 PEER_STEPS=${2:-1000000}
 VIBRA=${VIBRA:-build/vibra}
-PEERS=${PEERS:-../shared/peers}
+PEERS=${PEERS:-bench/peers}
 mem=$(mktemp)
 trap 'rm -f "$mem"' EXIT
 

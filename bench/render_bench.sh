@@ -7,10 +7,10 @@
 #                                                        installs the peers' packages first)
 #
 # Cases: PNG sequences (--layout fbd, the peers' scene) against
-# mpl_png_frames.py; MP4 and WebM against mpl_funcanim_ffmpeg.py and against
+# png_frames.py; MP4 and WebM against funcanim_video.py and against
 # the ffmpeg CLI encoding the same frames from raw YUV in memory with the same
 # settings (the encoder's own ceiling); the moving window against
-# mpl_moving_window.py.
+# moving_window.py.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup --bench >/dev/null  # the peers' packages, and a current build
@@ -18,7 +18,7 @@ FRAMES=${1:-300}
 ONLY=${2:-}
 wanted() { [ -z "$ONLY" ] || [ "$ONLY" = "$1" ]; }
 VIBRA=${VIBRA:-build/vibra}
-PEERS=${PEERS:-../shared/peers}
+PEERS=${PEERS:-bench/peers}
 PY=/usr/bin/python3
 WORK=$(mktemp -d /dev/shm/vibra_bench.XXXXXX 2>/dev/null || mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
@@ -52,7 +52,7 @@ for size in 720p 1080p; do
   dims=$([ $size = 720p ] && echo 1280x720 || echo 1920x1080)
   mkdir -p "$WORK/v_$size" "$WORK/p_$size"
   run "vibra PNG $size" "$VIBRA" render "${SCENE[@]}" --layout fbd --size "$dims" -o "$WORK/v_$size"; ours=$LAST_FPS
-  run "matplotlib PNG $size (mpl_png_frames.py)" $PY "$PEERS/mpl_png_frames.py" --frames "$FRAMES" --size $size --out "$WORK/p_$size"
+  run "matplotlib PNG $size (png_frames.py)" $PY "$PEERS/png_frames.py" --frames "$FRAMES" --size $size --out "$WORK/p_$size"
   ratio "$ours" "$LAST_FPS"
   rm -rf "$WORK/v_$size" "$WORK/p_$size"
 done
@@ -78,7 +78,7 @@ for size in 720p 1080p; do
   run "ffmpeg CLI VP9 encoder only, same settings" ffmpeg -v error -f rawvideo -pix_fmt yuv420p -s "$dims" -r 30 \
     -i "$WORK/raw.yuv" "${VP9[@]}" -f webm -y "$WORK/ceiling.webm"
   printf "  -> vibra's whole pipeline reaches %.0f%% of the encoder alone\n" "$(echo "100 * $webm / $LAST_FPS" | bc -l)"
-  run "matplotlib FuncAnimation MP4 $size" $PY "$PEERS/mpl_funcanim_ffmpeg.py" --frames "$FRAMES" --size $size --codec mp4 --out "$WORK/peer"
+  run "matplotlib FuncAnimation MP4 $size" $PY "$PEERS/funcanim_video.py" --frames "$FRAMES" --size $size --codec mp4 --out "$WORK/peer"
   size "$WORK/peer.mp4"
   ratio "$mp4" "$LAST_FPS"
   printf "  -> file size vibra / peer = %.2fx\n" "$(echo "$mp4_size / $(stat -c %s "$WORK/peer.mp4")" | bc -l)"
@@ -94,6 +94,6 @@ echo
 echo "== Moving window (u against t, 4 periods), 720p, $FRAMES PNG frames"
 mkdir -p "$WORK/mw_v" "$WORK/mw_p"
 run "vibra moving window" "$VIBRA" render pendulum "${SCENE[@]}" --layout plot --window 4periods -o "$WORK/mw_v"; ours=$LAST_FPS
-run "matplotlib moving window (mpl_moving_window.py)" $PY "$PEERS/mpl_moving_window.py" --frames "$FRAMES" --size 720p --window 4 --out "$WORK/mw_p"
+run "matplotlib moving window (moving_window.py)" $PY "$PEERS/moving_window.py" --frames "$FRAMES" --size 720p --window 4 --out "$WORK/mw_p"
 ratio "$ours" "$LAST_FPS"
 }

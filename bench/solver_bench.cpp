@@ -3,7 +3,9 @@
 // hand-written C++ loops of the same formulas and the book's Python loop, in
 // one run. Each case runs in a child process so its peak memory is its own.
 //
-//   solver_bench [--steps N] [--csv-steps N] [--peer PATH/solver_peers.py]
+//   solver_bench [--steps N] [--csv-steps N] [--peer PATH/solver_loop.py]
+//
+// The peer is bench/peers/solver_loop.py of this source tree by default.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -135,7 +137,7 @@ void report(const char* name, long long steps, const Result& r, double reference
 
 int main(int argc, char** argv) {
   long long steps = 100'000'000, csv_steps = 10'000'000;
-  std::string peer = "../shared/peers/solver_peers.py";
+  std::string peer = VIBRA_PEERS_DIR "/solver_loop.py";
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--steps")) steps = std::atoll(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--csv-steps")) csv_steps = std::atoll(argv[i + 1]);
@@ -163,7 +165,7 @@ int main(int argc, char** argv) {
 
   if (access(peer.c_str(), R_OK) == 0) {
     const long long peer_steps = 1'000'000;
-    const std::string command = "/usr/bin/python3 " + peer + " --steps " + std::to_string(peer_steps) + " --method textbook";
+    const std::string command = "/usr/bin/python3 " + peer + " --steps " + std::to_string(peer_steps);
     const Result r = measure([&] { return double(std::system((command + " 2>/dev/null").c_str())); });
     report("Python peer (book's loop, process)", peer_steps, r);
     const Result ours = measure([&] { return vibra_to_nothing("centered", peer_steps); });

@@ -4,6 +4,11 @@
 
 namespace vibra::render {
 
+Color palette::series(size_t k) {
+  const Color colors[] = {blue, vermillion, green, purple, orange, sky, ink, yellow};
+  return colors[k % 8];
+}
+
 Color parse_color(const std::string& hex) {
   auto fail = [&] { return std::invalid_argument("colour '" + hex + "' is not #rrggbb or #rrggbbaa"); };
   if (hex.size() != 7 && hex.size() != 9) throw fail();

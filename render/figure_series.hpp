@@ -34,6 +34,8 @@ class Series {
 
   Kind kind() const { return kind_; }
   const std::string& label() const { return label_; }
+  /// A label learnt after the data (e.g. "blew up at t = 3.1").
+  void set_label(std::string label) { label_ = std::move(label); }
   const SeriesStyle& style() const { return style_; }
   /// The data as polylines in data coordinates (a path or a point set may be several).
   std::vector<std::vector<Point>> polylines() const;

@@ -13,11 +13,7 @@ using render::AxisScale;
 using render::PanelOptions;
 using render::SeriesStyle;
 
-render::Color series_color(size_t k) {
-  using namespace render::palette;
-  const render::Color colors[] = {blue, vermillion, green, purple, orange, sky, ink};
-  return colors[k % 7];
-}
+render::Color series_color(size_t k) { return render::palette::series(k); }
 
 SeriesStyle data_style(size_t k) { return {series_color(k), 2, false, true}; }
 SeriesStyle reference_style() { return {render::palette::ink.with_alpha(0.75), 1.8, true, false}; }
@@ -182,6 +178,25 @@ render::Figure orbit_figure(const std::vector<OrbitRun>& runs, const std::vector
     fit.add(run.blocks.front().orbits, long_fits[k](run.blocks.front().orbits));
     fit.add(run.blocks.back().orbits, long_fits[k](run.blocks.back().orbits));
   }
+  return figure;
+}
+
+render::Figure period_figure(const std::vector<MeasuredPeriod>& periods, double exact_period,
+                             double small_oscillation_period, const std::string& title, int width, int height) {
+  render::Figure figure(width, height, title);
+  const int panel = figure.add_panel(linear("period <i>P<sub>i</sub></i>", "<i>i</i>"));
+  render::Series& measured = figure.add_points(panel, "measured between upward zero crossings", data_style(0));
+  for (const auto& p : periods) measured.add(p.i, p.period);
+  const double last = periods.empty() ? 1 : std::max(1, periods.back().i);
+  auto line = [&](double value, const std::string& label, SeriesStyle style) {
+    render::Series& s = figure.add_points(panel, label + " " + number("%.6g", value), style);
+    s.add(0, value);
+    s.add(last, value);
+  };
+  if (exact_period > 0) line(exact_period, "exact", {render::palette::vermillion, 2, true, false});
+  // The small-oscillation line only where it says something the exact one does not.
+  if (small_oscillation_period > 0 && std::abs(small_oscillation_period - exact_period) > 1e-9 * small_oscillation_period)
+    line(small_oscillation_period, "small-oscillation", reference_style());
   return figure;
 }
 

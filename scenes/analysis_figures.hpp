@@ -6,6 +6,7 @@
 #include "core/analysis/energy_study.hpp"
 #include "core/analysis/model_convergence.hpp"
 #include "core/analysis/orbit_error.hpp"
+#include "core/analysis/period_meter.hpp"
 #include "core/analysis/power_law_fit.hpp"
 #include "render/figure.hpp"
 
@@ -43,6 +44,11 @@ render::Figure amplitude_figure(const std::vector<LabelledCycles>&, double I, co
 
 /// Maximum error against steps per orbit; with long runs, the error per block
 /// of orbits against the orbits done, with each run's fitted power law.
+/// Each measured period against i, with the exact period (dashed vermillion)
+/// where known and the small-oscillation period (dashed grey) as lines.
+render::Figure period_figure(const std::vector<MeasuredPeriod>&, double exact_period, double small_oscillation_period,
+                             const std::string& title, int width, int height);
+
 render::Figure orbit_figure(const std::vector<OrbitRun>& runs, const std::vector<OrbitRun>& long_runs,
                             const std::vector<PowerLaw>& long_fits, const std::string& title, int width, int height);
 

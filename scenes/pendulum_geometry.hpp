@@ -5,13 +5,13 @@ namespace vibra::scenes {
 
 using Point = Eigen::Vector2d;
 
-/// What the free-body diagram shows at one instant, in scaled units (SPEC 4):
+/// What the free-body diagram shows at one instant, in scaled units (docs/models.md):
 /// forces divided by m g.
 struct PendulumState {
   double t = 0, theta = 0, omega = 0, S = 0, D = 0;
 };
 
-/// Proportions of the diagram (SPEC 8.1), in units of the wire length L = 1.
+/// Proportions of the diagram (docs/drawing.md), in units of the wire length L = 1.
 struct PendulumDiagramOptions {
   double force_unit = 0.6;          ///< arrow length per unit of scaled force (1.2 L/2)
   double drag_magnification = 5;    ///< D is drawn this many times longer, and labelled so

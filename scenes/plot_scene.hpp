@@ -2,7 +2,10 @@
 #include <functional>
 #include <string>
 
-#include "scenes/pendulum_scene.hpp"
+#include "scenes/scene.hpp"
+#include "scenes/scene_style.hpp"
+#include "scenes/series_panel.hpp"
+#include "scenes/static_layer.hpp"
 
 namespace vibra::scenes {
 

@@ -4,9 +4,7 @@
 
 namespace vibra::scenes {
 
-namespace {
-/// A user's text made safe inside Pango markup (formulas may hold < or &).
-std::string escaped(const std::string& text) {
+std::string markup_escaped(const std::string& text) {
   std::string out;
   for (char c : text) {
     if (c == '&') out += "&amp;";
@@ -16,7 +14,6 @@ std::string escaped(const std::string& text) {
   }
   return out;
 }
-}  // namespace
 
 std::string run_caption(const std::string& model, const Parameters& p, const TimeMesh& mesh) {
   std::string caption = model + " · " + std::string(scheme_info(mesh.scheme).name);
@@ -26,7 +23,7 @@ std::string run_caption(const std::string& model, const Parameters& p, const Tim
   for (const auto& a : p.given_assignments()) {
     const std::string key = a.substr(0, a.find('='));
     if (key != "scheme" && key != "dt" && key != "steps_per_period" && key != "T" && key != "periods")
-      caption += " · " + escaped(a);
+      caption += " · " + markup_escaped(a);
   }
   return caption;
 }

@@ -13,10 +13,17 @@
 #include "core/error.hpp"
 #include "core/models/model.hpp"
 #include "scenes/builtin_scenes.hpp"
+#include "scenes/diagram_registry.hpp"
 
 namespace vibra::scenes {
 
 namespace {
+bool model_has_key(const std::string& model, const std::string& key) {
+  for (const auto& spec : find_model(model).keys)
+    if (spec.name == key) return true;
+  return false;
+}
+
 bool parse_bool(const Setting& s) {
   if (s.value == "true" || s.value == "1" || s.value == "yes") return true;
   if (s.value == "false" || s.value == "0" || s.value == "no") return false;
@@ -40,10 +47,10 @@ render::Color parse_color_setting(const Setting& s) {
 }
 
 render::Color* color_slot(SceneConfig& c, const std::string& key) {
-  static const std::map<std::string, render::Color PendulumColors::*> slots = {
-      {"colors.background", &PendulumColors::background}, {"colors.bob", &PendulumColors::bob},
-      {"colors.wire", &PendulumColors::wire},             {"colors.gravity", &PendulumColors::gravity},
-      {"colors.wire_force", &PendulumColors::wire_force}, {"colors.drag", &PendulumColors::drag}};
+  static const std::map<std::string, render::Color SceneColors::*> slots = {
+      {"colors.background", &SceneColors::background}, {"colors.bob", &SceneColors::bob},
+      {"colors.wire", &SceneColors::wire},             {"colors.gravity", &SceneColors::gravity},
+      {"colors.wire_force", &SceneColors::wire_force}, {"colors.drag", &SceneColors::drag}};
   auto it = slots.find(key);
   return it == slots.end() ? nullptr : &(c.colors.*(it->second));
 }
@@ -78,14 +85,16 @@ void collect(const toml::table& table, const std::string& prefix, const std::str
 
 const std::vector<KeySpec>& scene_keys() {
   static const std::vector<KeySpec> keys = {
-      {"model", ValueKind::choice, "pendulum", "", "model (pendulums: any layout; others: layout plot)", {}, {}},
+      {"model", ValueKind::choice, "pendulum", "", "model (with a diagram: any layout; others: layout plot)", {}, {}},
+      {"diagram", ValueKind::choice, "", "", "drawing of the model (default: the model's own; see Diagrams below)", {}, {}},
       {"size", ValueKind::number, "1280x720", "pixels", "frame size WxH", {}, {}},
       {"fps", ValueKind::number, "30", "1/s", "frames per second of video", {}, {}},
       {"speed", ValueKind::number, "0", "time/s", "simulated time per second of video (0: one period in 2 s)", {}, {}},
+      {"video_speed", ValueKind::number, "0", "time/s", "the same as speed, for models with a key speed of their own", {}, {}},
       {"frame_per_step", ValueKind::choice, "false", "", "one frame per solver step", {"true", "false"}, {}},
       {"layout", ValueKind::choice, "fbd+plot", "", "fbd, fbd+plot, or plot (any model)", {"fbd", "fbd+plot", "plot"}, {}},
       {"window", ValueKind::number, "", "time", "plot window: a time, or N periods as 8periods; none = whole run", {}, {}},
-      {"window_mode", ValueKind::choice, "movement", "", "drawing, movement or jumps (SPEC 8.2)", {"drawing", "movement", "jumps"}, {}},
+      {"window_mode", ValueKind::choice, "movement", "", "drawing, movement or jumps (the moving plot window)", {"drawing", "movement", "jumps"}, {}},
       {"drag_magnification", ValueKind::number, "5", "", "drag arrow drawn this many times longer", {}, {}},
       {"colors.background", ValueKind::number, "#ffffff", "", "colour #rrggbb", {}, {}},
       {"colors.bob", ValueKind::number, "#0073b3", "", "colour #rrggbb", {}, {}},
@@ -114,8 +123,19 @@ void apply_setting(SceneConfig& c, const Setting& s) {
     } catch (const UsageError& e) {
       throw UsageError(s.origin + ": " + e.what());
     }
-    if (s.value != c.model) c.model_settings.clear();  // the old model's keys do not apply
+    if (s.value != c.model) c.model_settings.clear(), c.diagram.clear();  // the old model's keys do not apply
     c.model = s.value;
+  } else if (k == "diagram") {
+    std::vector<std::string> names;
+    for (const auto& kind : all_diagrams()) names.push_back(kind.name);
+    if (std::find(names.begin(), names.end(), s.value) == names.end()) {
+      const std::string near = closest_match(s.value, names);
+      std::string list;
+      for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+      throw UsageError(s.origin + ": unknown diagram '" + s.value + "'" +
+                       (near.empty() ? "" : " (did you mean '" + near + "'?)") + ": choose one of " + list);
+    }
+    c.diagram = s.value;
   } else if (k == "size") {
     try {
       parse_size(s.value, c.width, c.height);
@@ -126,7 +146,7 @@ void apply_setting(SceneConfig& c, const Setting& s) {
     c.fps = parse_number(s);
     if (!(c.fps >= 1 && c.fps <= 240) || c.fps != std::round(c.fps))
       throw UsageError(s.origin + ": fps=" + s.value + " must be a whole number 1..240 (25 or more plays smoothly)");
-  } else if (k == "speed") {
+  } else if (k == "video_speed" || (k == "speed" && !model_has_key(c.model, "speed"))) {
     c.speed = parse_number(s);
     if (!(c.speed >= 0) || std::isinf(c.speed)) throw UsageError(s.origin + ": speed=" + s.value + " must be a positive number (0: automatic)");
   } else if (k == "frame_per_step") {
@@ -209,6 +229,17 @@ std::vector<std::string> builtin_scene_names() {
   return names;
 }
 
+std::string builtin_scene_summary(const std::string& name) {
+  for (const auto& [preset, text] : builtin_scenes()) {
+    if (preset != name) continue;
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line))
+      if (line.rfind("# ", 0) == 0) return line.substr(2);
+  }
+  return "";
+}
+
 SceneConfig load_scene(const std::string& name_or_path) {
   std::string text, file;
   for (const auto& [name, preset] : builtin_scenes())
@@ -219,7 +250,7 @@ SceneConfig load_scene(const std::string& name_or_path) {
     if (!file.empty() || model.name != name_or_path) continue;
     SceneConfig config;
     config.name = config.model = model.name;
-    config.layout = model.name == "physical-pendulum" ? Layout::fbd_plot : Layout::plot;
+    config.layout = default_diagram(model.name) ? Layout::fbd_plot : Layout::plot;
     return config;
   }
   if (file.empty()) {

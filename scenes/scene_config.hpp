@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "core/parameters.hpp"
-#include "scenes/pendulum_scene.hpp"
+#include "scenes/scene_style.hpp"
 
 namespace vibra::scenes {
 
@@ -19,6 +19,7 @@ struct Setting {
 struct SceneConfig {
   std::string name = "pendulum";
   std::string model = "pendulum";
+  std::string diagram;  ///< the drawing (`vibra render --help` lists them); "" = the model's default
   std::vector<Setting> model_settings;
   int width = 1280, height = 720;
   double fps = 30;
@@ -29,7 +30,7 @@ struct SceneConfig {
   std::string window;
   WindowMode window_mode = WindowMode::movement;
   double drag_magnification = 5;
-  PendulumColors colors;
+  SceneColors colors;
 };
 
 /// The keys a scene has besides its model's (shown by `vibra render --help`).
@@ -56,5 +57,7 @@ void parse_size(const std::string& text, int& width, int& height);
 
 /// Names of the built-in scenes.
 std::vector<std::string> builtin_scene_names();
+/// A built-in scene's one-line description: the first comment line of its preset file.
+std::string builtin_scene_summary(const std::string& name);
 
 }  // namespace vibra::scenes

@@ -1,8 +1,8 @@
 #include "scenes/scene_factory.hpp"
 
-#include "core/error.hpp"
-#include "scenes/pendulum_scene.hpp"
+#include "scenes/diagram_registry.hpp"
 #include "scenes/plot_scene.hpp"
+#include "scenes/system_scene.hpp"
 
 namespace vibra::scenes {
 
@@ -19,12 +19,10 @@ std::unique_ptr<Scene> make_scene(const SceneConfig& config, const TrajectoryInf
   if (config.layout == Layout::plot)
     return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style, info.columns[1], info.exact,
                                        info.exact_label);
-  if (config.model != "pendulum" && config.model != "physical-pendulum")
-    throw UsageError("model " + config.model + " has no free-body diagram: use --layout plot (pendulum and "
-                     "physical-pendulum have diagrams)");
-  PendulumDiagramOptions diagram;
-  diagram.drag_magnification = config.drag_magnification;
-  return std::make_unique<PendulumScene>(config.width, config.height, info.mesh.T, style, diagram);
+  const DiagramKind& kind = diagram_for(config);
+  const Parameters parameters = model_parameters_of(config);
+  return std::make_unique<SystemScene>(config.width, config.height, info.mesh.T, style,
+                                       kind.make({config, parameters, info}));
 }
 
 }  // namespace vibra::scenes

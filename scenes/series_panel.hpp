@@ -11,7 +11,7 @@
 
 namespace vibra::scenes {
 
-/// How a plot follows a long run (SPEC 8.2). `whole_run` shows [0, T] with
+/// How a plot follows a long run (docs/drawing.md). `whole_run` shows [0, T] with
 /// the curve drawn up to the current time; the others show a window of width w.
 enum class WindowMode {
   whole_run,

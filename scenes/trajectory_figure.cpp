@@ -4,39 +4,12 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "core/parameters.hpp"
 #include "render/stop_signal.hpp"
 
 namespace vibra::scenes {
 
 namespace {
 using render::palette::blue;
-
-int column_index(const TrajectoryInfo& info, const std::string& name) {
-  const auto& c = info.columns;
-  const auto it = std::find(c.begin(), c.end(), name);
-  return it == c.end() ? -1 : static_cast<int>(it - c.begin());
-}
-
-bool has_path(const TrajectoryInfo& info) { return column_index(info, "x") > 0 && column_index(info, "y") > 0; }
-
-/// The main quantity's velocity: the column v<name> where the model has one
-/// (vx for x), else the column after the main quantity (v for u, omega for theta).
-int velocity_column(const TrajectoryInfo& info) {
-  const int named = column_index(info, "v" + info.columns[1]);
-  return named > 0 ? named : 2;
-}
-
-/// A column's name as the reader knows it: Greek letters, italics, subscripts.
-std::string quantity_markup(const std::string& column) {
-  if (column == "theta") return "<i>θ</i> (rad)";
-  if (column == "omega") return "<i>ω</i> (rad per time unit)";
-  if (column == "S") return "<i>S</i> / <i>mg</i>, wire force";
-  if (column == "D") return "<i>D</i> / <i>mg</i>, air drag";
-  if (column.size() == 2 && column[0] == 'v') return "<i>v<sub>" + column.substr(1) + "</sub></i>";
-  if (column.size() == 1) return "<i>" + column + "</i>";
-  return column;
-}
 
 /// Colours for the time panels in turn; vermillion is kept for the exact solution.
 render::Color panel_color(int k) {
@@ -52,46 +25,16 @@ struct Feed {
 };
 }  // namespace
 
-std::vector<std::string> plot_panel_names(const TrajectoryInfo& info) {
-  std::vector<std::string> names(info.columns.begin() + 1, info.columns.end());
-  names.push_back("exact");
-  names.push_back("phase");
-  if (has_path(info)) names.push_back("path");
-  return names;
-}
-
-std::vector<std::string> default_plot_panels(const TrajectoryInfo& info) {
-  if (has_path(info)) return {"path"};
-  if (column_index(info, "S") > 0 && column_index(info, "D") > 0) return {info.columns[1], "S", "D"};
-  return {info.columns[1]};
-}
-
 render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::string>& panels, int width, int height,
                                  const std::string& title) {
   const TrajectoryInfo& info = trajectory.info();
-  const std::vector<std::string> valid = plot_panel_names(info);
-  for (const auto& name : panels) {
-    if (std::find(valid.begin(), valid.end(), name) != valid.end()) continue;
-    std::string list;
-    for (const auto& v : valid) list += (list.empty() ? "" : ", ") + v;
-    const std::string near = closest_match(name, valid);
-    throw UsageError("unknown panel '" + name + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
-                     ": choose from " + list);
-  }
-  if (panels.empty()) throw UsageError("--panels is empty: name at least one panel, e.g. --panels " + valid[0]);
+  const std::vector<std::string> order = panel_order(info, panels);
   const bool with_exact = std::find(panels.begin(), panels.end(), "exact") != panels.end();
   if (with_exact && !info.exact)
     throw UsageError("this run has no exact solution to overlay: drop 'exact' from --panels (undamped always has one, "
                      "pendulum with alpha=0 its small-angle solution, two-body a circular orbit)");
   if (!std::isfinite(info.mesh.T)) throw UsageError("a plot needs a finite end time: give T or periods");
-
-  // `exact` joins the main quantity's panel, or stands in for it when it is not listed.
   const std::string& main = info.columns[1];
-  std::vector<std::string> order;
-  for (const auto& name : panels) {
-    const std::string panel = name == "exact" ? main : name;
-    if (panel != main || std::find(order.begin(), order.end(), main) == order.end()) order.push_back(panel);
-  }
 
   render::Figure figure(width, height, title);
   const double T = info.mesh.T;

@@ -4,18 +4,9 @@
 
 #include "core/trajectory.hpp"
 #include "render/figure.hpp"
+#include "scenes/plot_panels.hpp"
 
 namespace vibra::scenes {
-
-/// The panels `vibra plot` can draw for a run: every column but t (against
-/// t), `exact` (the exact solution over the main quantity's panel), `phase`
-/// (the main quantity against its velocity) and, for models with x and y
-/// columns, `path` (y against x, equal aspect).
-std::vector<std::string> plot_panel_names(const TrajectoryInfo&);
-
-/// What `vibra plot` draws without --panels: the path for models with x and
-/// y, theta, S and D for the pendulums (Exercise 1.25), else the main quantity.
-std::vector<std::string> default_plot_panels(const TrajectoryInfo&);
 
 /// Streams the trajectory once into a figure of the named panels, stacked
 /// (time panels next to each other share the t axis). Throws UsageError for

@@ -1,6 +1,7 @@
 // `vibra analyze` over the real executable: CSV columns, figures, help, and
 // bad input refused with one line, exit code 2 and no file.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <sstream>
 
 #include "cli_support.hpp"
@@ -9,19 +10,7 @@
 using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;
 
-namespace {
-std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    rows.emplace_back();
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) rows.back().push_back(cell);
-    if (!line.empty() && line.back() == ',') rows.back().push_back("");
-  }
-  return rows;
-}
-}  // namespace
+using vibra::test::csv_rows;
 
 TEST_CASE("analyze convergence prints i,dt,E,r with rates near the scheme's order", "[analysis]") {
   const auto r = run_vibra("analyze convergence undamped --set scheme=crank-nicolson --set T=2 --levels 4 --csv");
@@ -72,6 +61,7 @@ TEST_CASE("analyze experiments draw their figures at the requested size", "[anal
       "analyze frequency --size 800x600 -o " + (dir / "frequency.png"),
       "analyze amplitude --periods 4 -o " + (dir / "amplitude.png"),
       "analyze orbit --orbits 5 --steps-per-orbit 100,200 -o " + (dir / "orbit.png"),
+      "analyze period pendulum --set alpha=0 -o " + (dir / "period.png"),
   };
   for (const auto& command : commands) {
     INFO("vibra " << command);
@@ -83,12 +73,13 @@ TEST_CASE("analyze experiments draw their figures at the requested size", "[anal
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK(run_vibra(command + " --quiet").err.empty());
   }
-  for (const char* name : {"convergence.png", "energy.svg", "empirical.pdf", "frequency.png", "amplitude.png", "orbit.png"})
+  for (const char* name : {"convergence.png", "energy.svg", "empirical.pdf", "frequency.png", "amplitude.png", "orbit.png",
+                           "period.png"})
     CHECK(std::filesystem::file_size(dir / name) > 1000);
 }
 
 TEST_CASE("analyze experiments explain themselves with an example", "[analysis]") {
-  for (const char* experiment : {"convergence", "energy", "empirical", "frequency", "amplitude", "orbit"}) {
+  for (const char* experiment : {"convergence", "energy", "empirical", "frequency", "amplitude", "orbit", "period"}) {
     INFO(experiment);
     const auto r = run_vibra(std::string("analyze ") + experiment + " --help");
     CHECK(r.exit_code == 0);
@@ -100,7 +91,7 @@ TEST_CASE("analyze refuses bad input with one line, exit code 2 and no file", "[
   const std::pair<const char*, const char*> cases[] = {
       {"analyze", "needs an experiment"},
       {"analyze energi", "did you mean 'energy'"},
-      {"analyze convergence vibration -o OUT.png", "no exact solution"},
+      {"analyze convergence vibration --set 'F=cos(t)' -o OUT.png", "no exact solution"},
       {"analyze convergence", "needs a MODEL"},
       {"analyze convergence undamped --levels 1", "--levels"},
       {"analyze convergence undamped --set scheme=rk5", "not a valid scheme"},
@@ -116,6 +107,41 @@ TEST_CASE("analyze refuses bad input with one line, exit code 2 and no file", "[
       {"analyze frequency -o OUT.gif", ".png, .svg or .pdf"},
       {"analyze frequency -o OUT/missing/f.png", "does not exist"},
       {"analyze frequency --size 0x10", "WxH"},
+      {"analyze period", "needs a MODEL"},
+      {"analyze period pendulm", "did you mean 'pendulum'"},
+      {"analyze period undamped --set periods=0.5 -o OUT.png", "no complete period"},
+      {"analyze period undamped --set T=inf", "finite end time"},
+      {"analyze perod", "did you mean 'period'"},
   };
   for (const auto& [args, expected] : cases) vibra::test::check_refused(args, expected);
+}
+
+TEST_CASE("analyze period prints i,t,period,exact with the pendulum's elliptic period", "[analysis]") {
+  const auto r = run_vibra("analyze period pendulum --set alpha=0 --set Theta=60 --set steps_per_period=200 --csv");
+  REQUIRE(r.exit_code == 0);
+  const auto rows = csv_rows(r.out);
+  CHECK(rows[0] == std::vector<std::string>{"i", "t", "period", "exact"});
+  REQUIRE(rows.size() == 9);  // 10 small-angle periods hold 8 true ones between upward crossings
+  for (size_t i = 1; i < rows.size(); ++i) {
+    CHECK(std::stod(rows[i][3]) == Approx(6.7430014192503842).epsilon(1e-15));
+    CHECK(std::stod(rows[i][2]) == Approx(6.7430014192503842).epsilon(1e-7));
+  }
+  // The aligned table names the small-angle period too.
+  const auto table = run_vibra("analyze period pendulum --set alpha=0 --set Theta=60");
+  CHECK_THAT(table.out, Catch::Contains("small-oscillation period 6.283185307"));
+}
+
+TEST_CASE("analyze period leaves exact empty where unknown and adds the log decrement when damped", "[analysis]") {
+  const auto r = run_vibra("analyze period vibration --set b=0.2 --set scheme=rk4 --set steps_per_period=200 --csv");
+  REQUIRE(r.exit_code == 0);
+  const auto rows = csv_rows(r.out);
+  CHECK(rows[0] == std::vector<std::string>{"i", "t", "period", "exact", "log_decrement"});
+  // m = k = 1, b = 0.2: zeta = 0.1, zeta w P_d = 2 pi zeta / sqrt(1 - zeta^2).
+  const double decrement = 2 * M_PI * 0.1 / std::sqrt(1 - 0.01);
+  for (size_t i = 1; i + 1 < rows.size(); ++i) {
+    CHECK(rows[i][3].empty());
+    CHECK(std::stod(rows[i][4]) == Approx(decrement).epsilon(1e-6));  // RK4 at 200 steps per period: 3e-8
+  }
+  const auto undamped = csv_rows(run_vibra("analyze period undamped --set w=2 --csv").out);
+  CHECK(std::stod(undamped[1][3]) == Approx(M_PI).epsilon(1e-15));
 }

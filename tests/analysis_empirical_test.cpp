@@ -1,4 +1,4 @@
-// Empirical periods and amplitudes from the extrema (SPEC 7).
+// Empirical periods and amplitudes from the extrema (docs/analysis.md).
 #include <catch2/catch.hpp>
 #include <cmath>
 

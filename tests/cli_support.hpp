@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -103,6 +104,19 @@ inline void check_refused(std::string args, const std::string& expected) {
   CHECK_THAT(r.err, Catch::Contains(expected));
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   CHECK(dir.empty());
+}
+
+/// The cells of a command's CSV output, row by row (a trailing comma is an empty last cell).
+inline std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    rows.emplace_back();
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) rows.back().push_back(cell);
+    if (!line.empty() && line.back() == ',') rows.back().push_back("");
+  }
+  return rows;
 }
 
 }  // namespace vibra::test

@@ -54,8 +54,9 @@ struct Run {
   double largest_covered = 0, mean_covered = 0;
 };
 
-vibra::scenes::SceneConfig small_pendulum(const std::vector<std::pair<std::string, std::string>>& settings) {
-  vibra::scenes::SceneConfig config = vibra::scenes::load_scene("pendulum");
+vibra::scenes::SceneConfig small_scene(const std::vector<std::pair<std::string, std::string>>& settings,
+                                       const std::string& scene = "pendulum") {
+  vibra::scenes::SceneConfig config = vibra::scenes::load_scene(scene);
   for (const auto& [key, value] : settings) vibra::scenes::apply_setting(config, {key, value, "test"});
   config.width = 480, config.height = 270;
   return config;
@@ -78,8 +79,9 @@ std::vector<std::unique_ptr<vibra::scenes::Scene>> recorded_scenes(const vibra::
 
 /// Draws `frames` solver steps of a scene twice, by two scenes of the same
 /// config: on a canvas that tracks damage and on one that redraws in full.
-Run compare_redraws(const std::vector<std::pair<std::string, std::string>>& settings, int frames) {
-  const vibra::scenes::SceneConfig config = small_pendulum(settings);
+Run compare_redraws(const std::vector<std::pair<std::string, std::string>>& settings, int frames,
+                    const std::string& scene = "pendulum") {
+  const vibra::scenes::SceneConfig config = small_scene(settings, scene);
   auto scenes = recorded_scenes(config, 2);
   auto& tracked_scene = scenes[0];
   auto& full_scene = scenes[1];
@@ -182,10 +184,18 @@ TEST_CASE("damage: redrawing only what changed gives the full redraw, pixel for 
     compare_redraws({{"model", "undamped"}, {"layout", "plot"}}, 60);
     compare_redraws({{"model", "elastic-pendulum"}, {"layout", "plot"}}, 60);
   }
+  SECTION("every built-in scene's diagram, alone and beside its panels") {
+    for (const std::string& scene : vibra::scenes::builtin_scene_names()) {
+      for (const char* layout : {"fbd", "fbd+plot"}) {
+        INFO(scene << ", layout " << layout);
+        compare_redraws({{"layout", layout}}, 40, scene);
+      }
+    }
+  }
 }
 
 TEST_CASE("damage: a scene moved to a new canvas paints its whole background there", "[damage]") {
-  const vibra::scenes::SceneConfig config = small_pendulum({{"layout", "fbd"}});
+  const vibra::scenes::SceneConfig config = small_scene({{"layout", "fbd"}});
   auto scenes = recorded_scenes(config, 2);
   auto trajectory = vibra::find_model(config.model).build(vibra::scenes::model_parameters_of(config));
   std::vector<double> row(trajectory->width());

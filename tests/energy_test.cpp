@@ -1,4 +1,4 @@
-// The energy-error table of SPEC 3 (the book's Table after (1.49)).
+// The energy-error table of the book (the table after (1.49); docs/analysis.md).
 #include <catch2/catch.hpp>
 
 #include <cmath>

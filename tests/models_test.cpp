@@ -1,4 +1,4 @@
-// Properties of the chapter's models (SPEC 4, 5, 6).
+// Properties of the chapter's models (docs/models.md).
 #include <catch2/catch.hpp>
 #include <cmath>
 

@@ -1,4 +1,4 @@
-// The free-body diagram's geometry is a pure function of the state (SPEC 8.1).
+// The free-body diagram's geometry is a pure function of the state (docs/drawing.md).
 #include <catch2/catch.hpp>
 #include <cmath>
 

@@ -92,7 +92,7 @@ TEST_CASE("vibra plot refuses bad input with one line, exit code 2 and no file",
   const std::pair<const char*, const char*> cases[] = {
       {"plot pendulum --panels theta,omeg -o OUT.png", "did you mean 'omega'"},
       {"plot undamped --panels u,phse -o OUT.png", "did you mean 'phase'"},
-      {"plot vibration --panels u,exact -o OUT.png", "no exact solution"},
+      {"plot vibration --set damping=quadratic --set b=0.2 --panels u,exact -o OUT.png", "no exact solution"},
       {"plot undamped -o OUT.jpg", ".png, .svg or .pdf"},
       {"plot undamped", "needs an output file"},
       {"plot undamped --size 10x0 -o OUT.png", "WxH"},

@@ -1,4 +1,4 @@
-// The book's verification of the schemes (SPEC 1, 2, 7): exact discrete
+// The book's verification of the schemes (docs/schemes.md, docs/analysis.md): exact discrete
 // solution, manufactured solutions, and convergence rates against theory.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -10,5 +10,7 @@ void add_empirical_analysis(CLI::App& analyze);
 void add_frequency_analysis(CLI::App& analyze);
 void add_amplitude_analysis(CLI::App& analyze);
 void add_orbit_analysis(CLI::App& analyze);
+void add_resonance_analysis(CLI::App& analyze);
+void add_period_analysis(CLI::App& analyze);
 
 }  // namespace vibra::cli

@@ -15,9 +15,11 @@ void add_analyze_command(CLI::App& app) {
   add_frequency_analysis(*cmd);
   add_amplitude_analysis(*cmd);
   add_orbit_analysis(*cmd);
+  add_resonance_analysis(*cmd);
+  add_period_analysis(*cmd);
   // Our own check instead of require_subcommand, so a misspelt experiment is named and corrected.
   auto unknown = std::make_shared<std::string>();
-  cmd->add_option("EXPERIMENT", *unknown, "convergence, energy, empirical, frequency, amplitude or orbit");
+  cmd->add_option("EXPERIMENT", *unknown, "convergence, energy, empirical, frequency, amplitude, orbit, period or resonance");
   cmd->callback([cmd, unknown] {
     if (!cmd->get_subcommands().empty()) return;
     std::vector<std::string> names;
@@ -39,6 +41,7 @@ void add_analyze_command(CLI::App& app) {
       "  vibra analyze frequency -o figure_1_4.png\n"
       "  vibra analyze amplitude -o amplitudes.png\n"
       "  vibra analyze orbit --scheme pefrl --orbits 100\n"
+      "  vibra analyze period pendulum --set alpha=0 --set Theta=60 --csv\n"
       "vibra analyze EXPERIMENT --help shows an experiment's options.\n");
 }
 

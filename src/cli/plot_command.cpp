@@ -9,6 +9,7 @@
 #include "cli/wrote_message.hpp"
 #include "core/error.hpp"
 #include "render/figure.hpp"
+#include "scenes/comparison_figure.hpp"
 #include "scenes/run_caption.hpp"
 #include "scenes/scene_config.hpp"
 #include "scenes/trajectory_figure.hpp"
@@ -22,21 +23,45 @@ struct PlotOptions {
   std::string output;
   std::string panels;
   std::string size;
+  std::vector<std::string> compare;
   bool help = false;
   bool quiet = false;
   bool transparent = false;
 };
 
-constexpr const char* kUsage = "Usage: vibra plot MODEL [--set KEY=VALUE]... -o FILE.png|svg|pdf [--panels LIST] [--size WxH]\n";
+constexpr const char* kUsage =
+    "Usage: vibra plot MODEL [--set KEY=VALUE]... [--compare KEY=V1,V2,...] -o FILE.png|svg|pdf [--panels LIST] "
+    "[--size WxH]\n";
 constexpr const char* kExamples =
     "\nPanels: any column of the model but t (against t; neighbours share the t axis), exact (the exact\n"
     "solution over the main quantity, dashed), phase (main quantity against its velocity), path (y against x,\n"
     "equal aspect; elastic-pendulum and two-body). Defaults: theta,S,D for the pendulums, path for\n"
     "elastic-pendulum and two-body, the main quantity otherwise.\n"
+    "\n--compare KEY=V1,V2,... runs the model once per value (up to 8) of one key: scheme, dt,\n"
+    "steps_per_period or a model key. Every panel draws one curve per run, the exact solution dashed where\n"
+    "known; a run that leaves the view is marked 'blew up at t = ...'. Default panels: the main quantity and\n"
+    "phase (path for elastic-pendulum and two-body).\n"
     "\nExamples:\n"
     "  vibra plot pendulum -o pendulum.png                       # theta, S and D against t\n"
     "  vibra plot undamped --panels u,exact --set periods=4 -o u.svg\n"
-    "  vibra plot elastic-pendulum --set Theta=40 --set eps=0.1 -o path.pdf\n";
+    "  vibra plot elastic-pendulum --set Theta=40 --set eps=0.1 -o path.pdf\n"
+    "  vibra plot undamped --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 --set steps_per_period=40 \\\n"
+    "      --set periods=4 -o schemes.png\n";
+
+int figure_height(size_t panels) { return panels > 2 ? 960 : 720; }
+
+void plot_comparison(const PlotOptions& o, const Parameters& parameters) {
+  if (o.compare.size() > 1) throw UsageError("--compare is given " + std::to_string(o.compare.size()) +
+                                             " times: compare one key at a time, e.g. --compare dt=0.1,0.05");
+  Comparison comparison(find_model(o.model), parameters, parse_comparison(o.compare[0]));
+  const TrajectoryInfo& info = comparison.trajectory(0).info();
+  const std::vector<std::string> panels =
+      o.panels.empty() ? scenes::default_comparison_panels(info) : word_list("--panels", o.panels);
+  int width = 1280, height = figure_height(panels.size());
+  if (!o.size.empty()) scenes::parse_size(o.size, width, height);
+  scenes::comparison_figure(comparison, panels, width, height, scenes::comparison_caption(o.model, comparison))
+      .write(o.output);
+}
 
 void run_plot(const PlotOptions& o) {
   if (o.help || o.model.empty()) {
@@ -47,10 +72,11 @@ void run_plot(const PlotOptions& o) {
   if (o.output.empty()) throw UsageError("vibra plot needs an output file: add -o FILE.png, FILE.svg or FILE.pdf");
   render::require_picture_extension(o.output);
   const Parameters parameters = model_settings(o.model, o.settings);
+  if (!o.compare.empty()) return plot_comparison(o, parameters);
   std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
   const std::vector<std::string> panels =
       o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : word_list("--panels", o.panels);
-  int width = 1280, height = panels.size() > 2 ? 960 : 720;
+  int width = 1280, height = figure_height(panels.size());
   if (!o.size.empty()) scenes::parse_size(o.size, width, height);
   const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);
   render::Figure figure = scenes::trajectory_figure(*trajectory, panels, width, height, title);
@@ -70,6 +96,8 @@ void add_plot_command(CLI::App& app) {
       ->allow_extra_args(false);
   cmd->add_option("-o,--output", o->output, "Picture file: .png, .svg or .pdf");
   cmd->add_option("--panels", o->panels, "Comma-separated panels, e.g. theta,S,D or u,exact or path");
+  cmd->add_option("--compare", o->compare, "KEY=V1,V2,...: one run per value of KEY, drawn together (up to 8)")
+      ->allow_extra_args(false);
   cmd->add_option("--size", o->size, "Picture size WxH in pixels (default 1280x720, 1280x960 for 3+ panels)");
   cmd->add_flag("--transparent", o->transparent, "No background: PNG with alpha, SVG/PDF without the paper rectangle");
   cmd->add_flag("-q,--quiet", o->quiet, "No message on stderr after writing");

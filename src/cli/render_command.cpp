@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "core/error.hpp"
 #include "render/standard_output.hpp"
+#include "scenes/diagram_registry.hpp"
 #include "scenes/render_job.hpp"
 #include "scenes/scene_config.hpp"
 
@@ -28,14 +29,24 @@ struct RenderOptions {
 
 std::string scene_keys_help() {
   std::string out = "\nScene keys (in a scene file, or --set KEY=VALUE; any other key goes to the model):\n";
-  char line[256];
+  char line[512];
   for (const auto& key : scenes::scene_keys()) {
     std::snprintf(line, sizeof line, "  %-20s %-58s default: %s\n", key.name.c_str(), key.meaning.c_str(),
                   key.default_value.c_str());
     out += line;
   }
-  out += "\nBuilt-in scenes:";
-  for (const auto& name : scenes::builtin_scene_names()) out += " " + name;
+  out += "\nBuilt-in scenes (vibra render NAME):\n";
+  for (const auto& name : scenes::builtin_scene_names()) {
+    std::snprintf(line, sizeof line, "  %-20s %s\n", name.c_str(), scenes::builtin_scene_summary(name).c_str());
+    out += line;
+  }
+  out += "\nDiagrams (scene key diagram; a model name as SCENE draws its default one):\n";
+  for (const auto& kind : scenes::all_diagrams()) {
+    std::string models;
+    for (const auto& m : kind.models) models += (models.empty() ? "" : ", ") + m;
+    std::snprintf(line, sizeof line, "  %-20s [%s] %s\n", kind.name.c_str(), models.c_str(), kind.summary.c_str());
+    out += line;
+  }
   out += "\nExamples:\n  vibra render                                   # pendulum.mp4\n"
          "  vibra render pendulum_book -o frames/tmp_%04d.png\n"
          "  vibra render --set Theta=40 --set alpha=0.8 -o lecture.webm\n"
@@ -60,7 +71,7 @@ void run(const RenderOptions& o) {
   flag("size", o.size, "--size");
   flag("layout", o.layout, "--layout");
   flag("fps", o.fps, "--fps");
-  flag("speed", o.speed, "--speed");
+  flag("video_speed", o.speed, "--speed");
   flag("window", o.window, "--window");
   flag("window_mode", o.window_mode, "--window-mode");
   if (o.frame_per_step) request.scene.frame_per_step = true;

@@ -20,13 +20,14 @@ struct SolveOptions {
   std::vector<std::string> settings;
   std::string output;
   long long every = 1;
+  bool energy = false;
   bool help = false;
   bool quiet = false;
 };
 
 void run_solve(const SolveOptions& o) {
   if (o.help || o.model.empty()) {
-    std::printf("Usage: vibra solve MODEL [--set KEY=VALUE]... [--output FILE] [--every K]\n\n%s",
+    std::printf("Usage: vibra solve MODEL [--set KEY=VALUE]... [--output FILE] [--every K] [--energy]\n\n%s",
                 o.model.empty() ? models_help().c_str() : model_keys_help(find_model(o.model)).c_str());
     if (!o.help) throw UsageError("vibra solve needs a MODEL, e.g. vibra solve pendulum");
     return;
@@ -34,6 +35,10 @@ void run_solve(const SolveOptions& o) {
   if (o.every < 1) throw UsageError("--every must be >= 1");
   Parameters p = model_settings(o.model, o.settings);
   std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(p);
+  const TrajectoryInfo& info = trajectory->info();
+  if (o.energy && !info.energy) throw UsageError("model " + o.model + " has no mechanical energy: drop --energy");
+  std::vector<std::string> columns = info.columns;
+  if (o.energy) columns.insert(columns.end(), {"E", "E_rel"});
 
   std::optional<render::TemporaryFile> file;
   std::FILE* out = stdout;
@@ -46,11 +51,21 @@ void run_solve(const SolveOptions& o) {
     if (out != stdout) std::fclose(out), out = stdout;
   };
   try {
-    CsvWriter csv(out, trajectory->info().columns);
-    std::vector<double> row(trajectory->width());
+    CsvWriter csv(out, columns);
+    std::vector<double> row(columns.size());
+    const std::span<double> state(row.data(), trajectory->width());
+    double E0 = 0;
+    if (o.energy) {
+      trajectory->row(state);
+      E0 = info.energy(state).total();
+    }
     do {
       if (trajectory->index() % o.every == 0 || trajectory->done()) {
-        trajectory->row(row);
+        trajectory->row(state);
+        if (o.energy) {
+          const double E = info.energy(state).total();
+          row[state.size()] = E, row[state.size() + 1] = relative_energy_change(E, E0);
+        }
         csv.write(row);
       }
       if ((trajectory->index() & 0xffff) == 0) render::throw_if_stop_requested();
@@ -83,6 +98,8 @@ void add_solve_command(CLI::App& app) {
       ->allow_extra_args(false);
   cmd->add_option("-o,--output", options->output, "CSV file (default: standard output)");
   cmd->add_option("--every", options->every, "Write every K-th step (the last step is always written)");
+  cmd->add_flag("--energy", options->energy,
+                "Append the energy E (scheme's own velocity) and E_rel = (E - E(0))/|E(0)|");
   cmd->add_flag("-q,--quiet", options->quiet, "No message on stderr after writing a file");
   cmd->callback([options] { run_solve(*options); });
 }

@@ -77,7 +77,8 @@ void Parameters::set(const std::string& key, const std::string& value) {
     case ValueKind::number: evaluate_constant(key, value); break;
     case ValueKind::angle: trial.angle(key); break;
     case ValueKind::formula: trial.formula(key); break;
-    case ValueKind::choice: break;
+    case ValueKind::choice:
+    case ValueKind::text: break;
   }
   values_[key] = value;
 }

@@ -13,6 +13,7 @@ enum class ValueKind {
   angle,       ///< degrees by default, radians with a `rad` suffix: 70, 0.7rad, pi/4 rad
   formula,     ///< an expression in the model's variables, e.g. sin(u)
   choice,      ///< one of a fixed list of words
+  text,        ///< a word or a file path, checked by the model (e.g. road = sine or a file)
 };
 
 /// One `--set` key: its meaning, unit and default, shown by `--help`.

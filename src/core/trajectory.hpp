@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/hermite.hpp"
+#include "core/energy_parts.hpp"
 #include "core/solution_stream.hpp"
 #include "core/time_mesh.hpp"
 
@@ -19,7 +21,22 @@ struct TrajectoryInfo {
   /// Exact solution of the main quantity where known (empty otherwise).
   std::function<double(double t)> exact;
   std::string exact_label;  ///< e.g. "exact" or "small-angle"
+  /// The true period of the main quantity where known (the pendulum's
+  /// 4 K(sin(Theta/2)), not its small-angle 2 pi), 0 otherwise. The
+  /// small-oscillation period is mesh.period.
+  double exact_period = 0;
+  /// True when drag, friction or a dashpot takes energy out of the system.
+  bool damped = false;
+  /// Kinetic and potential energy from a row, with the scheme's own velocity
+  /// (empty for a model without a mechanical energy). With an external force
+  /// the energy is not conserved: E - E(0) then includes the force's work.
+  EnergyFunction energy;
+  std::string energy_unit;  ///< what the energy is measured in, e.g. "m g L"
 };
+
+/// The column holding the main quantity's velocity: v<name> where the model
+/// has it (vx for x), else the column after the main quantity (v for u, omega for theta).
+int velocity_column(const TrajectoryInfo&);
 
 /// A model's solution as a stream of table rows, with the scheme and the
 /// dimension erased: the CSV writer, frame sampler and ASCII plotter read it.
@@ -76,14 +93,9 @@ class SecondOrderTrajectory final : public Trajectory {
   Sample<D> interpolate(double t) const {
     const Sample<D>& a = previous_;
     const Sample<D>& b = stream_.current();
-    const double h = b.t - a.t;
-    if (h <= 0 || t >= b.t) return b;
+    if (b.t - a.t <= 0 || t >= b.t) return b;
     if (t <= a.t) return a;
-    const double s = (t - a.t) / h, s2 = s * s, s3 = s2 * s;
-    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
-    const Vec<D> acc_a = system_->acceleration(a.u, a.v, a.t), acc_b = system_->acceleration(b.u, b.v, b.t);
-    return {t, h00 * a.u + h10 * h * a.v + h01 * b.u + h11 * h * b.v,
-            h00 * a.v + h10 * h * acc_a + h01 * b.v + h11 * h * acc_b};
+    return hermite_between<D>(a, system_->acceleration(a.u, a.v, a.t), b, system_->acceleration(b.u, b.v, b.t), t);
   }
 
   std::shared_ptr<const SecondOrderSystem<D>> system_;

@@ -41,6 +41,7 @@ void read_every_key(const Parameters& parameters) {
         case ValueKind::angle: (void)parameters.angle(spec.name); break;
         case ValueKind::formula: (void)parameters.formula(spec.name); break;
         case ValueKind::choice: (void)parameters.choice(spec.name); break;
+        case ValueKind::text: (void)parameters.text(spec.name); break;
       }
     });
   }

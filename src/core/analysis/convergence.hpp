@@ -7,7 +7,7 @@
 
 namespace vibra {
 
-/// One row of a convergence study.
+/// One row of a convergence study (docs/analysis.md).
 struct ConvergenceLevel {
   double dt;
   double error;  ///< E = sqrt(dt sum_n (u^n - u_e(t_n))^2) over the whole mesh

@@ -21,7 +21,7 @@ struct OscillationCycle {
   double amplitude;  ///< a_i = |u_max[i] - u_min[i]| / 2
 };
 
-/// Local periods and amplitudes of an oscillation from its extrema (SPEC 7),
+/// Local periods and amplitudes of an oscillation from its extrema (docs/analysis.md),
 /// fed one sample at a time in constant memory: maxima where
 /// u^{n-1} < u^n > u^{n+1}, minima the other way round.
 ///

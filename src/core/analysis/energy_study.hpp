@@ -4,7 +4,7 @@
 
 namespace vibra {
 
-/// One entry of the chapter's energy-error table (SPEC 3).
+/// One entry of the chapter's energy-error table (docs/analysis.md).
 struct EnergyError {
   std::string scheme;
   double T, dt;

@@ -17,7 +17,8 @@ ModelConvergence model_convergence(const std::string& model_name, const std::vec
   if (!info.exact || info.exact_label != "exact")
     throw UsageError("model " + model_name + " has no exact solution with these settings" +
                      (info.exact ? " (its " + info.exact_label + " solution is an approximation)" : "") +
-                     ": use undamped, or two-body with a circular orbit (its default)");
+                     ": use undamped, vibration with a linear spring and no forcing, resonance, sliding-box released from "
+                     "rest, or two-body with a circular orbit (its default)");
 
   auto make = [&](double dt) { return model.build(parameters_with_dt(model, settings, dt)); };
   const SchemeInfo& scheme = scheme_info(info.mesh.scheme);

@@ -42,6 +42,14 @@ ModelDefinition elastic_pendulum_model() {
       return Vec<2>(-factor * x, -factor * (y - 1) - beta);
     }));
     system->damping = gamma > 0 ? Damping::quadratic : Damping::none;
+    info.damped = gamma > 0;
+    // Gravity beta y plus the wire's 0.5 beta/(1 - beta) (L - beta)^2, whose
+    // gradient is the force above; conserved without drag.
+    info.energy = [beta](std::span<const double> row) {
+      const double x = row[1], y = row[2], stretch = std::hypot(x, y - 1) - beta;
+      return EnergyParts{0.5 * (row[3] * row[3] + row[4] * row[4]), beta * y + 0.5 * beta / (1 - beta) * stretch * stretch};
+    };
+    info.energy_unit = "m g L0 / beta^2";
     system->damping_per_mass = gamma / beta;
     const Vec<2> u0((1 + eps) * std::sin(Theta), 1 - (1 + eps) * std::cos(Theta));
     return std::make_unique<SecondOrderTrajectory<2>>(

@@ -37,5 +37,17 @@ ModelDefinition pendulum_model();
 ModelDefinition physical_pendulum_model();
 ModelDefinition elastic_pendulum_model();
 ModelDefinition two_body_model();
+ModelDefinition resonance_model();
+ModelDefinition sliding_box_model();
+ModelDefinition bumpy_road_model();
+
+class RoadProfile;
+/// The road a bumpy-road run drives on (its keys road, A, wavelength, seed,
+/// dx), at least `length` metres long for generated roads.
+RoadProfile road_of(const Parameters&, double length);
+
+/// Steady amplitude of u'' + beta u' + u = sin(gamma t):
+/// 1 / sqrt((1 - gamma^2)^2 + (beta gamma)^2) (section 1.12.4).
+double steady_amplitude(double beta, double gamma);
 
 }  // namespace vibra

@@ -1,5 +1,6 @@
 #include <cmath>
 
+#include "core/analysis/pendulum_period.hpp"
 #include "core/error.hpp"
 #include "core/models/model.hpp"
 
@@ -19,8 +20,11 @@ std::vector<KeySpec> angle_keys(const std::string& Theta_default) {
           {"Omega", ValueKind::angle, "0", "deg/time", "initial angular velocity (suffix rad for radians)", {}, {}}};
 }
 
+/// The pendulums share the scaled equation theta'' + alpha |theta'| theta' +
+/// sin(theta) = 0; `energy_unit` names what scales their energy 0.5 omega^2 + 1 - cos(theta).
 std::unique_ptr<Trajectory> pendulum_trajectory(const Parameters& p, const std::vector<std::string>& columns,
-                                                const std::string& name, double alpha, double wire_factor) {
+                                                const std::string& name, double alpha, double wire_factor,
+                                                const std::string& energy_unit) {
   const double Theta = p.angle("Theta"), Omega = p.angle("Omega");
   if (alpha < 0) throw UsageError("the drag coefficient alpha must be >= 0");
   TrajectoryInfo info;
@@ -31,7 +35,14 @@ std::unique_ptr<Trajectory> pendulum_trajectory(const Parameters& p, const std::
   if (alpha == 0) {
     info.exact = [=](double t) { return Theta * std::cos(t) + Omega * std::sin(t); };
     info.exact_label = "small-angle";
+    if (info.amplitude_bound > 0) info.exact_period = pendulum_period(info.amplitude_bound);
   }
+  info.damped = alpha > 0;
+  info.energy = [](std::span<const double> row) {
+    const double theta = row[1], omega = row[2], half_sine = std::sin(0.5 * theta);
+    return EnergyParts{0.5 * omega * omega, 2 * half_sine * half_sine};  // 1 - cos(theta) without cancellation
+  };
+  info.energy_unit = energy_unit;
   // Scaled (1.131): theta'' = -sin(theta) - alpha |theta'| theta'.
   auto system = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::sine(1.0));
   system->damping = alpha > 0 ? Damping::quadratic : Damping::none;
@@ -75,7 +86,7 @@ ModelDefinition pendulum_model() {
               (2 * p.positive("m"));
       p.positive("g");
     }
-    return pendulum_trajectory(p, columns, name, alpha, 1.0);
+    return pendulum_trajectory(p, columns, name, alpha, 1.0, "m g L");
   };
   return m;
 }
@@ -108,7 +119,10 @@ ModelDefinition physical_pendulum_model() {
     const double L_cm = (0.5 * m_rod * L + m_bob * L) / M;      // pivot to centre of mass
     const double c = 0.5 * p.positive("C_D") * p.positive("rho") * M_PI * std::pow(p.number("R"), 2) * L * L * L;
     // S is the pivot force along the rod over M g: cos(theta) + M L_cm^2 / I_P omega^2.
-    return pendulum_trajectory(p, columns, name, c / moment, M * L_cm * L_cm / moment);
+    // Energy 0.5 I_P theta_t^2 + M g L_cm (1 - cos theta) with theta_t = omega / t_c
+    // is M g L_cm (0.5 omega^2 + 1 - cos theta): the scaled pendulum's, in units of M g L_cm.
+    return pendulum_trajectory(p, columns, name, c / moment, M * L_cm * L_cm / moment,
+                               "M g L_cm (total mass, pivot to centre of mass)");
   };
   return m;
 }

@@ -6,7 +6,9 @@ namespace vibra {
 const std::vector<ModelDefinition>& all_models() {
   static const std::vector<ModelDefinition> models = {undamped_model(),          vibration_model(),
                                                       pendulum_model(),          physical_pendulum_model(),
-                                                      elastic_pendulum_model(), two_body_model()};
+                                                      elastic_pendulum_model(), two_body_model(),
+                                                      resonance_model(),        sliding_box_model(),
+                                                      bumpy_road_model()};
   return models;
 }
 

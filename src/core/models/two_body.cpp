@@ -37,6 +37,12 @@ ModelDefinition two_body_model() {
       info.exact_label = "exact";
     }
     info.amplitude_bound = a > 0 ? 2 * a : 0;
+    // x crosses zero upward once per orbit around the star at the origin.
+    info.exact_period = info.mesh.period;
+    info.energy = [](std::span<const double> row) {
+      return EnergyParts{0.5 * (row[3] * row[3] + row[4] * row[4]), -1 / std::hypot(row[1], row[2])};
+    };
+    info.energy_unit = "per unit mass, scaled";
     auto system = std::make_shared<SecondOrderSystem<2>>(SecondOrderSystem<2>::general([](const Vec<2>& x, double) -> Vec<2> {
       const double r2 = x.squaredNorm();
       return -x / (r2 * std::sqrt(r2));

@@ -26,6 +26,11 @@ ModelDefinition undamped_model() {
     info.amplitude_bound = std::hypot(I, V / w);
     info.exact = [=](double t) { return I * std::cos(w * t) + V / w * std::sin(w * t); };
     info.exact_label = "exact";
+    info.exact_period = 2 * M_PI / w;
+    info.energy = [w](std::span<const double> row) {
+      return EnergyParts{0.5 * row[2] * row[2], 0.5 * w * w * row[1] * row[1]};
+    };
+    info.energy_unit = "per unit mass";
     double w_scheme = w;
     if (info.mesh.scheme == Scheme::centered_adjusted) w_scheme = w * (1 - w * w * info.mesh.dt * info.mesh.dt / 24);
     auto system = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::spring(w_scheme * w_scheme));

@@ -5,7 +5,7 @@ namespace vibra {
 
 /// The Position Extended Forest-Ruth Like method (1.107)-(1.118): a
 /// 4th-order symplectic splitting for damping-free problems. Each force
-/// evaluation gets the time of its position sub-step (SPEC section 2).
+/// evaluation gets the time of its position sub-step (docs/schemes.md).
 template <int D>
 class Pefrl {
  public:

@@ -8,7 +8,7 @@ namespace vibra {
 ///   v^{n+1/2} = v^{n-1/2} + dt a(u^n, v, t_n),  u^{n+1} = u^n + dt v^{n+1/2}
 /// with the damping taken implicitly: linear as the mean of v^{n-1/2} and
 /// v^{n+1/2}, quadratic as the geometric mean |v^{n-1/2}| v^{n+1/2}.
-/// Start v^{1/2} = V + dt/2 a(I, V, 0) (the general form; SPEC section 9).
+/// Start v^{1/2} = V + dt/2 a(I, V, 0) (the general form; docs/misprints.md).
 /// The reported v^n is the mean of the two half-step velocities.
 template <int D>
 class Staggered {

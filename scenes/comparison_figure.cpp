@@ -1,0 +1,166 @@
+#include "scenes/comparison_figure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.hpp"
+#include "render/stop_signal.hpp"
+#include "scenes/plot_panels.hpp"
+#include "scenes/run_caption.hpp"
+
+namespace vibra::scenes {
+
+namespace {
+/// The view holds this many times the largest amplitude the members can reach:
+/// room for a scheme that gains energy to be seen doing it before it leaves.
+constexpr double kViewFactor = 2;
+
+const render::SeriesStyle kExactStyle{render::palette::ink.with_alpha(0.75), 1.8, true, false};
+
+bool is_time_key(const std::string& key) {
+  return key == "scheme" || key == "dt" || key == "steps_per_period" || key == "T" || key == "periods";
+}
+
+/// A member's series in one panel, fed from two columns of its rows.
+struct Feed {
+  size_t member;
+  int panel;
+  render::Series* series;
+  int x_column, y_column;
+};
+
+/// A key as the reader knows it: Δt for dt.
+std::string key_markup(const std::string& key) { return key == "dt" ? "Δ<i>t</i>" : markup_escaped(key); }
+
+/// A member's legend entry: the scheme's name, or "Δt = 0.05".
+std::string member_markup(const Comparison& c, size_t m) {
+  const std::string& key = c.request().key;
+  return key == "scheme" ? c.value(m) : key_markup(key) + " = " + markup_escaped(c.value(m));
+}
+
+std::string blow_up_note(double t) {
+  char text[64];
+  std::snprintf(text, sizeof text, ": blew up at <i>t</i> = %.3g", t);
+  return text;
+}
+
+/// The exact solution over [0, T]: finer than the mesh (its envelope keeps every peak) and 4 samples per pixel column.
+void add_exact_curve(render::Series& series, const TrajectoryInfo& info, double T, long long steps, int width) {
+  const long long samples = std::max(4LL * width, steps);
+  for (long long i = 0; i <= samples; ++i) series.add(T * i / samples, info.exact(T * i / samples));
+}
+
+/// The exact solution in the phase plane, its velocity by a centered
+/// difference (error ~1e-10, far below a pixel), over one period or [0, T].
+void add_exact_phase(render::Series& series, const TrajectoryInfo& info, double T) {
+  const double period = info.exact_period > 0 ? info.exact_period : info.mesh.period;
+  const double span = period > 0 ? std::min(T, period) : T, h = 1e-5 * span;
+  for (int i = 0; i <= 2000; ++i) {
+    const double t = span * i / 2000;
+    series.add(info.exact(t), (info.exact(t + h) - info.exact(t - h)) / (2 * h));
+  }
+}
+}  // namespace
+
+std::vector<std::string> default_comparison_panels(const TrajectoryInfo& info) {
+  if (column_index(info, "x") > 0 && column_index(info, "y") > 0) return {"path"};
+  return {info.columns[1], "phase"};
+}
+
+render::Figure comparison_figure(Comparison& comparison, const std::vector<std::string>& panels, int width, int height,
+                                 const std::string& title) {
+  const TrajectoryInfo& first = comparison.trajectory(0).info();
+  const std::vector<std::string> order = panel_order(first, panels);
+  const double T = comparison.end_time();
+  if (!std::isfinite(T)) throw UsageError("a plot needs a finite end time: give T or periods");
+  double bound = 0;
+  long long steps = 0;
+  for (size_t m = 0; m < comparison.size(); ++m) {
+    bound = std::max(bound, comparison.trajectory(m).info().amplitude_bound);
+    steps = std::max(steps, comparison.trajectory(m).info().mesh.steps);
+  }
+  if (bound > 0) comparison.set_escape_limit(kViewFactor * bound);
+  // Comparing schemes or time steps: one problem, one exact solution. Comparing
+  // a model key: each member has its own, dashed in its colour.
+  const bool shared_exact = is_time_key(comparison.request().key);
+
+  render::Figure figure(width, height, title);
+  std::vector<Feed> feeds;
+  std::vector<std::vector<render::Series*>> labelled(comparison.size());  // the legend's entries, per member
+  for (const auto& name : order) {
+    const bool time_panel = name != "path" && name != "phase";
+    const int x = name == "path" ? column_index(first, "x") : time_panel ? 0 : 1;
+    const int y = name == "path" ? column_index(first, "y") : name == "phase" ? velocity_column(first) : column_index(first, name);
+    render::PanelOptions options{quantity_markup(first.columns[y]), quantity_markup(first.columns[x]),
+                                 render::AxisScale::linear, render::AxisScale::linear, name == "path"};
+    if (time_panel) options.x_range = std::make_pair(0.0, T);
+    const int p = figure.add_panel(options);
+    const bool legend = p == 0;  // the colours are the same in every panel
+    for (size_t m = 0; m < comparison.size(); ++m) {
+      const render::SeriesStyle style{render::palette::series(m), 2.2};
+      render::Series& s = time_panel ? figure.add_curve(p, legend ? member_markup(comparison, m) : "", style, 0, T)
+                                     : figure.add_path(p, legend ? member_markup(comparison, m) : "", style);
+      feeds.push_back({m, p, &s, x, y});
+      if (legend) labelled[m].push_back(&s);
+    }
+    const bool main_quantity = name == first.columns[1] || name == "phase";
+    if (!main_quantity) continue;
+    for (size_t m = 0; m < comparison.size(); ++m) {
+      const TrajectoryInfo& info = comparison.trajectory(m).info();
+      if (!info.exact || (shared_exact && m > 0)) continue;
+      render::SeriesStyle style = kExactStyle;
+      if (!shared_exact) style.color = render::palette::series(m).with_alpha(0.8), style.line_width = 1.4;
+      const std::string label = legend && (shared_exact || m == 0) ? info.exact_label + " (dashed)" : "";
+      render::Series& exact = time_panel ? figure.add_curve(p, shared_exact ? label : "", style, 0, T)
+                                         : figure.add_path(p, shared_exact ? label : "", style);
+      if (!shared_exact && !label.empty()) figure.add_points(p, label, kExactStyle);  // a legend entry only
+      if (time_panel) add_exact_curve(exact, info, T, steps, width);
+      else add_exact_phase(exact, info, T);
+    }
+  }
+
+  std::vector<std::vector<double>> last(comparison.size());
+  long long samples = 0;
+  comparison.advance_to(T, [&](size_t member, std::span<const double> row) {
+    for (const Feed& f : feeds)
+      if (f.member == member) f.series->add(row[f.x_column], row[f.y_column]);
+    last[member].assign(row.begin(), row.end());
+    if ((++samples & 0xffff) == 0) render::throw_if_stop_requested();
+  });
+
+  // Where a member blew up: a dot at its last point and a note in the legend.
+  for (size_t m = 0; m < comparison.size(); ++m) {
+    if (!comparison.blew_up(m)) continue;
+    for (render::Series* s : labelled[m]) s->set_label(s->label() + blow_up_note(comparison.blow_up_time(m)));
+    for (const Feed& f : feeds)
+      if (f.member == m && !last[m].empty())
+        figure.add_points(f.panel, "", {render::palette::series(m), 0, false, true})
+            .add(last[m][f.x_column], last[m][f.y_column]);
+  }
+  return figure;
+}
+
+std::string comparison_caption(const std::string& model, const Comparison& comparison) {
+  const std::string& key = comparison.request().key;
+  std::string caption = model;
+  const TimeMesh& mesh = comparison.trajectory(0).info().mesh;
+  bool same_scheme = true, same_dt = true;
+  for (size_t m = 1; m < comparison.size(); ++m) {
+    same_scheme &= comparison.trajectory(m).info().mesh.scheme == mesh.scheme;
+    same_dt &= comparison.trajectory(m).info().mesh.dt == mesh.dt;
+  }
+  if (same_scheme) caption += " · " + std::string(scheme_info(mesh.scheme).name);
+  if (same_dt) {
+    char dt[64];
+    std::snprintf(dt, sizeof dt, " · Δ<i>t</i> = %.4g", mesh.dt);
+    caption += dt;
+  }
+  for (const auto& a : comparison.parameters(0).given_assignments()) {
+    const std::string k = a.substr(0, a.find('='));
+    if (k != key && !is_time_key(k)) caption += " · " + markup_escaped(a);
+  }
+  return caption + " · comparing " + key_markup(key);
+}
+
+}  // namespace vibra::scenes

@@ -1,0 +1,51 @@
+#pragma once
+#include <Eigen/Geometry>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "render/canvas.hpp"
+#include "scenes/series_panel.hpp"
+#include "scenes/scene_style.hpp"
+
+namespace vibra::scenes {
+
+using WorldBox = Eigen::AlignedBox2d;
+using Point = render::Point;
+
+/// One plot panel beside a diagram (layout fbd+plot): a y label and its curves.
+struct PanelSpec {
+  std::string label;  ///< Pango markup, e.g. "<i>u</i>"
+  std::vector<SeriesSpec> series;
+};
+
+/// A physical system drawn at one instant in world units (y up, equal
+/// aspect): the part of a scene that knows the physics. SystemScene lays it
+/// out beside its panels, fits the view and adds the time read-out. Rows are
+/// the model's columns, t first.
+class Diagram {
+ public:
+  virtual ~Diagram() = default;
+
+  /// Pre-pass over every solver row of the run: extend `world` by what must
+  /// stay in view (body, springs, arrow tips), so nothing is clipped.
+  virtual void record(std::span<const double> row, WorldBox& world) = 0;
+  /// After the pre-pass: the fixed parts (walls, floor) and any balancing of
+  /// the box (e.g. symmetric about a pivot).
+  virtual void finish_recording(WorldBox& world) { (void)world; }
+  /// A view that follows the body (a vehicle on a long road): the world box
+  /// to show at this row. Empty for a fixed view over the whole run.
+  virtual std::optional<WorldBox> view_at(std::span<const double> row) const {
+    (void)row;
+    return std::nullopt;
+  }
+  /// Parts that never move, drawn once under every frame (fixed views only).
+  virtual void draw_static(render::Canvas&, const render::WorldView&) const {}
+  /// Everything that moves, at this row.
+  virtual void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) = 0;
+  /// The panels shown beside the diagram in layout fbd+plot, top to bottom.
+  virtual std::vector<PanelSpec> panels() const = 0;
+};
+
+}  // namespace vibra::scenes

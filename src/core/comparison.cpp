@@ -1,0 +1,107 @@
+#include "core/comparison.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace vibra {
+
+namespace {
+std::string trimmed(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return "";
+  return std::string(s.substr(first, s.find_last_not_of(" \t") - first + 1));
+}
+}  // namespace
+
+ComparisonRequest parse_comparison(std::string_view text) {
+  const auto eq = text.find('=');
+  const std::string whole(text);
+  if (eq == std::string_view::npos || trimmed(text.substr(0, eq)).empty())
+    throw UsageError("'--compare " + whole + "' is not KEY=V1,V2,...: write e.g. --compare scheme=forward-euler,rk4");
+  ComparisonRequest request{trimmed(text.substr(0, eq)), {}};
+  std::string_view rest = text.substr(eq + 1);
+  while (true) {
+    const auto comma = rest.find(',');
+    const std::string value = trimmed(rest.substr(0, comma));
+    if (value.empty())
+      throw UsageError("empty value in '--compare " + whole + "': list the values of " + request.key +
+                       " separated by commas, e.g. " + request.key + "=V1,V2");
+    if (std::find(request.values.begin(), request.values.end(), value) != request.values.end())
+      throw UsageError(request.key + "=" + value + " is given twice in '--compare " + whole + "': list each value once");
+    request.values.push_back(value);
+    if (comma == std::string_view::npos) break;
+    rest = rest.substr(comma + 1);
+  }
+  if (request.values.size() > kMaxComparisonMembers)
+    throw UsageError("--compare has " + std::to_string(request.values.size()) + " values of " + request.key +
+                     ": compare at most " + std::to_string(kMaxComparisonMembers) + " at once");
+  return request;
+}
+
+std::vector<Parameters> comparison_members(const Parameters& base, const ComparisonRequest& request) {
+  // given() names an unknown key and the closest valid one.
+  if (base.given(request.key))
+    throw UsageError(request.key + " is given both in --set and in --compare: drop --set " + request.key);
+  std::vector<Parameters> members;
+  for (const auto& value : request.values) {
+    members.push_back(base);
+    members.back().set(request.key, value);
+  }
+  return members;
+}
+
+Comparison::Comparison(const ModelDefinition& model, const Parameters& base, ComparisonRequest request)
+    : request_(std::move(request)) {
+  for (Parameters& p : comparison_members(base, request_)) {
+    auto trajectory = model.build(p);
+    row_.resize(std::max(row_.size(), trajectory->width()));
+    members_.push_back({std::move(p), std::move(trajectory)});
+  }
+}
+
+std::string Comparison::label(size_t i) const {
+  return request_.key == "scheme" ? value(i) : request_.key + " = " + value(i);
+}
+
+double Comparison::end_time() const {
+  double T = 0;
+  for (const Member& m : members_) T = std::max(T, m.trajectory->info().mesh.T);
+  return T;
+}
+
+bool Comparison::escaped(Member& m, std::span<const double> row) {
+  if (std::abs(row[1]) <= escape_limit_) return false;
+  m.blew_up = true, m.blow_up_time = row[0];
+  return true;
+}
+
+void Comparison::advance_to(double t, const Observer& observer) {
+  for (size_t i = 0; i < members_.size(); ++i) {
+    Member& m = members_[i];
+    Trajectory& run = *m.trajectory;
+    const std::span<double> row(row_.data(), run.width());
+    if (!m.reported_start) {
+      m.reported_start = true;
+      run.row(row);
+      if (observer) observer(i, row);
+      if (escaped(m, row)) continue;
+    }
+    while (!m.blew_up && run.t() < t && !run.done()) {
+      try {
+        run.advance();
+      } catch (const SolutionError&) {  // non-finite: this member stops, the others go on
+        m.blew_up = true, m.blow_up_time = run.t() + run.info().mesh.dt;
+        break;
+      }
+      run.row(row);
+      if (observer) observer(i, row);
+      escaped(m, row);
+    }
+  }
+}
+
+void Comparison::row_at(size_t i, double t, std::span<double> out) const { members_.at(i).trajectory->row_at(t, out); }
+
+}  // namespace vibra

@@ -1,0 +1,78 @@
+// `vibra plot --compare KEY=V1,V2,...`: one curve per member in its own
+// colour, the exact solution dashed, blow-ups marked, bad input refused.
+#include <cairo.h>
+
+#include <catch2/catch.hpp>
+#include <memory>
+
+#include "cli_support.hpp"
+#include "core/comparison.hpp"
+#include "render/color.hpp"
+#include "scenes/comparison_figure.hpp"
+#include "test_support.hpp"
+
+using namespace vibra;
+using test::run_vibra;
+using test::ScratchDirectory;
+
+namespace {
+/// Pixels of colour c in a PNG.
+int colour_pixels(const std::string& png, const render::Color& c) {
+  std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> s(cairo_image_surface_create_from_png(png.c_str()),
+                                                                   cairo_surface_destroy);
+  const unsigned char* data = cairo_image_surface_get_data(s.get());
+  const int stride = cairo_image_surface_get_stride(s.get());
+  int n = 0;
+  for (int y = 0; y < cairo_image_surface_get_height(s.get()); ++y)
+    for (int x = 0; x < cairo_image_surface_get_width(s.get()); ++x) {
+      const unsigned char* p = data + y * stride + 4 * x;
+      n += std::abs(p[2] - c.r * 255) < 25 && std::abs(p[1] - c.g * 255) < 25 && std::abs(p[0] - c.b * 255) < 25;
+    }
+  return n;
+}
+
+Parameters settings(const std::string& model, const std::vector<std::string>& assignments) {
+  Parameters p = model_parameters(find_model(model));
+  for (const auto& a : assignments) p.assign(a);
+  return p;
+}
+}  // namespace
+
+TEST_CASE("plot --compare draws every member in its own palette colour", "[compare]") {
+  ScratchDirectory dir;
+  const auto r = run_vibra("plot undamped --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 "
+                           "--set steps_per_period=20 --set periods=3 -o " + (dir / "c.png"));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.empty());
+  for (size_t m = 0; m < 4; ++m) {
+    INFO("member " << m);
+    CHECK(colour_pixels(dir / "c.png", render::palette::series(m)) > 400);
+  }
+}
+
+TEST_CASE("a member that leaves the view is marked and the others run to the end", "[compare]") {
+  Comparison c(find_model("undamped"), settings("undamped", {"steps_per_period=20", "periods=8"}),
+               parse_comparison("scheme=forward-euler,rk4"));
+  scenes::comparison_figure(c, {"u", "phase"}, 800, 600, "");
+  REQUIRE(c.blew_up(0));  // |u| beyond twice the bound I: by t = 1 (comparison_test.cpp)
+  CHECK(c.blow_up_time(0) <= 1.05);
+  CHECK_FALSE(c.blew_up(1));
+  CHECK(c.trajectory(1).done());
+  CHECK(scenes::comparison_caption("undamped", c) == "undamped · Δ<i>t</i> = 0.05 · comparing scheme");
+}
+
+TEST_CASE("plot --compare refuses bad input with one line, exit code 2 and no file", "[compare]") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"plot undamped --compare dt=0.1,0.05 --set dt=0.2 -o OUT.png", "dt is given both in --set and in --compare"},
+      {"plot undamped --compare scheme=rk4,rk4 -o OUT.png", "given twice"},
+      {"plot undamped --compare dt=0.1 --compare scheme=rk4 -o OUT.png", "one key at a time"},
+      {"plot pendulum --compare Thta=10,20 -o OUT.png", "did you mean 'Theta'"},
+      {"plot undamped --compare dt=1,2,3,4,5,6,7,8,9 -o OUT.png", "at most 8"},
+      {"plot undamped --compare dt=0.1,,0.2 -o OUT.png", "empty value"},
+      {"plot undamped --compare dt -o OUT.png", "not KEY=V1,V2"},
+      {"plot undamped --compare scheme=rk4,rk9 -o OUT.png", "not a valid scheme"},
+      {"plot undamped --compare dt=0.1,0.05 --panels u,phse -o OUT.png", "did you mean 'phase'"},
+  };
+  for (const auto& [args, expected] : cases) vibra::test::check_refused(args, expected);
+}
