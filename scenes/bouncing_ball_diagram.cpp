@@ -52,12 +52,12 @@ void BouncingBallDiagram::finish_recording(WorldBox& world) {
   world.extend(Point(0, -0.12 * H));
 }
 
-BouncingBallDiagram::Arrow BouncingBallDiagram::velocity_arrow(std::span<const double> row) const {
+Arrow BouncingBallDiagram::velocity_arrow(std::span<const double> row) const {
   const Point from = ball_center(row) + Point(kArrowOffset * radius_, 0);
   return {from, from + Point(0, per_speed_ * row[2])};
 }
 
-BouncingBallDiagram::Arrow BouncingBallDiagram::weight_arrow(std::span<const double> row) const {
+Arrow BouncingBallDiagram::weight_arrow(std::span<const double> row) const {
   // Beside the ball, from above its top down to the level of its bottom, so
   // that it ends on the ground, not in it, when the ball lands.
   const Point c = ball_center(row) - Point(kArrowOffset * radius_, 0);

@@ -24,9 +24,6 @@ class BouncingBallDiagram final : public Diagram {
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
 
-  struct Arrow {
-    Point from, to;
-  };
   /// The velocity arrow (to scale) and the weight, in world units.
   Arrow velocity_arrow(std::span<const double> row) const;
   Arrow weight_arrow(std::span<const double> row) const;

@@ -46,7 +46,7 @@ std::optional<WorldBox> BumpyRoadDiagram::view_at(std::span<const double> row) c
   return WorldBox(Point(row[3] - half_width_, low_), Point(row[3] + half_width_, high_));
 }
 
-std::array<BumpyRoadDiagram::Arrow, 2> BumpyRoadDiagram::force_arrows(std::span<const double> row) const {
+std::array<Arrow, 2> BumpyRoadDiagram::force_arrows(std::span<const double> row) const {
   const Point c(row[3], body_bottom(row) + 0.5 * body_height_);
   const double dx = 0.28 * body_width_;
   return {Arrow{c - Point(dx, 0), c + Point(-dx, scale_.length(-vehicle_.k * row[1]))},

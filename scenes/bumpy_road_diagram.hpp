@@ -30,9 +30,6 @@ class BumpyRoadDiagram final : public Diagram {
 
   Point axle(std::span<const double> row) const { return {row[3], row[4] + vehicle_.R}; }
   double body_bottom(std::span<const double> row) const { return axle(row).y() + vehicle_.L + row[1]; }
-  struct Arrow {
-    Point from, to;
-  };
   /// Spring and damper force arrows at a row, in world units.
   std::array<Arrow, 2> force_arrows(std::span<const double> row) const;
 

@@ -14,6 +14,11 @@ namespace vibra::scenes {
 using WorldBox = Eigen::AlignedBox2d;
 using Point = render::Point;
 
+/// A force drawn as an arrow, in world units: from where it acts to its tip.
+struct Arrow {
+  Point from, to;
+};
+
 /// One plot panel beside a diagram (layout fbd+plot): a y label and its curves.
 struct PanelSpec {
   std::string label;  ///< Pango markup, e.g. "<i>u</i>"

@@ -49,7 +49,7 @@ void ElasticPendulumDiagram::finish_recording(WorldBox& world) {
   world.extend(kPivot - Point(0.35, 0));
 }
 
-std::array<ElasticPendulumDiagram::Arrow, 3> ElasticPendulumDiagram::force_arrows(std::span<const double> row) const {
+std::array<Arrow, 3> ElasticPendulumDiagram::force_arrows(std::span<const double> row) const {
   const Point p = position(row), v = velocity(row);
   const Point toward_pivot = (kPivot - p).normalized();
   const double per = scale_.per_force();

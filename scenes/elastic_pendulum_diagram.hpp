@@ -26,9 +26,6 @@ class ElasticPendulumDiagram final : public Diagram {
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
 
-  struct Arrow {
-    Point from, to;
-  };
   /// Gravity, the wire's force and the drag at a row, world units.
   std::array<Arrow, 3> force_arrows(std::span<const double> row) const;
   /// The wire's force in units of mg, toward the pivot (negative: compressed).

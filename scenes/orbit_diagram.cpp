@@ -56,7 +56,7 @@ void OrbitDiagram::finish_recording(WorldBox& world) {
   world.extend(Point(circle_radius_, circle_radius_));
 }
 
-std::array<OrbitDiagram::Arrow, 2> OrbitDiagram::arrows(std::span<const double> row) const {
+std::array<Arrow, 2> OrbitDiagram::arrows(std::span<const double> row) const {
   const Point x = position(row);
   return {Arrow{x, x + gravity_.per_force() * gravity(row)}, Arrow{x, x + speed_.per_force() * velocity(row)}};
 }

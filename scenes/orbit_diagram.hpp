@@ -26,9 +26,6 @@ class OrbitDiagram final : public Diagram {
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
 
-  struct Arrow {
-    Point from, to;
-  };
   /// Gravity and velocity at a row, world units.
   std::array<Arrow, 2> arrows(std::span<const double> row) const;
   const render::Trail& trail() const { return trail_; }

@@ -55,7 +55,7 @@ void OscillatorDiagram::finish_recording(WorldBox& world) {
 
 double OscillatorDiagram::spring_height() const { return layout_->height_at(has_damper() ? 0.75 : 0.5); }
 
-std::vector<OscillatorDiagram::Arrow> OscillatorDiagram::force_arrows(std::span<const double> row) const {
+std::vector<Arrow> OscillatorDiagram::force_arrows(std::span<const double> row) const {
   const double t = row[0], u = row[1], v = row[2];
   const double x = layout_->body_center(u).x();
   std::vector<Arrow> arrows;

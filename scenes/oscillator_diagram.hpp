@@ -28,9 +28,6 @@ class OscillatorDiagram final : public Diagram {
 
   /// The arrows at a row, in world units (after finish_recording): spring,
   /// damper (when b > 0) and external force (when F is given), from the body.
-  struct Arrow {
-    Point from, to;
-  };
   std::vector<Arrow> force_arrows(std::span<const double> row) const;
   const HorizontalLayout& layout() const { return *layout_; }
   const ForceScale& force_scale() const { return scale_; }

@@ -47,7 +47,7 @@ void SlidingBoxDiagram::finish_recording(WorldBox& world) {
   world.extend(Point(layout_->equilibrium_x(), -0.75 * layout_->unit));  // the normal force's label under the floor
 }
 
-std::array<SlidingBoxDiagram::Arrow, 2> SlidingBoxDiagram::force_arrows(std::span<const double> row) const {
+std::array<Arrow, 2> SlidingBoxDiagram::force_arrows(std::span<const double> row) const {
   const double u = row[1], v = row[2];
   const Point c = layout_->body_center(u);
   const Point foot(c.x() - 0.2 * layout_->body_width, 0.02 * layout_->unit);

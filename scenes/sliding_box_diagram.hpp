@@ -30,9 +30,6 @@ class SlidingBoxDiagram final : public Diagram {
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
 
-  struct Arrow {
-    Point from, to;
-  };
   /// Spring and friction arrows at a row (to scale, friction magnified), in world units.
   std::array<Arrow, 2> force_arrows(std::span<const double> row) const;
   double friction_magnification() const { return friction_magnification_; }

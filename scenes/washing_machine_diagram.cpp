@@ -50,7 +50,7 @@ Point WashingMachineDiagram::drum_mass_offset(double t) const {
   return 0.72 * drum_ * Point(std::cos(phase), std::sin(phase));
 }
 
-std::vector<WashingMachineDiagram::Arrow> WashingMachineDiagram::force_arrows(std::span<const double> row) const {
+std::vector<Arrow> WashingMachineDiagram::force_arrows(std::span<const double> row) const {
   const double t = row[0], u = row[1], v = row[2];
   const Point c = body_center(u);
   std::vector<Arrow> arrows;

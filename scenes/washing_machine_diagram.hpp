@@ -27,9 +27,6 @@ class WashingMachineDiagram final : public Diagram {
 
   /// Where the off-centre mass is at time t, relative to the drum's centre.
   Point drum_mass_offset(double t) const;
-  struct Arrow {
-    Point from, to;
-  };
   /// Springs, damper (beta > 0), drum force, in that order, at a row.
   std::vector<Arrow> force_arrows(std::span<const double> row) const;
   double body_bottom(double u) const { return leg_ + u; }
