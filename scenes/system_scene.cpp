@@ -68,17 +68,19 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   prepare();
   background_.paint(canvas, progress_to(row[0]));
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw(canvas, row[0], row, i + 1 == panels_.size());
-  if (diagram_->view_at(row)) {
+  const std::optional<WorldBox> moving = diagram_->view_at(row);
+  const render::WorldView view = moving ? render::WorldView(*moving, view_area_) : *view_;
+  if (moving) {
     // A following view runs its ground off the sides and the bottom: keep it
     // out of the panels and off the caption's line.
     cairo_save(canvas.cr());
     const double bottom = std::min(diagram_area_.y + diagram_area_.h, view_area_.y + view_area_.h + 16 * canvas.scale());
     cairo_rectangle(canvas.cr(), diagram_area_.x, diagram_area_.y, diagram_area_.w, bottom - diagram_area_.y);
     cairo_clip(canvas.cr());
-    diagram_->draw(canvas, view_at(row), row);
+    diagram_->draw(canvas, view, row);
     cairo_restore(canvas.cr());
   } else {
-    diagram_->draw(canvas, view_at(row), row);
+    diagram_->draw(canvas, view, row);
   }
   draw_readout(canvas, diagram_area_, row[0], style_);
 }
