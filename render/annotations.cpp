@@ -9,6 +9,7 @@ bool draw_force_arrow(Canvas& canvas, const WorldView& view, const ForceArrow& f
   const Point from = view.to_pixel(f.from), tip = view.to_pixel(f.to);
   if ((tip - from).norm() < 8 * scale) return false;
   draw_arrow(canvas, view, f.from, f.to, {f.color, 4.2}, 22);
+  if (f.label.empty()) return true;
   TextStyle style{24, f.color};
   style.halo = true, style.halo_color = background;
   const Point size = text_size(canvas, f.label, style);

@@ -29,9 +29,13 @@ std::vector<PanelSpec> BouncingBallDiagram::panels() const {
   return {std::move(h), std::move(v)};
 }
 
-void BouncingBallDiagram::record(std::span<const double> row, WorldBox&) {
+void BouncingBallDiagram::record_other(std::span<const double> row, WorldBox&) {
   highest_ = std::max(highest_, row[1]);
   fastest_ = std::max(fastest_, std::abs(row[2]));
+}
+
+void BouncingBallDiagram::record(std::span<const double> row, WorldBox& world) {
+  record_other(row, world);
   // A step that ends moving up (or at rest) after moving down held an impact:
   // the previous row's parabola h + v s - g s^2/2 reaches 0 at s.
   if (!previous_.empty() && previous_[2] < 0 && row[2] >= 0) {
@@ -70,6 +74,7 @@ void BouncingBallDiagram::draw_static(render::Canvas& canvas, const render::Worl
 }
 
 void BouncingBallDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
+  if (ghost()) return render::draw_circle(canvas, view, ball_center(row), radius_, colors_.bob, {colors_.wire, 1.8});
   const double t = row[0], H = highest_ > 0 ? highest_ : 1;
   // Impacts so far, and the burst of the latest while it fades.
   const size_t count = std::upper_bound(impacts_.begin(), impacts_.end(), t + 1e-12) - impacts_.begin();

@@ -19,6 +19,7 @@ class BouncingBallDiagram final : public Diagram {
   BouncingBallDiagram(double g, double period, std::function<double(double)> exact, SceneColors);
 
   void record(std::span<const double> row, WorldBox& world) override;
+  void record_other(std::span<const double> row, WorldBox&) override;
   void finish_recording(WorldBox& world) override;
   void draw_static(render::Canvas&, const render::WorldView&) const override;
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;

@@ -61,7 +61,7 @@ void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& vie
   const double step = std::max(road_->dx(), 3 / view.zoom());
   std::vector<Point> road;
   for (double s = x - 3 * half_width_; s <= x + 3 * half_width_; s += step) road.emplace_back(s, road_->height(s));
-  render::draw_ground_profile(canvas, view, road, 0.3 * vehicle_.R + (high_ - low_), ink);
+  if (!ghost()) render::draw_ground_profile(canvas, view, road, 0.3 * vehicle_.R + (high_ - low_), ink);
 
   const Point a = axle(row);
   const double bottom = body_bottom(row);
@@ -76,6 +76,7 @@ void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& vie
   render::draw_line(canvas, view, a + Point(-0.25 * body_width_, 0), a + Point(0.25 * body_width_, 0), {colors_.wire, 3});
   render::draw_box(canvas, view, Point(x - 0.5 * body_width_, bottom), Point(x + 0.5 * body_width_, bottom + body_height_),
                    colors_.bob.with_alpha(0.85), {colors_.wire, 1.8});
+  if (ghost()) return;
 
   const auto arrows = force_arrows(row);
   render::draw_force_arrow(canvas, view, {arrows[0].from, arrows[0].to, colors_.gravity, "−<i>ku</i>"}, colors_.background);

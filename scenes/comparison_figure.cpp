@@ -6,21 +6,14 @@
 
 #include "core/error.hpp"
 #include "render/stop_signal.hpp"
+#include "scenes/comparison_labels.hpp"
 #include "scenes/plot_panels.hpp"
 #include "scenes/run_caption.hpp"
 
 namespace vibra::scenes {
 
 namespace {
-/// The view holds this many times the largest amplitude the members can reach:
-/// room for a scheme that gains energy to be seen doing it before it leaves.
-constexpr double kViewFactor = 2;
-
 const render::SeriesStyle kExactStyle{render::palette::ink.with_alpha(0.75), 1.8, true, false};
-
-bool is_time_key(const std::string& key) {
-  return key == "scheme" || key == "dt" || key == "steps_per_period" || key == "T" || key == "periods";
-}
 
 /// A member's series in one panel, fed from two columns of its rows.
 struct Feed {
@@ -29,21 +22,6 @@ struct Feed {
   render::Series* series;
   int x_column, y_column;
 };
-
-/// A key as the reader knows it: Δt for dt.
-std::string key_markup(const std::string& key) { return key == "dt" ? "Δ<i>t</i>" : markup_escaped(key); }
-
-/// A member's legend entry: the scheme's name, or "Δt = 0.05".
-std::string member_markup(const Comparison& c, size_t m) {
-  const std::string& key = c.request().key;
-  return key == "scheme" ? c.value(m) : key_markup(key) + " = " + markup_escaped(c.value(m));
-}
-
-std::string blow_up_note(double t) {
-  char text[64];
-  std::snprintf(text, sizeof text, ": blew up at <i>t</i> = %.3g", t);
-  return text;
-}
 
 /// The exact solution over [0, T]: finer than the mesh (its envelope keeps every peak) and 4 samples per pixel column.
 void add_exact_curve(render::Series& series, const TrajectoryInfo& info, double T, long long steps, int width) {
@@ -74,16 +52,12 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
   const std::vector<std::string> order = panel_order(first, panels);
   const double T = comparison.end_time();
   if (!std::isfinite(T)) throw UsageError("a plot needs a finite end time: give T or periods");
-  double bound = 0;
   long long steps = 0;
-  for (size_t m = 0; m < comparison.size(); ++m) {
-    bound = std::max(bound, comparison.trajectory(m).info().amplitude_bound);
-    steps = std::max(steps, comparison.trajectory(m).info().mesh.steps);
-  }
-  if (bound > 0) comparison.set_escape_limit(kViewFactor * bound);
+  for (size_t m = 0; m < comparison.size(); ++m) steps = std::max(steps, comparison.trajectory(m).info().mesh.steps);
+  comparison.set_escape_limit_from_bounds();
   // Comparing schemes or time steps: one problem, one exact solution. Comparing
   // a model key: each member has its own, dashed in its colour.
-  const bool shared_exact = is_time_key(comparison.request().key);
+  const bool shared_exact = comparison.same_problem();
 
   render::Figure figure(width, height, title);
   std::vector<Feed> feeds;
@@ -139,28 +113,6 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
             .add(last[m][f.x_column], last[m][f.y_column]);
   }
   return figure;
-}
-
-std::string comparison_caption(const std::string& model, const Comparison& comparison) {
-  const std::string& key = comparison.request().key;
-  std::string caption = model;
-  const TimeMesh& mesh = comparison.trajectory(0).info().mesh;
-  bool same_scheme = true, same_dt = true;
-  for (size_t m = 1; m < comparison.size(); ++m) {
-    same_scheme &= comparison.trajectory(m).info().mesh.scheme == mesh.scheme;
-    same_dt &= comparison.trajectory(m).info().mesh.dt == mesh.dt;
-  }
-  if (same_scheme) caption += " · " + std::string(scheme_info(mesh.scheme).name);
-  if (same_dt) {
-    char dt[64];
-    std::snprintf(dt, sizeof dt, " · Δ<i>t</i> = %.4g", mesh.dt);
-    caption += dt;
-  }
-  for (const auto& a : comparison.parameters(0).given_assignments()) {
-    const std::string k = a.substr(0, a.find('='));
-    if (k != key && !is_time_key(k)) caption += " · " + markup_escaped(a);
-  }
-  return caption + " · comparing " + key_markup(key);
 }
 
 }  // namespace vibra::scenes

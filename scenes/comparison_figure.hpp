@@ -20,8 +20,4 @@ std::vector<std::string> default_comparison_panels(const TrajectoryInfo&);
 render::Figure comparison_figure(Comparison&, const std::vector<std::string>& panels, int width, int height,
                                  const std::string& title);
 
-/// One line of Pango markup for a comparison: the model, what its members
-/// share (scheme, dt, the settings given) and the key compared.
-std::string comparison_caption(const std::string& model, const Comparison&);
-
 }  // namespace vibra::scenes

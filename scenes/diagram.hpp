@@ -1,5 +1,6 @@
 #pragma once
 #include <Eigen/Geometry>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -19,6 +20,16 @@ struct Arrow {
   Point from, to;
 };
 
+/// A run's entry in a legend: its name and colour, and how to tell from a
+/// row that it blew up.
+struct LegendEntry {
+  std::string label;  ///< Pango markup
+  render::Color color;
+  bool dashed = false;  ///< drawn as a dashed line (an exact solution)
+  /// The run's main quantity in a row: NaN once it blew up (empty: never does).
+  std::function<double(std::span<const double> row)> probe = {};
+};
+
 /// One plot panel beside a diagram (layout fbd+plot): a y label and its curves.
 struct PanelSpec {
   std::string label;  ///< Pango markup, e.g. "<i>u</i>"
@@ -36,6 +47,11 @@ class Diagram {
   /// Pre-pass over every solver row of the run: extend `world` by what must
   /// stay in view (body, springs, arrow tips), so nothing is clipped.
   virtual void record(std::span<const double> row, WorldBox& world) = 0;
+  /// Pre-pass over a row of another run drawn in the same picture (a
+  /// comparison's other members): what sizes the drawing (ranges, force
+  /// scales) sees it too, so every member is drawn at one geometry, but
+  /// what belongs to this run alone (its trail, its impacts) does not.
+  virtual void record_other(std::span<const double> row, WorldBox& world) { record(row, world); }
   /// After the pre-pass: the fixed parts (walls, floor) and any balancing of
   /// the box (e.g. symmetric about a pivot).
   virtual void finish_recording(WorldBox& world) { (void)world; }
@@ -51,6 +67,17 @@ class Diagram {
   virtual void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) = 0;
   /// The panels shown beside the diagram in layout fbd+plot, top to bottom.
   virtual std::vector<PanelSpec> panels() const = 0;
+  /// What names the runs drawn (a comparison's members), top to bottom; empty for one run.
+  virtual std::vector<LegendEntry> legend() const { return {}; }
+
+  /// A ghost is one of a comparison's other members, drawn faint over the
+  /// first: its body only, without the arrows, labels and marks that belong
+  /// to the first.
+  void set_ghost(bool ghost) { ghost_ = ghost; }
+  bool ghost() const { return ghost_; }
+
+ private:
+  bool ghost_ = false;
 };
 
 }  // namespace vibra::scenes

@@ -31,10 +31,13 @@ double ElasticPendulumDiagram::wire_force(std::span<const double> row) const {
   return (L - beta_) / (1 - beta_);
 }
 
-void ElasticPendulumDiagram::record(std::span<const double> row, WorldBox&) {
-  const Point p = position(row);
-  bodies_.extend(p);
-  trail_.add(row[0], p);
+void ElasticPendulumDiagram::record(std::span<const double> row, WorldBox& world) {
+  trail_.add(row[0], position(row));
+  record_other(row, world);
+}
+
+void ElasticPendulumDiagram::record_other(std::span<const double> row, WorldBox&) {
+  bodies_.extend(position(row));
   scale_.see(1);
   scale_.see(wire_force(row));
   scale_.see(gamma_ / (beta_ * beta_) * velocity(row).squaredNorm());
@@ -68,6 +71,7 @@ void ElasticPendulumDiagram::draw(render::Canvas& canvas, const render::WorldVie
   spring.width = 0.07, spring.lead = 0.08, spring.coils = 12;
   render::draw_spring(canvas, view, kPivot, p + kBob * (kPivot - p).normalized(), spring, {colors_.wire, 1.8});
   render::draw_circle(canvas, view, p, kBob, colors_.bob, {colors_.wire, 1.6});
+  if (ghost()) return;
   const auto arrows = force_arrows(row);
   const render::ForceArrow forces[] = {{arrows[0].from, arrows[0].to, colors_.gravity, "<i>mg</i>"},
                                        {arrows[1].from, arrows[1].to, colors_.wire_force, "<i>S</i>"},

@@ -21,6 +21,7 @@ class ElasticPendulumDiagram final : public Diagram {
   ElasticPendulumDiagram(double beta, double gamma, SceneColors);
 
   void record(std::span<const double> row, WorldBox& world) override;
+  void record_other(std::span<const double> row, WorldBox&) override;
   void finish_recording(WorldBox& world) override;
   void draw_static(render::Canvas&, const render::WorldView&) const override;
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;

@@ -30,7 +30,7 @@ std::vector<PanelSpec> OrbitDiagram::panels() const {
           {"<i>y</i>", {{"", colors_.bob, [](std::span<const double> r) { return r[2]; }}}}};
 }
 
-void OrbitDiagram::record(std::span<const double> row, WorldBox&) {
+void OrbitDiagram::record(std::span<const double> row, WorldBox& world) {
   if (first_) {
     // Circular when the speed is the circular one, 1/sqrt(r), across the radius.
     const Point x = position(row), v = velocity(row);
@@ -39,8 +39,12 @@ void OrbitDiagram::record(std::span<const double> row, WorldBox&) {
       circle_radius_ = r;
     first_ = false;
   }
-  bodies_.extend(position(row));
   trail_.add(row[0], position(row));
+  record_other(row, world);
+}
+
+void OrbitDiagram::record_other(std::span<const double> row, WorldBox&) {
+  bodies_.extend(position(row));
   gravity_.see(gravity(row).norm());
   speed_.see(velocity(row).norm());
 }
@@ -72,6 +76,7 @@ void OrbitDiagram::draw(render::Canvas& canvas, const render::WorldView& view, s
   trail_.draw(canvas, view, row[0], window_ > 0 ? window_ : 2 * t_end_ + 1, colors_.bob, 1.6);
   const Point x = position(row);
   render::draw_circle(canvas, view, x, kPlanet, colors_.bob, {colors_.wire, 1.4});
+  if (ghost()) return;
   const auto a = arrows(row);
   render::draw_force_arrow(canvas, view, {a[0].from, a[0].to, colors_.gravity, "<i>F</i>"}, colors_.background);
   render::draw_force_arrow(canvas, view, {a[1].from, a[1].to, colors_.wire_force, "<i>v</i>"}, colors_.background);

@@ -21,6 +21,7 @@ class OrbitDiagram final : public Diagram {
   OrbitDiagram(double window, double t_end, SceneColors);
 
   void record(std::span<const double> row, WorldBox& world) override;
+  void record_other(std::span<const double> row, WorldBox&) override;
   void finish_recording(WorldBox& world) override;
   void draw_static(render::Canvas&, const render::WorldView&) const override;
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;

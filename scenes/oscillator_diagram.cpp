@@ -95,6 +95,7 @@ void OscillatorDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
                        -u / l.wheel_radius, colors_.background, {colors_.wire, 1.8});
   render::draw_box(canvas, view, Point(left, l.body_bottom()), Point(left + l.body_width, l.body_bottom() + l.body_height),
                    colors_.bob.with_alpha(0.85), {colors_.wire, 1.8});
+  if (ghost()) return;
 
   const double y_dim = l.body_bottom() + l.body_height + 0.35 * l.unit;
   render::draw_dimension(canvas, view, Point(l.equilibrium_x(), y_dim), Point(l.equilibrium_x() + u, y_dim), "<i>u</i>",

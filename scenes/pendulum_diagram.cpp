@@ -61,6 +61,11 @@ void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::s
   const PendulumGeometry g = pendulum_geometry(state, o);
   const double scale = canvas.scale();
 
+  if (ghost()) {
+    draw_line(canvas, view, g.pivot, g.bob, {c.wire, 2.2});
+    draw_circle(canvas, view, g.bob, o.bob_radius, c.bob, {c.wire, 1.6});
+    return;
+  }
   draw_line(canvas, view, g.pivot, g.vertical_end, {c.wire.with_alpha(0.6), 1.6, true});
   draw_line(canvas, view, g.pivot, g.bob, {c.wire, 2.2});
   draw_arc(canvas, view, g.pivot, o.arc_radius, g.arc_from, g.arc_to, {c.wire, 1.6});

@@ -1,43 +1,65 @@
 #include "scenes/plot_scene.hpp"
 
+#include <algorithm>
+
 #include "render/text.hpp"
 
 namespace vibra::scenes {
 
-namespace {
-std::vector<SeriesSpec> series_for(const SceneStyle& style, const std::string& quantity,
-                                   const std::function<double(double)>& exact, const std::string& exact_label) {
-  std::vector<SeriesSpec> series = {
-      {"<i>" + quantity + "</i> numerical", style.colors.bob, [](std::span<const double> row) { return row[1]; }}};
+PanelSpec main_quantity_panel(const SceneStyle& style, const std::string& quantity, std::function<double(double)> exact,
+                              const std::string& exact_label) {
+  PanelSpec panel{"<i>" + quantity + "</i>",
+                  {{"<i>" + quantity + "</i> numerical", style.colors.bob,
+                    [](std::span<const double> row) { return row[1]; }}}};
   if (exact)
-    series.push_back({"<i>" + quantity + "</i> " + exact_label, style.colors.gravity,
-                      [exact](std::span<const double> row) { return exact(row[0]); }, true});
-  return series;
+    panel.series.push_back({"<i>" + quantity + "</i> " + exact_label, style.colors.gravity,
+                            [exact](std::span<const double> row) { return exact(row[0]); }, true});
+  return panel;
 }
-}  // namespace
 
-PlotScene::PlotScene(int width, int height, double t_end, SceneStyle style, const std::string& quantity,
-                     std::function<double(double)> exact, const std::string& exact_label)
+PlotScene::PlotScene(int width, int height, double t_end, SceneStyle style, std::vector<PanelSpec> panels,
+                     std::vector<LegendEntry> legend)
     : style_(std::move(style)),
       area_{0, 0, double(width), double(height)},
-      panel_(render::PixelRect{0, 44 * render::scale_for_height(height), width - 10 * render::scale_for_height(height),
-                               height - 74 * render::scale_for_height(height)},
-             render::scale_for_height(height), "<i>" + quantity + "</i>", series_for(style_, quantity, exact, exact_label),
-             t_end, style_.window_mode, style_.window),
-      background_([this](render::Canvas& canvas) {
-        canvas.clear(style_.colors.background);
-        panel_.draw_static(canvas, true);
-        if (!style_.caption.empty())
-          render::draw_text(canvas, {16 * canvas.scale(), area_.h - 6 * canvas.scale()}, style_.caption,
-                            {15, style_.colors.wire.with_alpha(0.75)}, render::Anchor::bottom_left);
-      }) {}
+      legend_(std::move(legend), height),
+      background_([this](render::Canvas& canvas) { draw_static(canvas); }) {
+  const double scale = render::scale_for_height(height);
+  const double top = 44 * scale, bottom = 30 * scale;
+  const double w = width - 10 * scale - legend_.width();
+  const double h = (height - top - bottom) / std::max<size_t>(1, panels.size());
+  for (size_t i = 0; i < panels.size(); ++i)
+    panels_.emplace_back(render::PixelRect{0, top + i * h, w, h}, scale, std::move(panels[i].label),
+                         std::move(panels[i].series), t_end, style_.window_mode, style_.window);
+}
+
+void PlotScene::record(std::span<const double> row) {
+  for (auto& panel : panels_) panel.record(row);
+  legend_.record(row);
+}
+
+void PlotScene::observe(std::span<const double> row) {
+  for (auto& panel : panels_) panel.observe(row);
+}
 
 void PlotScene::prepare() {
-  if (!prepared_) panel_.finish_recording(), prepared_ = true;
+  if (prepared_) return;
+  for (auto& panel : panels_) panel.finish_recording();
+  prepared_ = true;
+}
+
+void PlotScene::draw_static(render::Canvas& canvas) {
+  canvas.clear(style_.colors.background);
+  for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw_static(canvas, i + 1 == panels_.size());
+  if (!legend_.empty()) legend_.draw_static(canvas, {area_.w - 4 * canvas.scale(), 44 * canvas.scale()});
+  if (!style_.caption.empty())
+    render::draw_text(canvas, {16 * canvas.scale(), area_.h - 6 * canvas.scale()}, style_.caption,
+                      {15, style_.colors.wire.with_alpha(0.75)}, render::Anchor::bottom_left);
 }
 
 StaticLayer::Grow PlotScene::progress_to(double t) {
-  return [this, t](render::Canvas& layer, bool from_start) { panel_.draw_progress(layer, t, from_start); };
+  return [this, t](render::Canvas& layer, bool from_start) {
+    for (auto& panel : panels_) panel.draw_progress(layer, t, from_start);
+  };
 }
 
 void PlotScene::skip(const render::Canvas& canvas, std::span<const double> row) {
@@ -48,7 +70,8 @@ void PlotScene::skip(const render::Canvas& canvas, std::span<const double> row) 
 void PlotScene::draw(render::Canvas& canvas, std::span<const double> row) {
   prepare();
   background_.paint(canvas, progress_to(row[0]));
-  panel_.draw(canvas, row[0], row, true);
+  for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw(canvas, row[0], row, i + 1 == panels_.size());
+  if (!legend_.empty()) legend_.draw(canvas, {area_.w - 4 * canvas.scale(), 44 * canvas.scale()}, row[0]);
   // The read-out sits top right: the panel's y label is top left.
   draw_readout(canvas, {area_.w * 0.55, 0, area_.w * 0.45, 40}, row[0], style_);
 }

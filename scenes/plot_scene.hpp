@@ -1,7 +1,9 @@
 #pragma once
-#include <functional>
 #include <string>
+#include <vector>
 
+#include "scenes/diagram.hpp"
+#include "scenes/run_legend.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/scene_style.hpp"
 #include "scenes/series_panel.hpp"
@@ -9,28 +11,35 @@
 
 namespace vibra::scenes {
 
-/// Any model's main quantity against time in one panel, with the exact
-/// solution dashed where it is known: the moving plot of a long run.
+/// Moving plots without a diagram, stacked on one time axis: any model's
+/// main quantity with its exact solution dashed (layout plot), a
+/// comparison's members in one panel, or one panel per member (layout grid,
+/// the chapter's linked panels for long runs). A legend of runs, when given,
+/// gets a column of its own at the right.
 class PlotScene final : public Scene {
  public:
-  /// `quantity` is the main column's name (e.g. "u", "theta"); `exact` may be empty.
-  PlotScene(int width, int height, double t_end, SceneStyle, const std::string& quantity,
-            std::function<double(double)> exact, const std::string& exact_label);
+  PlotScene(int width, int height, double t_end, SceneStyle, std::vector<PanelSpec>, std::vector<LegendEntry> = {});
 
-  void record(std::span<const double> row) override { panel_.record(row); }
-  void observe(std::span<const double> row) override { panel_.observe(row); }
+  void record(std::span<const double> row) override;
+  void observe(std::span<const double> row) override;
   void draw(render::Canvas&, std::span<const double> row) override;
   void skip(const render::Canvas&, std::span<const double> row) override;
 
  private:
   void prepare();
+  void draw_static(render::Canvas&);
   StaticLayer::Grow progress_to(double t);
 
   SceneStyle style_;
   render::PixelRect area_;
-  SeriesPanel panel_;
+  RunLegend legend_;
+  std::vector<SeriesPanel> panels_;
   StaticLayer background_;
   bool prepared_ = false;
 };
+
+/// The panel of layout plot: the main quantity, numerical and exact (dashed, where known).
+PanelSpec main_quantity_panel(const SceneStyle&, const std::string& quantity, std::function<double(double)> exact,
+                              const std::string& exact_label);
 
 }  // namespace vibra::scenes

@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 
+#include "core/comparison_trajectory.hpp"
 #include "core/error.hpp"
 #include "core/models/model.hpp"
 #include "render/canvas.hpp"
@@ -21,6 +22,7 @@
 #include "render/text.hpp"
 #include "render/video_concat.hpp"
 #include "scenes/frame_clock.hpp"
+#include "scenes/comparison_labels.hpp"
 #include "scenes/page_plot_collector.hpp"
 #include "scenes/run_caption.hpp"
 #include "scenes/run_csv_file.hpp"
@@ -67,6 +69,7 @@ std::uint64_t render_fingerprint(const RenderRequest& r, const std::string& capt
   const SceneConfig& c = r.scene;
   std::string text = c.name + '\n' + c.model + '\n' + caption + '\n';
   for (const auto& s : c.model_settings) text += s.key + '=' + s.value + '\n';
+  if (!c.compare.empty()) text += "compare " + c.compare + '\n';
   char numbers[512];
   const auto& k = c.colors;
   std::snprintf(numbers, sizeof numbers, "%d %d %.17g %.17g %d %d %d %.17g %lld", c.width, c.height, c.fps, c.speed,
@@ -220,8 +223,15 @@ void run_render(const RenderRequest& r) {
 
   render::start_loading_fonts();  // overlaps the solver's pre-pass and the encoder's start
   const ModelDefinition& model = find_model(r.scene.model);
-  const Parameters parameters = model_parameters_of(r.scene);
-  std::unique_ptr<Trajectory> pre_pass = model.build(parameters);
+  // A comparison's runs go through the render as one trajectory of wide rows.
+  const std::optional<ComparisonRequest> comparison =
+      r.scene.compare.empty() ? std::nullopt : std::optional(parse_comparison(r.scene.compare));
+  const Parameters parameters = comparison ? comparison_base_of(r.scene, comparison->key) : model_parameters_of(r.scene);
+  auto build = [&]() -> std::unique_ptr<Trajectory> {
+    if (comparison) return std::make_unique<ComparisonTrajectory>(model, parameters, *comparison);
+    return model.build(parameters);
+  };
+  std::unique_ptr<Trajectory> pre_pass = build();
   const TimeMesh mesh = pre_pass->info().mesh;
   if (!std::isfinite(mesh.T)) throw UsageError("a render needs a finite end time: give T or periods");
   if (still && (*r.at < 0 || *r.at > mesh.T * (1 + 1e-12)))
@@ -232,7 +242,9 @@ void run_render(const RenderRequest& r) {
   const FrameClock clock =
       r.scene.frame_per_step ? FrameClock::per_step(mesh.dt, mesh.steps) : FrameClock::by_speed(mesh.T, r.scene.fps, speed);
   if (clock.frames() > 100'000'000) throw UsageError("that is more than 1e8 frames: lower fps, raise speed or shorten T");
-  const std::string caption = caption_of(r.scene, parameters, mesh);
+  const auto* runs = dynamic_cast<const ComparisonTrajectory*>(pre_pass.get());
+  const std::string caption =
+      runs ? comparison_caption(r.scene.model, runs->comparison()) : caption_of(r.scene, parameters, mesh);
   render::FrameSegment segment{0, 1, clock.frames()};
   if (r.segment) {
     segment = {r.segment->index, r.segment->count, clock.frames(), render_fingerprint(r, caption, clock.frames())};
@@ -248,7 +260,8 @@ void run_render(const RenderRequest& r) {
     return;
   }
 
-  std::unique_ptr<Scene> scene = make_scene(r.scene, pre_pass->info(), caption);
+  std::unique_ptr<Scene> scene =
+      runs ? make_comparison_scene(r.scene, *runs, caption) : make_scene(r.scene, pre_pass->info(), caption);
 
   // Pre-pass: fixed view and plot ranges over the whole run, in constant
   // memory; for a page also its time series and its CSV.
@@ -270,7 +283,7 @@ void run_render(const RenderRequest& r) {
 
   // The render pass: every solver step feeds the scene (moving plots), and
   // frames between steps interpolate the solution (cubic Hermite).
-  std::unique_ptr<Trajectory> trajectory = model.build(parameters);
+  std::unique_ptr<Trajectory> trajectory = build();
   std::vector<double> step_row(trajectory->width());
   trajectory->row(step_row);
   scene->observe(step_row);

@@ -75,9 +75,13 @@ void RlcDiagram::draw_static(render::Canvas& canvas, const render::WorldView& vi
 
 void RlcDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
   const double q = largest_q_ > 0 ? row[1] / largest_q_ : 0;
+  const render::CurrentArrow arrow = current_arrow(row);
+  if (ghost()) {  // the current alone: one circuit's plates hold one charge
+    render::draw_force_arrow(canvas, view, {arrow.from, arrow.to, colors_.bob, ""}, colors_.background);
+    return;
+  }
   render::draw_capacitor(canvas, view, kCapacitorFrom, kCapacitorTo, kGap, kPlate, q, {colors_.wire, 2.2},
                          colors_.gravity, colors_.bob);
-  const render::CurrentArrow arrow = current_arrow(row);
   render::draw_force_arrow(canvas, view, {arrow.from, arrow.to, colors_.bob, "<i>I</i>", render::LabelPlace::beside,
                                           Point(0, 1)}, colors_.background);
 }

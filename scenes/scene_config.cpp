@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/comparison.hpp"
 #include "core/error.hpp"
 #include "core/models/model.hpp"
 #include "scenes/builtin_scenes.hpp"
@@ -81,6 +82,14 @@ void collect(const toml::table& table, const std::string& prefix, const std::str
     out.push_back({name, text, origin});
   }
 }
+/// Whether two keys set one thing: the same key, or dt and steps_per_period,
+/// or T and periods, which replace each other.
+bool sets_same_thing(const std::string& a, const std::string& b) {
+  static const std::map<std::string, std::string> rivals = {
+      {"dt", "steps_per_period"}, {"steps_per_period", "dt"}, {"T", "periods"}, {"periods", "T"}};
+  const auto rival = rivals.find(a);
+  return a == b || (rival != rivals.end() && rival->second == b);
+}
 }  // namespace
 
 const std::vector<KeySpec>& scene_keys() {
@@ -92,7 +101,8 @@ const std::vector<KeySpec>& scene_keys() {
       {"speed", ValueKind::number, "0", "time/s", "simulated time per second of video (0: one period in 2 s)", {}, {}},
       {"video_speed", ValueKind::number, "0", "time/s", "the same as speed, for models with a key speed of their own", {}, {}},
       {"frame_per_step", ValueKind::choice, "false", "", "one frame per solver step", {"true", "false"}, {}},
-      {"layout", ValueKind::choice, "fbd+plot", "", "fbd, fbd+plot, or plot (any model)", {"fbd", "fbd+plot", "plot"}, {}},
+      {"layout", ValueKind::choice, "fbd+plot", "", "fbd, fbd+plot, plot (any model), or grid (with compare)", {"fbd", "fbd+plot", "plot", "grid"}, {}},
+      {"compare", ValueKind::text, "", "", "KEY=V1,V2,...: one run per value (up to 8), drawn together", {}, {}},
       {"window", ValueKind::number, "", "time", "plot window: a time, or N periods as 8periods; none = whole run", {}, {}},
       {"window_mode", ValueKind::choice, "movement", "", "drawing, movement or jumps (the moving plot window)", {"drawing", "movement", "jumps"}, {}},
       {"drag_magnification", ValueKind::number, "5", "", "drag arrow drawn this many times longer", {}, {}},
@@ -155,7 +165,15 @@ void apply_setting(SceneConfig& c, const Setting& s) {
     if (s.value == "fbd") c.layout = Layout::fbd;
     else if (s.value == "fbd+plot") c.layout = Layout::fbd_plot;
     else if (s.value == "plot") c.layout = Layout::plot;
-    else throw UsageError(s.origin + ": layout '" + s.value + "' is not one of fbd, fbd+plot, plot");
+    else if (s.value == "grid") c.layout = Layout::grid;
+    else throw UsageError(s.origin + ": layout '" + s.value + "' is not one of fbd, fbd+plot, plot, grid");
+  } else if (k == "compare") {
+    try {
+      parse_comparison(s.value);
+    } catch (const UsageError& e) {
+      throw UsageError(s.origin + ": " + e.what());
+    }
+    c.compare = s.value;
   } else if (k == "window") {
     c.window = s.value;
     try {
@@ -193,10 +211,7 @@ void apply_setting(SceneConfig& c, const Setting& s) {
     }
     // dt replaces steps_per_period and T replaces periods (and back), so a
     // --set can override what a scene file chose the other way.
-    static const std::map<std::string, std::string> rivals = {
-        {"dt", "steps_per_period"}, {"steps_per_period", "dt"}, {"T", "periods"}, {"periods", "T"}};
-    const auto rival = rivals.find(k);
-    auto same = [&](const Setting& o) { return o.key == k || (rival != rivals.end() && o.key == rival->second); };
+    auto same = [&](const Setting& o) { return sets_same_thing(o.key, k); };
     c.model_settings.erase(std::remove_if(c.model_settings.begin(), c.model_settings.end(), same), c.model_settings.end());
     c.model_settings.push_back(s);
   }
@@ -221,6 +236,16 @@ Parameters model_parameters_of(const SceneConfig& c) {
   Parameters p = model_parameters(find_model(c.model));
   for (const auto& s : c.model_settings) p.set(s.key, s.value);
   return p;
+}
+
+Parameters comparison_base_of(const SceneConfig& c, const std::string& key) {
+  SceneConfig base = c;
+  auto compared = [&](const Setting& s) { return sets_same_thing(s.key, key); };
+  for (const Setting& s : c.model_settings)
+    if (compared(s) && s.origin == "--set")
+      throw UsageError(s.key + " is given both in --set and in --compare: drop --set " + s.key);
+  std::erase_if(base.model_settings, compared);
+  return model_parameters_of(base);
 }
 
 std::vector<std::string> builtin_scene_names() {

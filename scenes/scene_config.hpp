@@ -31,6 +31,8 @@ struct SceneConfig {
   WindowMode window_mode = WindowMode::movement;
   double drag_magnification = 5;
   SceneColors colors;
+  /// "KEY=V1,V2,...": one run per value, drawn together; "" = one run.
+  std::string compare;
 };
 
 /// The keys a scene has besides its model's (shown by `vibra render --help`).
@@ -48,6 +50,11 @@ void apply_setting(SceneConfig&, const Setting&);
 
 /// The model's Parameters with the scene's model settings applied.
 Parameters model_parameters_of(const SceneConfig&);
+
+/// The settings a comparison's members share: the model settings without
+/// the compared key (a scene file's value of it gives way to the
+/// comparison's). Throws UsageError when --set gives the key too.
+Parameters comparison_base_of(const SceneConfig&, const std::string& key);
 
 /// The window width in time units (0 = whole run), given the model's period.
 double window_width(const SceneConfig&, double period);

@@ -1,12 +1,17 @@
 #include "scenes/scene_factory.hpp"
 
+#include "core/error.hpp"
+#include "scenes/comparison_diagram.hpp"
+#include "scenes/comparison_labels.hpp"
 #include "scenes/diagram_registry.hpp"
+#include "scenes/plot_panels.hpp"
 #include "scenes/plot_scene.hpp"
 #include "scenes/system_scene.hpp"
 
 namespace vibra::scenes {
 
-std::unique_ptr<Scene> make_scene(const SceneConfig& config, const TrajectoryInfo& info, const std::string& caption) {
+namespace {
+SceneStyle style_of(const SceneConfig& config, const TrajectoryInfo& info, const std::string& caption) {
   SceneStyle style;
   style.layout = config.layout;
   style.colors = config.colors;
@@ -15,14 +20,86 @@ std::unique_ptr<Scene> make_scene(const SceneConfig& config, const TrajectoryInf
   style.window = window_width(config, info.mesh.period);
   style.window_mode = style.window > 0 ? config.window_mode : WindowMode::whole_run;
   if (style.window > 0 && style.window >= info.mesh.T) style.window_mode = WindowMode::whole_run;
+  return style;
+}
 
+/// A comparison member's colour: the scene's body colour for the first, the palette's for the others.
+render::Color member_color(const SceneConfig& config, size_t i) {
+  return i == 0 ? config.colors.bob : render::palette::series(i);
+}
+
+/// A member's main quantity, or its exact solution, read from a comparison's row.
+SeriesSpec main_series(const MemberColumns& columns, render::Color color) {
+  return {"", color, columns.reading([](std::span<const double> row) { return row[1]; })};
+}
+SeriesSpec exact_series(const std::function<double(double)>& exact, render::Color color) {
+  return {"", color.with_alpha(0.8), [exact](std::span<const double> row) { return exact(row[0]); }, true};
+}
+}  // namespace
+
+std::unique_ptr<Scene> make_scene(const SceneConfig& config, const TrajectoryInfo& info, const std::string& caption) {
+  if (config.layout == Layout::grid)
+    throw UsageError("layout grid draws a comparison's members in a panel each: add --compare KEY=V1,V2,... "
+                     "or choose fbd, fbd+plot or plot");
+  const SceneStyle style = style_of(config, info, caption);
   if (config.layout == Layout::plot)
-    return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style, info.columns[1], info.exact,
-                                       info.exact_label);
+    return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style,
+                                       std::vector{main_quantity_panel(style, info.columns[1], info.exact, info.exact_label)});
   const DiagramKind& kind = diagram_for(config);
   const Parameters parameters = model_parameters_of(config);
   return std::make_unique<SystemScene>(config.width, config.height, info.mesh.T, style,
                                        kind.make({config, parameters, info}));
+}
+
+std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const ComparisonTrajectory& runs,
+                                             const std::string& caption) {
+  const Comparison& comparison = runs.comparison();
+  const TrajectoryInfo& info = runs.info();
+  const SceneStyle style = style_of(config, info, caption);
+  std::vector<MemberColumns> columns;
+  std::vector<LegendEntry> legend;
+  for (size_t i = 0; i < comparison.size(); ++i) {
+    columns.push_back({runs.offset(i), comparison.trajectory(i).width()});
+    legend.push_back({member_markup(comparison, i), member_color(config, i), false,
+                      columns[i].reading([](std::span<const double> row) { return row[1]; })});
+  }
+  const TrajectoryInfo& first = comparison.trajectory(0).info();
+  auto exact_of = [&](size_t i) -> const std::function<double(double)>& { return comparison.trajectory(i).info().exact; };
+  const bool shared_exact = comparison.same_problem();
+  const std::string quantity = quantity_markup(first.columns[1]);
+
+  if (config.layout == Layout::plot) {
+    PanelSpec panel{quantity, {}};
+    for (size_t i = 0; i < columns.size(); ++i) panel.series.push_back(main_series(columns[i], legend[i].color));
+    for (size_t i = 0; i < columns.size(); ++i)
+      if (exact_of(i) && (!shared_exact || i == 0))
+        panel.series.push_back(exact_series(exact_of(i), shared_exact ? render::palette::ink : legend[i].color));
+    if (first.exact) legend.push_back({first.exact_label + (shared_exact ? "" : ", each run's own"), render::palette::ink, true});
+    return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style, std::vector{std::move(panel)},
+                                       std::move(legend));
+  }
+  if (config.layout == Layout::grid) {
+    // Each member in a panel of its own, named on its axis: no legend needed.
+    std::vector<PanelSpec> panels;
+    for (size_t i = 0; i < columns.size(); ++i) {
+      PanelSpec panel{quantity + "  " + legend[i].label, {main_series(columns[i], legend[i].color)}};
+      if (exact_of(i)) panel.series.push_back(exact_series(exact_of(i), render::palette::ink));
+      panels.push_back(std::move(panel));
+    }
+    return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style, std::move(panels));
+  }
+
+  const DiagramKind& kind = diagram_for(config);
+  std::vector<ComparisonDiagram::Member> members;
+  for (size_t i = 0; i < columns.size(); ++i) {
+    SceneConfig member = config;
+    member.colors.bob = legend[i].color;
+    members.push_back({kind.make({member, comparison.parameters(i), comparison.trajectory(i).info()}), columns[i],
+                       std::move(legend[i])});
+  }
+  return std::make_unique<SystemScene>(
+      config.width, config.height, info.mesh.T, style,
+      std::make_unique<ComparisonDiagram>(std::move(members), shared_exact, first.exact_label));
 }
 
 }  // namespace vibra::scenes

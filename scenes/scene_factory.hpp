@@ -2,6 +2,7 @@
 #include <memory>
 #include <string>
 
+#include "core/comparison_trajectory.hpp"
 #include "core/trajectory.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/scene_config.hpp"
@@ -14,5 +15,13 @@ namespace vibra::scenes {
 /// quantity (layout plot, any model). Throws UsageError for a diagram of a
 /// model that has none.
 std::unique_ptr<Scene> make_scene(const SceneConfig&, const TrajectoryInfo& info, const std::string& caption);
+
+/// The scene of a comparison, fed the rows of `runs`: the members' diagrams
+/// (the first solid, the others as ghosts) beside panels with a curve per
+/// member (fbd, fbd+plot); the main quantity of every member in one panel
+/// (plot); or a panel per member on one time axis (grid). A legend names the
+/// members. Throws UsageError as make_scene does.
+std::unique_ptr<Scene> make_comparison_scene(const SceneConfig&, const ComparisonTrajectory& runs,
+                                             const std::string& caption);
 
 }  // namespace vibra::scenes

@@ -7,7 +7,9 @@
 
 namespace vibra::scenes {
 
-enum class Layout { fbd, fbd_plot, plot };
+/// fbd: the diagram alone; fbd+plot: beside panels; plot: panels alone;
+/// grid: a comparison's members in a panel each, on one time axis.
+enum class Layout { fbd, fbd_plot, plot, grid };
 
 /// Colours of a scene; scene files may override each (`colors.KEY`). The
 /// names are the pendulum's, the roles hold for every system: `bob` is the

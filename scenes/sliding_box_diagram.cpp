@@ -75,6 +75,7 @@ void SlidingBoxDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
   render::draw_spring(canvas, view, Point(0, l.height_at(0.5)), Point(left, l.height_at(0.5)), spring, ink);
   render::draw_box(canvas, view, Point(left, 0), Point(left + l.body_width, l.body_height),
                    colors_.bob.with_alpha(0.85), {colors_.wire, 1.8});
+  if (ghost()) return;
   render::draw_dimension(canvas, view, Point(l.equilibrium_x(), l.body_height + 0.35 * l.unit),
                          Point(l.equilibrium_x() + u, l.body_height + 0.35 * l.unit), "<i>u</i>", Point(0, -1),
                          colors_.wire, colors_.background);

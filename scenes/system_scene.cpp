@@ -10,6 +10,7 @@ SystemScene::SystemScene(int width, int height, double t_end, SceneStyle style, 
     : height_(height),
       style_(std::move(style)),
       diagram_(std::move(diagram)),
+      legend_(diagram_->legend(), height),
       background_([this](render::Canvas& c) { draw_static(c); }) {
   const double scale = render::scale_for_height(height);
   if (style_.layout == Layout::fbd) {
@@ -27,13 +28,14 @@ SystemScene::SystemScene(int width, int height, double t_end, SceneStyle style, 
   // Room for arrow labels and the read-out at the top; the caption's line at
   // the bottom comes below the lowest arrow's label.
   const double side = 48 * scale, top = 56 * scale, bottom = (style_.caption.empty() ? 52 : 80) * scale;
-  view_area_ = {diagram_area_.x + side, diagram_area_.y + top, diagram_area_.w - 2 * side,
+  view_area_ = {diagram_area_.x + side, diagram_area_.y + top, diagram_area_.w - 2 * side - legend_.width(),
                 diagram_area_.h - top - bottom};
   world_.setEmpty();
 }
 
 void SystemScene::record(std::span<const double> row) {
   diagram_->record(row, world_);
+  legend_.record(row);
   for (auto& panel : panels_) panel.record(row);
 }
 
@@ -58,6 +60,7 @@ void SystemScene::draw_static(render::Canvas& canvas) {
   canvas.clear(style_.colors.background);
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw_static(canvas, i + 1 == panels_.size());
   diagram_->draw_static(canvas, *view_);
+  if (!legend_.empty()) legend_.draw_static(canvas, legend_corner(canvas.scale()));
   if (!style_.caption.empty())
     render::draw_text(canvas,
                       {diagram_area_.x + 16 * canvas.scale(), diagram_area_.y + diagram_area_.h - 12 * canvas.scale()},
@@ -70,24 +73,36 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw(canvas, row[0], row, i + 1 == panels_.size());
   const std::optional<WorldBox> moving = diagram_->view_at(row);
   const render::WorldView view = moving ? render::WorldView(*moving, view_area_) : *view_;
-  if (moving) {
-    // A following view runs its ground off the sides and the bottom: keep it
-    // out of the panels and off the caption's line.
+  if (moving || !legend_.empty()) {
+    // A following view runs its ground off the sides and the bottom, and a
+    // comparison's run that blows up leaves the view: keep them out of the
+    // panels, the legend and the caption's line.
     cairo_save(canvas.cr());
-    const double bottom = std::min(diagram_area_.y + diagram_area_.h, view_area_.y + view_area_.h + 16 * canvas.scale());
-    cairo_rectangle(canvas.cr(), diagram_area_.x, diagram_area_.y, diagram_area_.w, bottom - diagram_area_.y);
+    const render::PixelRect area = drawing_area();
+    const double bottom =
+        moving ? std::min(area.y + area.h, view_area_.y + view_area_.h + 16 * canvas.scale()) : area.y + area.h;
+    cairo_rectangle(canvas.cr(), area.x, area.y, area.w, bottom - area.y);
     cairo_clip(canvas.cr());
     diagram_->draw(canvas, view, row);
     cairo_restore(canvas.cr());
   } else {
     diagram_->draw(canvas, view, row);
   }
+  if (!legend_.empty()) legend_.draw(canvas, legend_corner(canvas.scale()), row[0]);
   draw_readout(canvas, diagram_area_, row[0], style_);
 }
 
 void SystemScene::skip(const render::Canvas& canvas, std::span<const double> row) {
   prepare();
   background_.skip(canvas, progress_to(row[0]));
+}
+
+render::PixelRect SystemScene::drawing_area() const {
+  return {diagram_area_.x, diagram_area_.y, diagram_area_.w - legend_.width(), diagram_area_.h};
+}
+
+render::Point SystemScene::legend_corner(double scale) const {
+  return {diagram_area_.x + diagram_area_.w - 4 * scale, diagram_area_.y + 14 * scale};
 }
 
 StaticLayer::Grow SystemScene::progress_to(double t) {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "scenes/diagram.hpp"
+#include "scenes/run_legend.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/scene_style.hpp"
 #include "scenes/series_panel.hpp"
@@ -15,7 +16,8 @@ namespace vibra::scenes {
 /// quantities against time with a cursor at the current time (fbd+plot),
 /// with the time read-out and the caption. The view is fixed over the run
 /// from the pre-pass, so nothing jumps and nothing is clipped, unless the
-/// diagram follows its body (a vehicle on a long road).
+/// diagram follows its body (a vehicle on a long road). A comparison's
+/// diagram brings a legend of its runs, which gets a column of its own.
 class SystemScene final : public Scene {
  public:
   SystemScene(int width, int height, double t_end, SceneStyle, std::unique_ptr<Diagram>);
@@ -39,7 +41,13 @@ class SystemScene final : public Scene {
   int height_;
   SceneStyle style_;
   std::unique_ptr<Diagram> diagram_;
+  /// Where the diagram may draw: its area without the legend's column.
+  render::PixelRect drawing_area() const;
+  /// The legend column's top right corner.
+  render::Point legend_corner(double scale) const;
+
   render::PixelRect diagram_area_, view_area_;
+  RunLegend legend_;
   std::vector<SeriesPanel> panels_;
   WorldBox world_;
   std::optional<render::WorldView> view_;

@@ -83,6 +83,7 @@ void WashingMachineDiagram::draw(render::Canvas& canvas, const render::WorldView
   const Point c = body_center(u);
   render::draw_wheel(canvas, view, c, drum_, gamma_ * t, colors_.background, {colors_.wire, 1.8});
   render::draw_circle(canvas, view, c + drum_mass_offset(t), 0.2, colors_.bob, {colors_.wire, 1.4});
+  if (ghost()) return;
 
   const std::vector<Arrow> arrows = force_arrows(row);
   const std::string labels[] = {"−<i>u</i>", beta_ > 0 ? "−<i>βu</i>′" : "sin(<i>γt</i>)", "sin(<i>γt</i>)"};

@@ -9,6 +9,7 @@
 #include "core/comparison.hpp"
 #include "render/color.hpp"
 #include "scenes/comparison_figure.hpp"
+#include "scenes/comparison_labels.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "render/figure.hpp"
 #include "scenes/comparison_figure.hpp"
+#include "scenes/comparison_labels.hpp"
 #include "render/html_page.hpp"
 #include "render/stop_signal.hpp"
 #include "render/temporary_file.hpp"

@@ -25,6 +25,7 @@ struct RenderOptions {
   bool frames_player = false;
   long long every = 1;
   std::string window, window_mode;
+  std::string compare;
   std::optional<double> at;
   std::string segment;
   bool skip_existing = false;
@@ -57,7 +58,9 @@ std::string scene_keys_help() {
          "  vibra render --set Theta=40 --set alpha=0.8 -o lecture.webm\n"
          "  vibra render --at 3.2 -o still.svg\n"
          "  vibra render --segment 1/3 -o lecture.mp4             # lecture.seg-1-of-3.mp4; then vibra concat\n"
-         "  vibra render --set periods=40 -o lecture.html        # video, zoomable plots, CSV\n";
+         "  vibra render --set periods=40 -o lecture.html        # video, zoomable plots, CSV\n"
+         "  vibra render spring --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 -o schemes.mp4\n"
+         "  vibra render undamped --compare dt=0.2,0.1,0.05 --layout grid --set periods=40 --window 4periods -o dt.mp4\n";
   return out;
 }
 
@@ -79,6 +82,7 @@ void run(const RenderOptions& o) {
   flag("video_speed", o.speed, "--speed");
   flag("window", o.window, "--window");
   flag("window_mode", o.window_mode, "--window-mode");
+  flag("compare", o.compare, "--compare");
   if (o.frame_per_step) request.scene.frame_per_step = true;
   request.output = o.output.empty() ? request.scene.name + ".mp4" : o.output;
   request.at = o.at;
@@ -105,7 +109,11 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--fps", o->fps, "Frames per second");
   cmd->add_option("--speed", o->speed, "Simulated time units per second of video");
   cmd->add_flag("--frame-per-step", o->frame_per_step, "One frame per solver step (the book's animation)");
-  cmd->add_option("--layout", o->layout, "fbd (the diagram alone), fbd+plot, or plot (any model's moving plot)");
+  cmd->add_option("--layout", o->layout,
+                  "fbd (the diagram alone), fbd+plot, plot (any model's moving plot), or grid (a panel per compared run)");
+  cmd->add_option("--compare", o->compare,
+                  "KEY=V1,V2,...: one run per value (up to 8) of scheme, dt, steps_per_period or a model key, drawn "
+                  "together: the first solid, the others as ghosts in their own colours, a curve each in every panel");
   cmd->add_option("--window", o->window, "Plot window: a time or N periods (8periods); default the whole run");
   cmd->add_option("--window-mode", o->window_mode, "drawing, movement (default) or jumps");
   cmd->add_flag("--frames-player", o->frames_player, "With -o PAGE.html: PNG frames and a page that steps through them");

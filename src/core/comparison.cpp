@@ -15,6 +15,10 @@ std::string trimmed(std::string_view s) {
 }
 }  // namespace
 
+bool is_time_key(const std::string& key) {
+  return key == "scheme" || key == "dt" || key == "steps_per_period" || key == "T" || key == "periods";
+}
+
 ComparisonRequest parse_comparison(std::string_view text) {
   const auto eq = text.find('=');
   const std::string whole(text);
@@ -69,6 +73,12 @@ double Comparison::end_time() const {
   double T = 0;
   for (const Member& m : members_) T = std::max(T, m.trajectory->info().mesh.T);
   return T;
+}
+
+void Comparison::set_escape_limit_from_bounds() {
+  double bound = 0;
+  for (const Member& m : members_) bound = std::max(bound, m.trajectory->info().amplitude_bound);
+  if (bound > 0) set_escape_limit(2 * bound);
 }
 
 bool Comparison::escaped(Member& m, std::span<const double> row) {

@@ -19,6 +19,10 @@ struct ComparisonRequest {
 /// At most this many members: more curves than a legend and a palette can tell apart.
 inline constexpr size_t kMaxComparisonMembers = 8;
 
+/// Whether a key sets how a problem is solved (scheme, dt, steps_per_period,
+/// T, periods) rather than the problem itself.
+bool is_time_key(const std::string& key);
+
 /// Parses "KEY=V1,V2,..." (spaces around items ignored). Throws UsageError for
 /// a missing '=', an empty value, a value given twice, or more than 8 values.
 ComparisonRequest parse_comparison(std::string_view text);
@@ -44,12 +48,24 @@ class Comparison {
   const std::string& value(size_t i) const { return request_.values.at(i); }
   /// "rk4" when comparing schemes, "dt = 0.05" for any other key.
   std::string label(size_t i) const;
+  /// Whether every member solves one problem (the key is a time key): then
+  /// they share one exact solution.
+  bool same_problem() const { return is_time_key(request_.key); }
   const Parameters& parameters(size_t i) const { return members_.at(i).parameters; }
   const Trajectory& trajectory(size_t i) const { return *members_.at(i).trajectory; }
+  /// A member's run, to be stepped by a caller that keeps its own lock step
+  /// (ComparisonTrajectory); do not mix with advance_to.
+  Trajectory& trajectory(size_t i) { return *members_.at(i).trajectory; }
 
   /// A member blows up when |main quantity| exceeds `limit` (default: never;
   /// only non-finite values stop it).
   void set_escape_limit(double limit) { escape_limit_ = limit; }
+  double escape_limit() const { return escape_limit_; }
+  /// The limit every picture of a comparison uses: twice the largest
+  /// amplitude the members can reach (from their energy), so that a scheme
+  /// that gains energy is seen doing it before it leaves the view; no limit
+  /// when no member knows its bound.
+  void set_escape_limit_from_bounds();
   bool blew_up(size_t i) const { return members_.at(i).blew_up; }
   double blow_up_time(size_t i) const { return members_.at(i).blow_up_time; }
   /// Where the last member ends (members may differ in T).

@@ -48,7 +48,8 @@ class Trajectory {
 
   virtual double t() const = 0;
   virtual long long index() const = 0;
-  bool done() const { return index() >= info_.mesh.steps; }
+  /// Whether the last sample has been reached.
+  virtual bool done() const { return index() >= info_.mesh.steps; }
   /// Next time step; false at the end. Throws SolutionError on blow-up.
   virtual bool advance() = 0;
   /// The columns at the current sample.

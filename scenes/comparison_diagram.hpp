@@ -1,0 +1,54 @@
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "scenes/diagram.hpp"
+
+namespace vibra::scenes {
+
+/// A member's columns within a comparison's row (ComparisonTrajectory: t,
+/// then every member's columns): where they start and how many there are
+/// with t.
+struct MemberColumns {
+  size_t offset = 1;
+  size_t width = 0;
+  /// Copies the member's row (t first) out of the comparison's row into `out` (at least `width` long).
+  std::span<const double> slice(std::span<const double> row, std::span<double> out) const;
+  /// `value` of a member row, read from a comparison row.
+  std::function<double(std::span<const double>)> reading(std::function<double(std::span<const double>)> value) const;
+};
+
+/// The members of a comparison in one diagram: the first drawn solid with its
+/// forces, the others as ghosts (their bodies only, in their own colours,
+/// faint, over the first, so that runs that agree are seen to agree). Each
+/// member's diagram reads its own columns of the comparison's rows. A member
+/// whose columns turn NaN (it blew up) is drawn no more.
+class ComparisonDiagram final : public Diagram {
+ public:
+  struct Member {
+    std::unique_ptr<Diagram> diagram;
+    MemberColumns columns;
+    LegendEntry entry;
+  };
+  /// `shared_exact`: the members solve one problem, so the first member's
+  /// exact solution stands for all; otherwise each has its own.
+  ComparisonDiagram(std::vector<Member>, bool shared_exact, std::string exact_label);
+
+  void record(std::span<const double> row, WorldBox&) override;
+  void finish_recording(WorldBox&) override;
+  std::optional<WorldBox> view_at(std::span<const double> row) const override;
+  void draw_static(render::Canvas&, const render::WorldView&) const override;
+  void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
+  /// Each panel of the first member's diagram, with one curve per member in
+  /// its colour (the first curve of that panel), and the exact solution dashed.
+  std::vector<PanelSpec> panels() const override;
+  std::vector<LegendEntry> legend() const override;
+
+ private:
+  std::vector<Member> members_;
+  bool shared_exact_;
+  std::string exact_label_;
+  mutable std::vector<double> slice_;
+};
+
+}  // namespace vibra::scenes

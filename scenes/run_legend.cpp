@@ -1,0 +1,68 @@
+#include "scenes/run_legend.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "render/shapes.hpp"
+#include "render/text.hpp"
+
+namespace vibra::scenes {
+
+namespace {
+constexpr double kLabelSize = 16, kNoteSize = 13;
+constexpr double kSwatch = 26, kGap = 8, kRow = 24, kNoteRow = 18;
+
+std::string note_text(double t) {
+  char text[64];
+  std::snprintf(text, sizeof text, "blew up at <i>t</i> = %.3g", t);
+  return text;
+}
+}  // namespace
+
+RunLegend::RunLegend(std::vector<LegendEntry> entries, int height)
+    : entries_(std::move(entries)), blow_up_times_(entries_.size(), INFINITY) {
+  if (entries_.empty()) return;
+  render::Canvas measure = render::Canvas::image(8, height);
+  const double scale = measure.scale();
+  double widest = render::text_size(measure, note_text(1e-300), {kNoteSize}).x();
+  for (const auto& e : entries_) widest = std::max(widest, render::text_size(measure, e.label, {kLabelSize}).x());
+  width_ = widest + (kSwatch + kGap + 12) * scale;
+}
+
+void RunLegend::record(std::span<const double> row) {
+  for (size_t i = 0; i < entries_.size(); ++i)
+    if (entries_[i].probe && !std::isfinite(entries_[i].probe(row)))
+      blow_up_times_[i] = std::min(blow_up_times_[i], row[0]);
+}
+
+double RunLegend::row_top(size_t i, double scale) const {
+  // A note row under each earlier entry that blows up.
+  double y = 0;
+  for (size_t k = 0; k < i; ++k) y += (kRow + (std::isfinite(blow_up_times_[k]) ? kNoteRow : 0)) * scale;
+  return y;
+}
+
+void RunLegend::draw_static(render::Canvas& canvas, const render::Point& corner) const {
+  const double scale = canvas.scale();
+  const double left = corner.x() - width_ + 12 * scale;
+  for (size_t i = 0; i < entries_.size(); ++i) {
+    const LegendEntry& e = entries_[i];
+    const double y = corner.y() + row_top(i, scale) + 0.5 * kRow * scale;
+    render::draw_pixel_line(canvas, {left, y}, {left + kSwatch * scale, y}, {e.color, 3, e.dashed});
+    render::draw_text(canvas, {left + (kSwatch + kGap) * scale, y}, e.label, {kLabelSize}, render::Anchor::left);
+  }
+}
+
+void RunLegend::draw(render::Canvas& canvas, const render::Point& corner, double t) const {
+  const double scale = canvas.scale();
+  const double left = corner.x() - width_ + (12 + kSwatch + kGap) * scale;
+  for (size_t i = 0; i < entries_.size(); ++i) {
+    const LegendEntry& e = entries_[i];
+    if (!(t >= blow_up_times_[i])) continue;
+    const double y = corner.y() + row_top(i, scale) + (kRow + 0.5 * kNoteRow) * scale;
+    render::draw_text(canvas, {left, y}, note_text(blow_up_times_[i]), {kNoteSize, e.color}, render::Anchor::left);
+  }
+}
+
+}  // namespace vibra::scenes

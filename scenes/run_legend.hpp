@@ -1,0 +1,40 @@
+#pragma once
+#include <vector>
+
+#include "render/canvas.hpp"
+#include "scenes/diagram.hpp"
+
+namespace vibra::scenes {
+
+/// The legend of a comparison's runs: a column of its own at the right of
+/// the diagram's area, so it never covers the drawing or a curve. Each run's
+/// line and name; under a run that blew up, "blew up at t = ..." appears
+/// once the frame's time reaches it.
+class RunLegend {
+ public:
+  /// Measures the entries at the frame height `height` (720p sizes, scaled).
+  RunLegend(std::vector<LegendEntry>, int height);
+
+  bool empty() const { return entries_.empty(); }
+  /// The column's width in pixels.
+  double width() const { return width_; }
+  /// Pre-pass over the run's rows: when each run blows up.
+  void record(std::span<const double> row);
+  /// The time run i blew up, or infinity.
+  double blow_up_time(size_t i) const { return blow_up_times_.at(i); }
+
+  /// The lines and names, in the column whose top right corner is `corner`.
+  void draw_static(render::Canvas&, const render::Point& corner) const;
+  /// The blow-up notes due at time t.
+  void draw(render::Canvas&, const render::Point& corner, double t) const;
+
+ private:
+  /// Where entry i's row starts below the corner.
+  double row_top(size_t i, double scale) const;
+
+  std::vector<LegendEntry> entries_;
+  std::vector<double> blow_up_times_;
+  double width_ = 0;
+};
+
+}  // namespace vibra::scenes
