@@ -222,16 +222,11 @@ void run_render(const RenderRequest& r) {
   }
 
   render::start_loading_fonts();  // overlaps the solver's pre-pass and the encoder's start
-  const ModelDefinition& model = find_model(r.scene.model);
   // A comparison's runs go through the render as one trajectory of wide rows.
-  const std::optional<ComparisonRequest> comparison =
-      r.scene.compare.empty() ? std::nullopt : std::optional(parse_comparison(r.scene.compare));
-  const Parameters parameters = comparison ? comparison_base_of(r.scene, comparison->key) : model_parameters_of(r.scene);
-  auto build = [&]() -> std::unique_ptr<Trajectory> {
-    if (comparison) return std::make_unique<ComparisonTrajectory>(model, parameters, *comparison);
-    return model.build(parameters);
-  };
-  std::unique_ptr<Trajectory> pre_pass = build();
+  const Parameters parameters =
+      r.scene.compare.empty() ? model_parameters_of(r.scene)
+                              : comparison_base_of(r.scene, parse_comparison(r.scene.compare).key);
+  std::unique_ptr<Trajectory> pre_pass = build_scene_runs(r.scene);
   const TimeMesh mesh = pre_pass->info().mesh;
   if (!std::isfinite(mesh.T)) throw UsageError("a render needs a finite end time: give T or periods");
   if (still && (*r.at < 0 || *r.at > mesh.T * (1 + 1e-12)))
@@ -260,8 +255,7 @@ void run_render(const RenderRequest& r) {
     return;
   }
 
-  std::unique_ptr<Scene> scene =
-      runs ? make_comparison_scene(r.scene, *runs, caption) : make_scene(r.scene, pre_pass->info(), caption);
+  std::unique_ptr<Scene> scene = make_scene_for(r.scene, *pre_pass, caption);
 
   // Pre-pass: fixed view and plot ranges over the whole run, in constant
   // memory; for a page also its time series and its CSV.
@@ -283,7 +277,7 @@ void run_render(const RenderRequest& r) {
 
   // The render pass: every solver step feeds the scene (moving plots), and
   // frames between steps interpolate the solution (cubic Hermite).
-  std::unique_ptr<Trajectory> trajectory = build();
+  std::unique_ptr<Trajectory> trajectory = build_scene_runs(r.scene);
   std::vector<double> step_row(trajectory->width());
   trajectory->row(step_row);
   scene->observe(step_row);

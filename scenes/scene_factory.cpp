@@ -23,9 +23,12 @@ SceneStyle style_of(const SceneConfig& config, const TrajectoryInfo& info, const
   return style;
 }
 
-/// A comparison member's colour: the scene's body colour for the first, the palette's for the others.
+/// A comparison member's colour: the scene's body colour for the first; for
+/// the others the palette's, those of the forces' arrows last.
 render::Color member_color(const SceneConfig& config, size_t i) {
-  return i == 0 ? config.colors.bob : render::palette::series(i);
+  using namespace render::palette;
+  const render::Color others[] = {orange, sky, vermillion, green, purple, ink, yellow};
+  return i == 0 ? config.colors.bob : others[(i - 1) % 7];
 }
 
 /// A member's main quantity, or its exact solution, read from a comparison's row.
@@ -49,6 +52,19 @@ std::unique_ptr<Scene> make_scene(const SceneConfig& config, const TrajectoryInf
   const Parameters parameters = model_parameters_of(config);
   return std::make_unique<SystemScene>(config.width, config.height, info.mesh.T, style,
                                        kind.make({config, parameters, info}));
+}
+
+std::unique_ptr<Trajectory> build_scene_runs(const SceneConfig& config) {
+  const ModelDefinition& model = find_model(config.model);
+  if (config.compare.empty()) return model.build(model_parameters_of(config));
+  const ComparisonRequest request = parse_comparison(config.compare);
+  return std::make_unique<ComparisonTrajectory>(model, comparison_base_of(config, request.key), request);
+}
+
+std::unique_ptr<Scene> make_scene_for(const SceneConfig& config, const Trajectory& runs, const std::string& caption) {
+  if (const auto* comparison = dynamic_cast<const ComparisonTrajectory*>(&runs))
+    return make_comparison_scene(config, *comparison, caption);
+  return make_scene(config, runs.info(), caption);
 }
 
 std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const ComparisonTrajectory& runs,

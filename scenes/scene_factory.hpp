@@ -16,6 +16,13 @@ namespace vibra::scenes {
 /// model that has none.
 std::unique_ptr<Scene> make_scene(const SceneConfig&, const TrajectoryInfo& info, const std::string& caption);
 
+/// The runs a scene draws: its model's run, or with `compare` one run per
+/// value as a ComparisonTrajectory. Throws UsageError for bad settings.
+std::unique_ptr<Trajectory> build_scene_runs(const SceneConfig&);
+
+/// make_scene or make_comparison_scene, whichever `runs` (from build_scene_runs) needs.
+std::unique_ptr<Scene> make_scene_for(const SceneConfig&, const Trajectory& runs, const std::string& caption);
+
 /// The scene of a comparison, fed the rows of `runs`: the members' diagrams
 /// (the first solid, the others as ghosts) beside panels with a curve per
 /// member (fbd, fbd+plot); the main quantity of every member in one panel

@@ -65,10 +65,9 @@ vibra::scenes::SceneConfig small_scene(const std::vector<std::pair<std::string, 
 /// Scenes of `config` that have seen the whole run (the render's pre-pass).
 std::vector<std::unique_ptr<vibra::scenes::Scene>> recorded_scenes(const vibra::scenes::SceneConfig& config,
                                                                    int count) {
-  const auto& model = vibra::find_model(config.model);
-  auto pre_pass = model.build(vibra::scenes::model_parameters_of(config));
+  auto pre_pass = vibra::scenes::build_scene_runs(config);
   std::vector<std::unique_ptr<vibra::scenes::Scene>> scenes;
-  for (int i = 0; i < count; ++i) scenes.push_back(vibra::scenes::make_scene(config, pre_pass->info(), "test"));
+  for (int i = 0; i < count; ++i) scenes.push_back(vibra::scenes::make_scene_for(config, *pre_pass, "test"));
   std::vector<double> row(pre_pass->width());
   do {
     pre_pass->row(row);
@@ -88,7 +87,7 @@ Run compare_redraws(const std::vector<std::pair<std::string, std::string>>& sett
 
   Canvas tracked = Canvas::image(config.width, config.height), full = Canvas::image(config.width, config.height);
   tracked.track_damage();
-  auto trajectory = vibra::find_model(config.model).build(vibra::scenes::model_parameters_of(config));
+  auto trajectory = vibra::scenes::build_scene_runs(config);
   std::vector<double> row(trajectory->width());
   std::vector<std::uint8_t> previous;
   Run run;
@@ -192,6 +191,17 @@ TEST_CASE("damage: redrawing only what changed gives the full redraw, pixel for 
       }
     }
   }
+}
+
+TEST_CASE("damage: a comparison's ghosts, legend and blow-up notes redraw exactly too", "[damage][comparison]") {
+  for (const char* layout : {"fbd", "fbd+plot", "plot", "grid"}) {
+    INFO("layout " << layout);
+    // Forward Euler blows up inside the frames drawn: its note appears.
+    compare_redraws({{"layout", layout}, {"compare", "scheme=forward-euler,crank-nicolson,rk4"}, {"dt", "0.5"}}, 40,
+                    "spring");
+  }
+  compare_redraws({{"compare", "Theta=10,60,120"}}, 40, "pendulum");
+  compare_redraws({{"compare", "scheme=euler-cromer,pefrl"}, {"layout", "fbd"}}, 40, "orbit");
 }
 
 TEST_CASE("damage: a scene moved to a new canvas paints its whole background there", "[damage]") {

@@ -1,0 +1,179 @@
+// `vibra render --compare KEY=V1,V2,...`: the members as one trajectory of
+// wide rows (each exact at its own samples), ghosts drawn where their runs
+// are, blow-ups noted, bad input refused.
+#include <catch2/catch.hpp>
+
+#include <cairo.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include "cli_support.hpp"
+#include "core/comparison_trajectory.hpp"
+#include "render/canvas.hpp"
+#include "scenes/pendulum_geometry.hpp"
+#include "scenes/run_legend.hpp"
+#include "scenes/scene_config.hpp"
+#include "scenes/scene_factory.hpp"
+#include "scenes/system_scene.hpp"
+
+using namespace vibra;
+using test::check_refused;
+using test::run_vibra;
+using test::ScratchDirectory;
+
+namespace {
+Parameters settings(const std::string& model, const std::vector<std::string>& assignments) {
+  Parameters p = model_parameters(find_model(model));
+  for (const auto& a : assignments) p.assign(a);
+  return p;
+}
+
+/// Every sample of a member run alone: time -> row.
+std::map<double, std::vector<double>> samples(const std::string& model, const Parameters& p) {
+  auto run = find_model(model).build(p);
+  std::map<double, std::vector<double>> out;
+  do {
+    std::vector<double> row(run->width());
+    run->row(row);
+    out[row[0]] = row;
+  } while (run->advance());
+  return out;
+}
+
+std::string frame_count(const std::string& video) {
+  return test::shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 '" +
+                     video + "'");
+}
+}  // namespace
+
+TEST_CASE("a comparison's rows hold every member exactly at its own samples, on the union of their meshes",
+          "[comparison]") {
+  const Parameters base = settings("undamped", {"w=1", "T=3", "scheme=crank-nicolson"});
+  ComparisonTrajectory runs(find_model("undamped"), base, parse_comparison("dt=0.1,0.15"));
+  REQUIRE(runs.members() == 2);
+  CHECK(runs.info().columns == std::vector<std::string>{"t", "u[dt=0.1]", "v[dt=0.1]", "u[dt=0.15]", "v[dt=0.15]"});
+  CHECK(runs.info().mesh.dt == 0.1);
+  REQUIRE(runs.info().exact);  // one problem solved twice: one exact solution
+
+  std::vector<std::map<double, std::vector<double>>> alone;
+  std::set<double> union_of_meshes;
+  for (const char* dt : {"dt=0.1", "dt=0.15"}) {
+    Parameters p = base;
+    p.assign(dt);
+    alone.push_back(samples("undamped", p));
+    for (const auto& [t, row] : alone.back()) union_of_meshes.insert(t);
+  }
+  std::vector<double> times, row(runs.width());
+  do {
+    runs.row(row);
+    times.push_back(row[0]);
+    for (size_t i = 0; i < 2; ++i) {
+      INFO("member " << i << " at t = " << row[0]);
+      const auto own = alone[i].find(row[0]);
+      if (own != alone[i].end()) {  // its own sample: exactly its numbers
+        CHECK(row[runs.offset(i)] == own->second[1]);
+        CHECK(row[runs.offset(i) + 1] == own->second[2]);
+      } else {  // between its samples: its interpolation, close to the solution
+        CHECK(std::abs(row[runs.offset(i)] - runs.info().exact(row[0])) < 0.05);
+      }
+    }
+  } while (runs.advance());
+  CHECK(runs.done());
+  CHECK(times == std::vector<double>(union_of_meshes.begin(), union_of_meshes.end()));
+}
+
+TEST_CASE("a member that blows up reads NaN from then on while the others run to the end", "[comparison]") {
+  const Parameters base = settings("undamped", {"steps_per_period=8", "periods=6"});
+  ComparisonTrajectory runs(find_model("undamped"), base, parse_comparison("scheme=forward-euler,crank-nicolson"));
+  std::vector<double> row(runs.width());
+  double last_t = 0;
+  do {
+    runs.row(row);
+    last_t = row[0];
+    const bool gone = row[0] >= runs.blow_up_time(0);
+    CHECK(std::isnan(row[runs.offset(0)]) == gone);
+    CHECK(std::isfinite(row[runs.offset(1)]));
+    if (!gone) CHECK(std::abs(row[runs.offset(0)]) <= runs.comparison().escape_limit());
+  } while (runs.advance());
+  CHECK(runs.blow_up_time(0) < 6);  // Forward Euler's amplitude grows by 27% a step here
+  CHECK(std::isinf(runs.blow_up_time(1)));
+  CHECK(last_t == Approx(6).epsilon(1e-12));
+}
+
+TEST_CASE("the legend learns when each run blew up from the rows", "[comparison]") {
+  scenes::RunLegend legend({{"a", render::palette::blue, false, [](std::span<const double> r) { return r[1]; }},
+                            {"b", render::palette::orange, false, [](std::span<const double> r) { return r[2]; }},
+                            {"exact", render::palette::ink, true}},
+                           360);
+  CHECK(legend.width() > 0);
+  for (double t : {0.0, 1.0, 2.0, 3.0}) {
+    const double row[] = {t, t < 2 ? 1.0 : NAN, 1.0};
+    legend.record(row);
+  }
+  CHECK(legend.blow_up_time(0) == 2);
+  CHECK(std::isinf(legend.blow_up_time(1)));
+  CHECK(std::isinf(legend.blow_up_time(2)));
+}
+
+TEST_CASE("each member's ghost is drawn at its own state", "[comparison]") {
+  scenes::SceneConfig config = scenes::load_scene("pendulum");
+  for (const auto& [k, v] : std::vector<std::pair<std::string, std::string>>{
+           {"compare", "Theta=10,60"}, {"layout", "fbd"}, {"alpha", "0"}, {"size", "640x360"}})
+    scenes::apply_setting(config, {k, v, "test"});
+  auto pre_pass = scenes::build_scene_runs(config);
+  auto scene = scenes::make_scene_for(config, *pre_pass, "test");
+  std::vector<double> row(pre_pass->width());
+  do {
+    pre_pass->row(row);
+    scene->record(row);
+  } while (pre_pass->advance());
+
+  auto runs = scenes::build_scene_runs(config);
+  runs->row(row);  // t = 0: the bobs at 10 and 60 degrees
+  render::Canvas canvas = render::Canvas::image(640, 360);
+  scene->draw(canvas, row);
+  canvas.flush();
+  auto& system = dynamic_cast<scenes::SystemScene&>(*scene);
+  const render::WorldView view = system.view_at(row);
+  auto pixel_at = [&](double degrees) {
+    const scenes::PendulumGeometry g = scenes::pendulum_geometry({0, degrees * M_PI / 180, 0, 1, 0}, {});
+    const render::Point p = view.to_pixel(g.bob);
+    const unsigned char* px = canvas.data() + int(p.y()) * canvas.stride() + 4 * int(p.x());
+    return std::array<int, 3>{px[2], px[1], px[0]};  // r, g, b
+  };
+  const auto first = pixel_at(10), ghost = pixel_at(60), nothing = pixel_at(-60);
+  CHECK(first[2] > first[0] + 80);  // the first run's bob: solid blue
+  CHECK(ghost[0] > ghost[2] + 60);  // the ghost's bob: faint orange
+  CHECK(ghost[0] < 250);
+  CHECK(nothing == std::array<int, 3>{255, 255, 255});
+}
+
+TEST_CASE("render --compare writes a video of the run's frames, from the flag or a scene file", "[comparison][cli]") {
+  ScratchDirectory dir;
+  const std::string common = " --set periods=1 --size 320x180 -q -o ";
+  REQUIRE(run_vibra("render spring" + common + dir / "one.mp4").exit_code == 0);
+  const auto compared = run_vibra("render spring --compare scheme=forward-euler,rk4" + common + dir / "two.mp4");
+  INFO(compared.err);
+  REQUIRE(compared.exit_code == 0);
+  CHECK(frame_count(dir / "two.mp4") == frame_count(dir / "one.mp4"));
+
+  // A scene file's scheme gives way to the comparison's.
+  std::ofstream(dir / "schemes.toml") << "model = \"undamped\"\nscheme = \"rk4\"\ncompare = \"scheme=forward-euler,rk4\"\n"
+                                         "layout = \"grid\"\nperiods = 2\n";
+  const auto grid = run_vibra("render " + dir / "schemes.toml --at 1.5 -o " + dir / "grid.png");
+  INFO(grid.err);
+  CHECK(grid.exit_code == 0);
+  CHECK(std::filesystem::exists(dir / "grid.png"));
+}
+
+TEST_CASE("render --compare refuses bad input with one line and writes nothing", "[comparison][cli]") {
+  check_refused("render spring --compare scheme=rk4,rk4 -o OUT.mp4", "scheme=rk4 is given twice");
+  check_refused("render spring --compare kk=1,2 -o OUT.mp4", "did you mean 'k'");
+  check_refused("render spring --compare dt=1,2,3,4,5,6,7,8,9 -o OUT.mp4", "at most 8");
+  check_refused("render spring --set scheme=rk4 --compare scheme=rk4,pefrl -o OUT.mp4", "drop --set scheme");
+  check_refused("render spring --layout grid -o OUT.mp4", "add --compare");
+  check_refused("render spring --compare scheme -o OUT.mp4", "not KEY=V1,V2");
+}
