@@ -81,3 +81,16 @@ def test_ctrl_c_stops_a_render_and_keeps_no_partial_file(in_tmp):
         timer.cancel()
     assert not (in_tmp / "pendulum.mp4").exists()
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # Python's handler is back
+
+
+def test_compare_draws_the_runs_together_from_a_dict_or_a_string(in_tmp):
+    runs = {"scheme": ["forward-euler", "rk4"]}
+    video = vibra.render("spring", compare=runs, periods=1, size=(320, 180), fps=10)
+    alone = vibra.render("spring", out="alone.mp4", periods=1, size=(320, 180), fps=10)
+    assert int(probe(video)["nb_read_frames"]) == int(probe(alone)["nb_read_frames"])
+    still = vibra.render("undamped", out="grid.png", at=0.5, layout="grid", compare="dt=0.05,0.025", periods=2)
+    assert isinstance(still, vibra.Image) and (in_tmp / "grid.png").is_file()
+    with pytest.raises(ValueError, match="one key with its values"):
+        vibra.render("spring", compare={"scheme": ["rk4"], "dt": [0.1]})
+    with pytest.raises(ValueError, match="given twice"):
+        vibra.render("spring", compare="scheme=rk4,rk4")

@@ -32,6 +32,18 @@ def comma_list(name, value):
     return value_text(name, value)
 
 
+def comparison_text(compare):
+    """--compare's KEY=V1,V2,... from "KEY=V1,V2", or a one-key dict such as
+    {"scheme": ["forward-euler", "rk4"]} or {"dt": [0.1, 0.05]}."""
+    if compare is None or isinstance(compare, str):
+        return compare
+    if isinstance(compare, dict) and len(compare) == 1:
+        (key, values), = compare.items()
+        return f"{key}={comma_list(key, values)}"
+    raise ValueError(f"compare={compare!r} is not \"KEY=V1,V2\" or one key with its values: "
+                     "write e.g. compare={\"scheme\": [\"forward-euler\", \"rk4\"]}")
+
+
 def size_text(size):
     """(1280, 720) or "1280x720" as "1280x720"."""
     if isinstance(size, str):

@@ -7,7 +7,7 @@ import os
 from pathlib import Path
 
 from . import _vibra
-from ._keys import assignments, size_text, value_text
+from ._keys import assignments, comparison_text, size_text, value_text
 
 # Videos up to this size are embedded in the notebook as a data URI; larger
 # ones are linked by their path relative to the notebook's directory, so the
@@ -80,7 +80,7 @@ class Image(_Output):
 
 
 def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=None, speed=None,
-           window=None, window_mode=None, frame_per_step=False, frames_player=False,
+           window=None, window_mode=None, compare=None, frame_per_step=False, frames_player=False,
            codec="", quality="medium", crf=-1, preset="", threads=0, quiet=True, **keys):
     """Renders a scene as `vibra render` does: a video (out="name.mp4", .webm,
     .mkv, .ogv or .gif; default SCENE.mp4), or with at=T one still (out=
@@ -88,11 +88,13 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
     ("frames/tmp_%04d.png") and pages ("page.html") are written too and
     returned as a Path. Other keywords are scene keys (size=(1280, 720) or
     "1280x720", fps, layout="fbd", speed, window="8periods", ...) or keys of
-    the scene's model (Theta=40, alpha=0.8, T=20). Returns a Video or an Image.
+    the scene's model (Theta=40, alpha=0.8, T=20). compare={"scheme": ["forward-euler",
+    "rk4"]} (or "scheme=forward-euler,rk4") draws one run per value together, as
+    --compare does. Returns a Video or an Image.
     """
     settings = []
     for key, value in (("size", size), ("fps", fps), ("layout", layout), ("speed", speed),
-                       ("window", window), ("window_mode", window_mode)):
+                       ("window", window), ("window_mode", window_mode), ("compare", comparison_text(compare))):
         if value is not None:
             settings.append((key, size_text(value) if key == "size" else value_text(key, value)))
     settings += [tuple(a.split("=", 1)) for a in assignments(keys)]
