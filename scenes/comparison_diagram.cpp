@@ -72,13 +72,15 @@ void ComparisonDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
     const auto member = m.columns.slice(row, slice_);
     if (std::isfinite(member[1])) m.diagram->draw(canvas, view, member);
   };
+  if (members_.size() > 1) {
+    // All ghosts in one group, made faint together (one layer per frame),
+    // under the first run, which stays clear with its forces.
+    cairo_push_group(canvas.cr());
+    for (size_t i = 1; i < members_.size(); ++i) draw_member(members_[i]);
+    cairo_pop_group_to_source(canvas.cr());
+    cairo_paint_with_alpha(canvas.cr(), kGhostAlpha);
+  }
   draw_member(members_.front());
-  if (members_.size() == 1) return;
-  // All ghosts in one group, made faint together: one layer per frame.
-  cairo_push_group(canvas.cr());
-  for (size_t i = 1; i < members_.size(); ++i) draw_member(members_[i]);
-  cairo_pop_group_to_source(canvas.cr());
-  cairo_paint_with_alpha(canvas.cr(), kGhostAlpha);
 }
 
 std::vector<PanelSpec> ComparisonDiagram::panels() const {
@@ -116,7 +118,7 @@ std::vector<LegendEntry> ComparisonDiagram::legend() const {
   for (const PanelSpec& panel : members_.front().diagram->panels())
     for (const SeriesSpec& s : panel.series) exact = exact || s.dashed;
   if (exact)
-    entries.push_back({exact_label_ + (shared_exact_ ? "" : ", each run's own"),
+    entries.push_back({exact_label_ + (shared_exact_ ? "" : " (dashed)"),
                        shared_exact_ ? render::palette::ink : render::palette::faint, true});
   return entries;
 }

@@ -20,7 +20,7 @@ struct MemberColumns {
 
 /// The members of a comparison in one diagram: the first drawn solid with its
 /// forces, the others as ghosts (their bodies only, in their own colours,
-/// faint, over the first, so that runs that agree are seen to agree). Each
+/// faint, under the first, so that the first stays clear). Each
 /// member's diagram reads its own columns of the comparison's rows. A member
 /// whose columns turn NaN (it blew up) is drawn no more.
 class ComparisonDiagram final : public Diagram {

@@ -13,6 +13,12 @@ std::string member_markup(const Comparison& c, size_t m) {
   return key == "scheme" ? c.value(m) : key_markup(key) + " = " + markup_escaped(c.value(m));
 }
 
+render::Color member_color(const render::Color& first, size_t i) {
+  using namespace render::palette;
+  const render::Color others[] = {orange, sky, green, purple, vermillion, ink, yellow};
+  return i == 0 ? first : others[(i - 1) % 7];
+}
+
 std::string blow_up_note(double t) {
   char text[64];
   std::snprintf(text, sizeof text, ": blew up at <i>t</i> = %.3g", t);

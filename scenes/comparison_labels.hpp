@@ -2,6 +2,7 @@
 #include <string>
 
 #include "core/comparison.hpp"
+#include "render/color.hpp"
 
 namespace vibra::scenes {
 
@@ -13,6 +14,11 @@ std::string key_markup(const std::string& key);
 
 /// A member's legend entry: the scheme's name, or "Δt = 0.05".
 std::string member_markup(const Comparison&, size_t member);
+
+/// Member i's colour in a drawing whose body colour is `first`: that for the
+/// first member, the palette's for the others: orange, sky blue, green,
+/// purple, then vermillion (the first force's arrow), ink and yellow.
+render::Color member_color(const render::Color& first, size_t i);
 
 /// ": blew up at t = 12.3", appended to a member's legend entry.
 std::string blow_up_note(double t);

@@ -30,7 +30,7 @@ std::vector<std::string> page_panel_names(const TrajectoryInfo& info) {
 }
 
 PagePlotCollector::PagePlotCollector(const TrajectoryInfo& info, const std::vector<std::string>& panels,
-                                     const std::string& run) {
+                                     const std::string& run, std::optional<render::Color> run_color) {
   const std::vector<std::string> order = ordered_plot_panels(info, panels);
   const bool with_exact = std::find(panels.begin(), panels.end(), "exact") != panels.end();
   const TimeMesh& mesh = info.mesh;
@@ -43,7 +43,8 @@ PagePlotCollector::PagePlotCollector(const TrajectoryInfo& info, const std::vect
     const double factor = page_factor(name);
     render::PagePanel panel{page_label(name), {}};
     feeds_.push_back({panels_.size(), 0, [column, factor](std::span<const double> row) { return factor * row[column]; }});
-    panel.series.push_back({name, run, time_panel_color(static_cast<int>(panels_.size())), false, data()});
+    panel.series.push_back(
+        {name, run, run_color.value_or(time_panel_color(static_cast<int>(panels_.size()))), false, data()});
     if (with_exact && name == info.columns[1]) {
       feeds_.push_back({panels_.size(), 1, [exact = info.exact, factor](std::span<const double> row) {
                           return factor * exact(row[0]);

@@ -1,5 +1,6 @@
 #pragma once
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -23,7 +24,10 @@ class PagePlotCollector {
   /// `panels` as for `vibra plot` (columns and `exact`; not phase or path,
   /// which are not against t: UsageError). `run` names the run's curves in
   /// the legend when pages compare runs.
-  PagePlotCollector(const TrajectoryInfo&, const std::vector<std::string>& panels, const std::string& run);
+  /// `run_color`, when given, colours every curve of the run (comparisons
+  /// tell runs apart by colour); otherwise each panel has its own.
+  PagePlotCollector(const TrajectoryInfo&, const std::vector<std::string>& panels, const std::string& run,
+                    std::optional<render::Color> run_color = std::nullopt);
 
   /// One solver row: t first, then the model's columns, on the mesh t_n = n dt.
   void observe(std::span<const double> row);

@@ -23,6 +23,7 @@
 #include "render/video_concat.hpp"
 #include "scenes/frame_clock.hpp"
 #include "scenes/comparison_labels.hpp"
+#include "scenes/comparison_page_plots.hpp"
 #include "scenes/page_plot_collector.hpp"
 #include "scenes/run_caption.hpp"
 #include "scenes/run_csv_file.hpp"
@@ -132,6 +133,14 @@ render::PageFacts page_facts(const RenderRequest& r, long long frames, const Par
   };
   render::PageFacts facts = {{"scene", r.scene.name}};
   for (auto& fact : run_facts(r.scene.model, p, mesh)) facts.push_back(std::move(fact));
+  if (!r.scene.compare.empty()) {  // the compared key's values instead of the first member's
+    const ComparisonRequest c = parse_comparison(r.scene.compare);
+    const std::string shown = c.key == "steps_per_period" ? "dt" : c.key == "periods" ? "T" : c.key;
+    std::erase_if(facts, [&](const auto& f) { return f.first == shown; });
+    std::string values;
+    for (const auto& v : c.values) values += (values.empty() ? "" : ", ") + v;
+    facts.emplace_back("compared", c.key + " = " + values);
+  }
   facts.emplace_back("frames", std::to_string(frames) + " at " + format("%g", r.scene.fps) + " fps (" +
                                    format("%.3g", frames / r.scene.fps) + " s of video)");
   facts.emplace_back("speed", r.scene.frame_per_step ? "one frame per step"
@@ -260,20 +269,25 @@ void run_render(const RenderRequest& r) {
   // Pre-pass: fixed view and plot ranges over the whole run, in constant
   // memory; for a page also its time series and its CSV.
   std::optional<PagePlotCollector> page_plots;
+  std::optional<ComparisonPagePlots> comparison_plots;  // a comparison's page: a curve per member
   std::optional<RunCsvFile> csv;
   const std::filesystem::path csv_path = std::filesystem::path(r.output).replace_extension(".csv");
   if (page) {
-    page_plots.emplace(pre_pass->info(), page_panel_names(pre_pass->info()), r.scene.name);
+    if (runs) comparison_plots.emplace(*runs, r.scene.colors.bob);
+    else page_plots.emplace(pre_pass->info(), page_panel_names(pre_pass->info()), r.scene.name);
     csv.emplace(csv_path, pre_pass->info().columns, r.csv_every);
   }
   std::vector<double> row(pre_pass->width());
   do {
     pre_pass->row(row);
     scene->record(row);
-    if (page) page_plots->observe(row), csv->write(pre_pass->index(), pre_pass->done(), row);
+    if (comparison_plots) comparison_plots->observe(*runs, row);
+    if (page_plots) page_plots->observe(row);
+    if (page) csv->write(pre_pass->index(), pre_pass->done(), row);
     if ((pre_pass->index() & 0xfff) == 0) render::throw_if_stop_requested();
   } while (pre_pass->advance());
   pre_pass.reset();
+  runs = nullptr;  // it was the pre-pass
 
   // The render pass: every solver step feeds the scene (moving plots), and
   // frames between steps interpolate the solution (cubic Hermite).
@@ -324,7 +338,8 @@ void run_render(const RenderRequest& r) {
   progress.finish(segment.frames());
   if (page) {
     csv->commit();
-    write_page(r, outputs, clock, page_facts(r, clock.frames(), parameters, mesh, speed), page_plots->take_panels(),
+    write_page(r, outputs, clock, page_facts(r, clock.frames(), parameters, mesh, speed),
+               comparison_plots ? comparison_plots->take_panels() : page_plots->take_panels(),
                csv_path.filename().string());
   }
   if (!r.quiet) std::fprintf(stderr, "vibra: wrote %s\n", (sink->description() + (page ? " and " + r.output : "")).c_str());

@@ -23,14 +23,6 @@ SceneStyle style_of(const SceneConfig& config, const TrajectoryInfo& info, const
   return style;
 }
 
-/// A comparison member's colour: the scene's body colour for the first; for
-/// the others the palette's, those of the forces' arrows last.
-render::Color member_color(const SceneConfig& config, size_t i) {
-  using namespace render::palette;
-  const render::Color others[] = {orange, sky, vermillion, green, purple, ink, yellow};
-  return i == 0 ? config.colors.bob : others[(i - 1) % 7];
-}
-
 /// A member's main quantity, or its exact solution, read from a comparison's row.
 SeriesSpec main_series(const MemberColumns& columns, render::Color color) {
   return {"", color, columns.reading([](std::span<const double> row) { return row[1]; })};
@@ -76,7 +68,7 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
   std::vector<LegendEntry> legend;
   for (size_t i = 0; i < comparison.size(); ++i) {
     columns.push_back({runs.offset(i), comparison.trajectory(i).width()});
-    legend.push_back({member_markup(comparison, i), member_color(config, i), false,
+    legend.push_back({member_markup(comparison, i), member_color(config.colors.bob, i), false,
                       columns[i].reading([](std::span<const double> row) { return row[1]; })});
   }
   const TrajectoryInfo& first = comparison.trajectory(0).info();
@@ -90,7 +82,9 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
     for (size_t i = 0; i < columns.size(); ++i)
       if (exact_of(i) && (!shared_exact || i == 0))
         panel.series.push_back(exact_series(exact_of(i), shared_exact ? render::palette::ink : legend[i].color));
-    if (first.exact) legend.push_back({first.exact_label + (shared_exact ? "" : ", each run's own"), render::palette::ink, true});
+    if (first.exact)
+      legend.push_back({first.exact_label + (shared_exact ? "" : " (dashed)"),
+                        shared_exact ? render::palette::ink : render::palette::faint, true});
     return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style, std::vector{std::move(panel)},
                                        std::move(legend));
   }

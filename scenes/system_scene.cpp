@@ -28,8 +28,9 @@ SystemScene::SystemScene(int width, int height, double t_end, SceneStyle style, 
   // Room for arrow labels and the read-out at the top; the caption's line at
   // the bottom comes below the lowest arrow's label.
   const double side = 48 * scale, top = 56 * scale, bottom = (style_.caption.empty() ? 52 : 80) * scale;
-  view_area_ = {diagram_area_.x + side, diagram_area_.y + top, diagram_area_.w - 2 * side - legend_.width(),
-                diagram_area_.h - top - bottom};
+  // A legend too wide for a small frame overlaps the drawing rather than squeeze it away.
+  const double view_width = std::max(diagram_area_.w - 2 * side - legend_.width(), 0.3 * diagram_area_.w);
+  view_area_ = {diagram_area_.x + side, diagram_area_.y + top, view_width, diagram_area_.h - top - bottom};
   world_.setEmpty();
 }
 
@@ -98,11 +99,12 @@ void SystemScene::skip(const render::Canvas& canvas, std::span<const double> row
 }
 
 render::PixelRect SystemScene::drawing_area() const {
-  return {diagram_area_.x, diagram_area_.y, diagram_area_.w - legend_.width(), diagram_area_.h};
+  const double w = std::max(diagram_area_.w - legend_.width(), view_area_.x + view_area_.w - diagram_area_.x);
+  return {diagram_area_.x, diagram_area_.y, w, diagram_area_.h};
 }
 
 render::Point SystemScene::legend_corner(double scale) const {
-  return {diagram_area_.x + diagram_area_.w - 4 * scale, diagram_area_.y + 14 * scale};
+  return {diagram_area_.x + diagram_area_.w - 4 * scale, diagram_area_.y + 44 * scale};  // below the read-out
 }
 
 StaticLayer::Grow SystemScene::progress_to(double t) {

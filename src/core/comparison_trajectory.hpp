@@ -22,6 +22,11 @@ class ComparisonTrajectory final : public Trajectory {
   size_t members() const { return comparison_.size(); }
   /// Where member i's columns (after t) start in a row.
   size_t offset(size_t i) const { return offsets_.at(i); }
+  /// Whether member i has a sample of its own at the current time (rather
+  /// than being interpolated there): each of its samples is current once.
+  bool at_sample(size_t i) const {
+    return t_ < members_.at(i).blow_up_time && comparison_.trajectory(i).t() == t_;
+  }
   /// Member i's blow-up time, or infinity.
   double blow_up_time(size_t i) const { return members_.at(i).blow_up_time; }
 

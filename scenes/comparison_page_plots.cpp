@@ -1,0 +1,37 @@
+#include "scenes/comparison_page_plots.hpp"
+
+#include <algorithm>
+
+#include "scenes/comparison_labels.hpp"
+
+namespace vibra::scenes {
+
+ComparisonPagePlots::ComparisonPagePlots(const ComparisonTrajectory& runs, const render::Color& first) {
+  const Comparison& comparison = runs.comparison();
+  for (size_t i = 0; i < comparison.size(); ++i) {
+    const TrajectoryInfo& info = comparison.trajectory(i).info();
+    std::vector<std::string> panels = page_panel_names(info);
+    if (comparison.same_problem() && i > 0) std::erase(panels, "exact");  // one problem: its exact solution once
+    members_.emplace_back(info, panels, comparison.label(i), member_color(first, i));
+    offsets_.push_back(runs.offset(i));
+    widths_.push_back(info.columns.size());
+    slice_.resize(std::max(slice_.size(), widths_.back()));
+  }
+}
+
+void ComparisonPagePlots::observe(const ComparisonTrajectory& runs, std::span<const double> row) {
+  for (size_t i = 0; i < members_.size(); ++i) {
+    if (!runs.at_sample(i)) continue;
+    slice_[0] = row[0];
+    std::copy_n(row.begin() + offsets_[i], widths_[i] - 1, slice_.begin() + 1);
+    members_[i].observe(std::span<const double>(slice_.data(), widths_[i]));
+  }
+}
+
+std::vector<render::PagePanel> ComparisonPagePlots::take_panels() {
+  std::vector<render::PagePanel> panels;
+  for (auto& member : members_) merge_page_panels(panels, member.take_panels());
+  return panels;
+}
+
+}  // namespace vibra::scenes
