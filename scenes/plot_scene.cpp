@@ -11,7 +11,7 @@ std::vector<SeriesSpec> series_for(const SceneStyle& style, const std::string& q
       {"<i>" + quantity + "</i> numerical", style.colors.bob, [](std::span<const double> row) { return row[1]; }}};
   if (exact)
     series.push_back({"<i>" + quantity + "</i> " + exact_label, style.colors.gravity,
-                      [exact](std::span<const double> row) { return exact(row[0]); }, true});
+                      [exact](std::span<const double> row) { return exact(row[0]); }, true, exact});
   return series;
 }
 }  // namespace
