@@ -1,5 +1,6 @@
 #pragma once
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <optional>
 #include <span>
 #include <string>
@@ -18,6 +19,15 @@ using Point = render::Point;
 struct Arrow {
   Point from, to;
 };
+
+/// Widens `world` to be symmetric about the vertical line at `x`, so that a
+/// pendulum's pivot sits on the frame's centre line whichever way it swings
+/// further (the view centres the world box).
+inline void center_horizontally_on(WorldBox& world, double x) {
+  const double half = std::max(x - world.min().x(), world.max().x() - x);
+  world.extend(Point(x - half, world.min().y()));
+  world.extend(Point(x + half, world.min().y()));
+}
 
 /// One plot panel beside a diagram (layout fbd+plot): a y label and its curves.
 struct PanelSpec {
