@@ -63,7 +63,7 @@ def test_a_transparent_still_has_alpha_where_nothing_is_drawn(in_tmp):
     alpha = rgba[3::4]
     assert len(alpha) == 320 * 180 and alpha[0] == 0  # the corner: no background
     assert max(alpha) == 255  # the drawing is opaque
-    with pytest.raises(ValueError, match="cannot be transparent"):
+    with pytest.raises(OSError, match="cannot be transparent"):
         vibra.render(out="overlay.mp4", transparent=True, T=0.5)
 
 
