@@ -220,7 +220,7 @@ TEST_CASE("elastic pendulum diagram: mg, the wire's force (L - beta)/(1 - beta) 
   CHECK(trail.front().p.x() == Approx(r.rows.front()[1]));
 }
 
-TEST_CASE("orbit diagram: gravity -x/|x|^3 and v to their scales; the circular orbit keeps radius 1",
+TEST_CASE("orbit diagram: gravity -x/|x|^3 and v to their scales, and the circular orbit keeps radius 1",
           "[scene][diagram]") {
   const Recorded r = record("orbit");
   auto& d = as<OrbitDiagram>(r);

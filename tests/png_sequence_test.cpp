@@ -130,7 +130,7 @@ TEST_CASE("frame pattern: bad patterns throw OutputError", "[png]") {
   CHECK_THROWS_WITH(parse_frame_pattern(dir / "f.png", 10), Contains("%d"));
 }
 
-TEST_CASE("frame pattern: a missing directory is for the sink to create; a file in its place throws", "[png]") {
+TEST_CASE("frame pattern: a missing directory is for the sink to create, a file in its place throws", "[png]") {
   ScratchDirectory dir;
   CHECK(parse_frame_pattern(dir / "missing/f_%04d.png", 10).directory == dir.path / "missing");
   CHECK(parse_frame_pattern(dir / "missing", 10).name(3) == dir.path / "missing/tmp_0003.png");

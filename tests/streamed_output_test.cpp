@@ -68,7 +68,7 @@ std::vector<std::string> words(const std::string& text) {
 }
 }  // namespace
 
-TEST_CASE("-o - --format y4m writes a YUV4MPEG2 header and every frame", "[stream][render]") {
+TEST_CASE("standard output in y4m: a YUV4MPEG2 header and every frame", "[stream][render]") {
   const auto r = run_vibra(kShort + "--format y4m");
   REQUIRE(r.exit_code == 0);
   const std::size_t eol = r.out.find('\n');
@@ -96,7 +96,7 @@ TEST_CASE("-o - --format y4m writes a YUV4MPEG2 header and every frame", "[strea
                  Catch::Contains("width=320") && Catch::Contains("color_range=\"tv\""));
 }
 
-TEST_CASE("-o - --format nut or matroska streams H.264 that a pipe reader decodes", "[stream][render][video]") {
+TEST_CASE("standard output in NUT or Matroska: H.264 that a pipe reader decodes", "[stream][render][video]") {
   for (const char* format : {"nut", "matroska"}) {
     INFO(format);
     ScratchDirectory dir;
@@ -129,7 +129,7 @@ TEST_CASE("a full disk behind standard output is a one-line error", "[stream][re
   }
 }
 
-TEST_CASE("-o - needs a stream format; --format needs -o -", "[stream][cli]") {
+TEST_CASE("standard output needs a stream format, and --format needs standard output", "[stream][cli]") {
   vibra::test::check_refused("render -o -", "add --format y4m");
   vibra::test::check_refused("render -o - --format webm", "--format webm is not a stream format");
   vibra::test::check_refused("render --format y4m -o OUT.mp4", "--format is for -o -");
