@@ -87,6 +87,8 @@ void Canvas::finish() {
 }
 
 void Canvas::clear(Color c) {
+  // A vector page starts empty: a transparent clear adds no rectangle to it.
+  if (c.a <= 0 && cairo_surface_get_type(surface()) != CAIRO_SURFACE_TYPE_IMAGE) return;
   if (tracking_) drawn_.add_all();
   cairo_save(cr());
   cairo_set_source_rgba(cr(), c.r, c.g, c.b, c.a);

@@ -51,6 +51,8 @@ class Canvas {
   /// Vector canvases: finish writing the file; throws OutputError on failure.
   void finish();
 
+  /// Paints every pixel with the colour (alpha included). A fully transparent
+  /// colour on an SVG or PDF page draws nothing: the page is already empty.
   void clear(Color);
 
   /// Cairo's stroke and fills, noting first where they land (see Damage).

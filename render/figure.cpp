@@ -375,7 +375,7 @@ Series& Figure::add_path(int panel, std::string label, SeriesStyle style) {
 }
 
 void Figure::draw(Canvas& canvas) const {
-  canvas.clear(palette::paper);
+  canvas.clear(transparent_ ? palette::paper.with_alpha(0) : palette::paper);
   if (panels_.empty()) return;
   std::vector<PanelView> views;
   for (const Panel& panel : panels_) views.push_back({panel.options, panel.series});

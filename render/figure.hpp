@@ -46,6 +46,8 @@ class Figure {
 
   int width() const { return width_; }
   int height() const { return height_; }
+  /// No background: PNG with alpha, SVG/PDF without the paper rectangle.
+  void set_transparent(bool transparent) { transparent_ = transparent; }
   void draw(Canvas&) const;
   /// Writes PNG, SVG or PDF as the extension says (any other: OutputError
   /// naming the valid ones), under a temporary name renamed when complete.
@@ -61,6 +63,7 @@ class Figure {
   int width_, height_;
   std::string title_;
   std::vector<Panel> panels_;
+  bool transparent_ = false;
 };
 
 /// Throws OutputError unless `path` ends in .png, .svg or .pdf (any case).

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <filesystem>
 
+#include "render/created_directory.hpp"
 #include "render/output_error.hpp"
 #include "render/png_sequence.hpp"
 #include "render/video_writer.hpp"
+#include "render/y4m_stream.hpp"
 
 namespace vibra::render {
 
@@ -29,7 +31,8 @@ class VideoSink final : public FrameSink {
   void finish() override { writer_.finish(); }
   std::vector<std::string> notes() const override { return writer_.notes(); }
   std::string description() const override {
-    return path_ + " (" + std::to_string(writer_.frames_written()) + " frames)";
+    const std::string where = path_ == VideoWriter::kStandardOutput ? "standard output" : path_;
+    return where + " (" + std::to_string(writer_.frames_written()) + " frames)";
   }
 
  private:
@@ -40,9 +43,13 @@ class VideoSink final : public FrameSink {
 class PngSink final : public FrameSink {
  public:
   PngSink(FramePattern pattern, int width, int height, int threads, long long first)
-      : pattern_(pattern), first_(first), writer_(std::move(pattern), width, height, threads, first) {}
+      : pattern_(pattern), first_(first), directory_(pattern.directory),
+        writer_(std::move(pattern), width, height, threads, first) {}
   void write(const std::uint8_t* bgra, int stride, const Damage*) override { writer_.write(bgra, stride); }
-  void finish() override { writer_.finish(); }
+  void finish() override {
+    writer_.finish();
+    directory_.keep();
+  }
   std::string description() const override {
     return std::to_string(writer_.frames_written()) + " frames " + pattern_.name(first_).string() + " ... " +
            pattern_.name(first_ + std::max(0LL, writer_.frames_written() - 1)).string();
@@ -51,8 +58,22 @@ class PngSink final : public FrameSink {
  private:
   FramePattern pattern_;
   long long first_;
+  CreatedDirectory directory_;  ///< before the writer: removed after its frames
   PngSequenceWriter writer_;
 };
+class Y4mSink final : public FrameSink {
+ public:
+  Y4mSink(int width, int height, int fps) : stream_(width, height, fps) {}
+  void write(const std::uint8_t* bgra, int stride, const Damage* changed) override { stream_.write(bgra, stride, changed); }
+  void finish() override {}  // every frame went out whole when written
+  std::string description() const override {
+    return "standard output (" + std::to_string(stream_.frames_written()) + " frames, y4m)";
+  }
+
+ private:
+  Y4mStream stream_;
+};
+
 class TeeSink final : public FrameSink {
  public:
   explicit TeeSink(std::vector<std::unique_ptr<FrameSink>> sinks) : sinks_(std::move(sinks)) {}
@@ -92,11 +113,37 @@ bool is_frame_pattern(const std::string& output) {
          (!output.empty() && output.back() == '/');
 }
 
+void require_stream_format(const std::string& format) {
+  if (format != "y4m" && format != "nut" && format != "matroska")
+    throw OutputError((format.empty() ? std::string("-o - streams the video to standard output")
+                                      : "--format " + format + " is not a stream format") +
+                      ": add --format y4m (raw frames), nut or matroska (H.264)");
+}
+
+void check_output_settings(const std::string& output, const VideoSettings& settings) {
+  if (output == VideoWriter::kStandardOutput) {
+    require_stream_format(settings.format);
+    if (settings.transparent)
+      throw OutputError("--transparent cannot go to standard output: write .webm, .mov or PNG frames such as "
+                        "frames/tmp_%04d.png");
+    return;
+  }
+  if (!settings.format.empty())
+    throw OutputError("--format is for -o - (standard output): a file's extension chooses its format");
+  if (settings.transparent && is_video_path(output)) {
+    const std::string problem = VideoWriter::alpha_problem(output, settings.codec);
+    if (!problem.empty()) throw OutputError(problem);
+  }
+}
+
 std::unique_ptr<FrameSink> make_frame_sink(const std::string& output, int width, int height, double fps,
                                            long long frame_count, const VideoSettings& settings,
                                            const std::map<std::string, std::string>& metadata,
                                            long long first_frame) {
-  if (is_video_path(output)) {
+  const bool stream = output == VideoWriter::kStandardOutput;
+  if (stream) require_stream_format(settings.format);
+  if (stream && settings.format == "y4m") return std::make_unique<Y4mSink>(width, height, static_cast<int>(std::lround(fps)));
+  if (stream || is_video_path(output)) {
     VideoOptions options;
     options.width = width;
     options.height = height;
@@ -108,6 +155,8 @@ std::unique_ptr<FrameSink> make_frame_sink(const std::string& output, int width,
     options.threads = settings.threads;
     options.metadata = metadata;
     options.first_frame = first_frame;
+    options.transparent = settings.transparent;
+    options.format = settings.format;
     return std::make_unique<VideoSink>(output, options);
   }
   const int threads = settings.threads > 0 ? settings.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

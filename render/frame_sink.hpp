@@ -32,6 +32,9 @@ struct VideoSettings {
   int crf = -1;
   std::string preset;
   int threads = 0;  ///< PNG compression and encoder threads; 0 = one per core
+  bool transparent = false;  ///< keep alpha (frames drawn without a background)
+  /// With the output "-" (standard output): y4m (raw frames), nut or matroska.
+  std::string format;
 };
 
 /// True when `output` names a video file (.mp4, .webm, .mkv, .ogv, .gif, .flv).
@@ -39,7 +42,17 @@ bool is_video_path(const std::string& output);
 /// True when `output` is a PNG frame pattern (has %d) or a directory.
 bool is_frame_pattern(const std::string& output);
 
-/// The sink for `output`: a video file or a PNG frame pattern / directory.
+/// Checks what VideoSettings ask of `output` before a run: "-" needs a
+/// stream format and cannot be transparent; --format is for "-" only; a
+/// transparent video must be .webm or .mov. Throws OutputError naming the fix.
+void check_output_settings(const std::string& output, const VideoSettings&);
+
+/// Throws OutputError unless `format` is one standard output can take
+/// (y4m, nut, matroska), naming them.
+void require_stream_format(const std::string& format);
+
+/// The sink for `output`: a video file, a PNG frame pattern / directory, or
+/// "-" for standard output in VideoSettings::format.
 /// `frame_count`: frames of the whole render (it sets the names' digits);
 /// `first_frame`: the first one this sink gets (a segment's), the first
 /// frame's number or timestamp.

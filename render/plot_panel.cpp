@@ -115,6 +115,26 @@ void PlotPanel::draw_envelope_columns(Canvas& canvas, const ColumnEnvelope& enve
   cairo_restore(canvas.cr());
 }
 
+void PlotPanel::draw_function(Canvas& canvas, const std::function<double(double)>& f, double from_x, double to_x,
+                              const Stroke& s) const {
+  from_x = std::max(from_x, x0_), to_x = std::min(to_x, x1_);
+  if (!(to_x > from_x)) return;
+  const double step = (x1_ - x0_) / area_.w / 2;  // half a pixel column
+  const long long samples = static_cast<long long>(std::ceil((to_x - from_x) / step));
+  std::vector<Point> points;
+  points.reserve(samples + 1);
+  for (long long k = 0; k <= samples; ++k) {
+    const double x = std::min(to_x, from_x + k * step);
+    const double y = f(x);
+    if (std::isfinite(y)) points.push_back(to_pixel(x, y));
+  }
+  cairo_save(canvas.cr());
+  cairo_rectangle(canvas.cr(), area_.x, area_.y, area_.w, area_.h);
+  cairo_clip(canvas.cr());
+  draw_pixel_polyline(canvas, points, s);
+  cairo_restore(canvas.cr());
+}
+
 void PlotPanel::draw_cursor(Canvas& canvas, double x, double y, const Color& c) const {
   const Point p = to_pixel(x, y);
   draw_pixel_line(canvas, {p.x(), area_.y}, {p.x(), area_.y + area_.h}, {palette::ink.with_alpha(0.35), 1.2});

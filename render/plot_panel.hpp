@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,9 @@ class PlotPanel {
   void draw_envelope(Canvas&, const ColumnEnvelope&, double up_to_x, const Stroke&) const;
   /// The envelope's columns [first_column, last_column] only (to extend a curve drawn before).
   void draw_envelope_columns(Canvas&, const ColumnEnvelope&, int first_column, int last_column, const Stroke&) const;
+  /// A known function y = f(x) over [from_x, to_x], evaluated at every half
+  /// pixel column: smooth at the panel's resolution, whatever the mesh.
+  void draw_function(Canvas&, const std::function<double(double)>& f, double from_x, double to_x, const Stroke&) const;
   /// A vertical cursor line at x with a dot at (x, y).
   void draw_cursor(Canvas&, double x, double y, const Color&) const;
   /// Legend entries (markup, colour) in the panel's top-right corner.

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "render/created_directory.hpp"
 #include "render/output_error.hpp"
 #include "render/temporary_file.hpp"
 
@@ -20,7 +21,7 @@ constexpr int kMaxDigits = 18;  // a long long index has at most 19
 
 [[noreturn]] void bad_pattern(const std::string& pattern, const std::string& problem) {
   throw OutputError("frame pattern '" + pattern + "' " + problem +
-                    ": use e.g. frames/tmp_%04d.png, or an existing directory");
+                    ": use e.g. frames/tmp_%04d.png, or a directory such as frames/");
 }
 
 bool ends_with_png(const std::string& text) {
@@ -84,7 +85,7 @@ FramePattern parse_frame_pattern(const std::string& pattern, long long frame_cou
     p.digits = width;
     if (!ends_with_png(p.suffix)) bad_pattern(pattern, "must end in .png");
   }
-  require_writable_directory(p.directory);
+  require_creatable_directory(p.directory);  // the sink creates it (CreatedDirectory)
   // Every index gets the same width, so the names sort in frame order.
   p.digits = std::max(p.digits, decimal_digits(std::max(0LL, frame_count - 1)));
   return p;

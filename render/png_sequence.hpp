@@ -23,11 +23,12 @@ struct FramePattern {
 };
 
 /// Reads a user's pattern: "frames/tmp_%04d.png" (exactly one %d or %0Nd,
-/// N in 1..18, in the file name, which ends in .png, any case), or an existing
+/// N in 1..18, in the file name, which ends in .png, any case), or a
 /// directory "DIR" or "DIR/" meaning DIR/tmp_%04d.png. The digits widen when
 /// frame_count - 1 needs more, so names always sort (10001 frames: 5 digits).
-/// Throws OutputError for a bad pattern, a missing or unwritable directory,
-/// or a file where a directory is needed.
+/// A missing directory is allowed (the caller creates it: CreatedDirectory).
+/// Throws OutputError for a bad pattern, an unwritable directory, or a file
+/// where a directory is needed.
 FramePattern parse_frame_pattern(const std::string& pattern, long long frame_count);
 
 /// Writes PNG frames on worker threads: encoding costs more than drawing and

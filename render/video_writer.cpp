@@ -8,20 +8,24 @@ extern "C" {
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <condition_variable>
 #include <cstring>
 #include <deque>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
 #include "render/av_error.hpp"
 #include "render/huge_pages.hpp"
 #include "render/output_error.hpp"
+#include "render/standard_output.hpp"
 #include "render/temporary_file.hpp"
 #include "render/yuv420_converter.hpp"
+#include "render/yuva_converter.hpp"
 
 namespace fs = std::filesystem;
 
@@ -94,6 +98,7 @@ constexpr Codec kCodecs[] = {
     {"flv", "FLV1", "flv", {10, 5, 2}, 2, 31},
     {"gif", "GIF", "gif", {0, 0, 0}, 0, 0},
     {"raw", "raw YUV 4:2:0", "rawvideo", {0, 0, 0}, 0, 0},
+    {"prores", "ProRes 4444", "prores_ks", {0, 0, 0}, 0, 0},
 };
 
 struct Container {
@@ -106,7 +111,19 @@ constexpr Container kContainers[] = {
     {".mp4", "mp4", "h264"},   {".mkv", "matroska", "h264"}, {".webm", "webm", "vp9"},
     {".ogv", "ogg", "theora"}, {".gif", "gif", "gif"},       {".flv", "flv", "flv"},
     {".yuv", "rawvideo", "raw"},  // for other encoders: ffmpeg -f rawvideo -pix_fmt yuv420p -s WxH -r FPS -i x.yuv
+    {".mov", "mov", "prores"},    // ProRes 4444 with alpha, for video editors
+    {".nut", "nut", "h264"},      // FFmpeg's own container, good for pipes
 };
+
+/// The codecs that carry alpha, and the pixel format they take it in.
+bool carries_alpha(const std::string& codec) { return codec == "vp9" || codec == "prores"; }
+
+/// A container by its muxer name, for streams (-o - --format nut).
+const Container* container_named(const std::string& format) {
+  for (const Container& c : kContainers)
+    if (format == c.format) return &c;
+  return nullptr;
+}
 
 constexpr const char* kX264Presets[] = {"ultrafast", "superfast", "veryfast", "faster", "fast",
                                         "medium",    "slow",      "slower",   "veryslow", "placebo"};
@@ -173,16 +190,34 @@ struct GifPalette {
 
 }  // namespace
 
+/// 'NAME', for messages.
+static std::string quoted(const fs::path& path) {
+  std::string text = "'";
+  text += path.string();
+  text += '\'';
+  return text;
+}
+
 struct VideoWriter::Impl {
-  explicit Impl(const fs::path& final_path) : file(final_path) {}
+  explicit Impl(const fs::path& final_path)
+      : streaming(final_path == VideoWriter::kStandardOutput),
+        target(streaming ? std::string("standard output") : quoted(final_path)) {
+    if (!streaming) file.emplace(final_path);
+  }
   ~Impl();
 
-  TemporaryFile file;  ///< first member: removed last, after the file is closed
+  bool streaming;      ///< to standard output, through open_standard_output_io
+  std::string target;  ///< for messages
+  std::optional<TemporaryFile> file;  ///< a file, not a stream: removed last, after it is closed
+  /// Streaming: a write met EPIPE (set by check() on either thread; write()
+  /// and finish() turn the failure into StreamClosed).
+  mutable std::atomic<bool> reader_gone = false;
   AVFormatContext* format = nullptr;
   AVCodecContext* codec = nullptr;
   AVStream* stream = nullptr;
   AVPacket* packet = nullptr;
   std::unique_ptr<Yuv420Converter> converter;
+  std::unique_ptr<YuvaConverter> alpha_converter;  ///< transparent VP9 and ProRes, beside the opaque path
   std::unique_ptr<GifPalette> palette;
   int width = 0, height = 0;              ///< of the frames passed to write()
   int coded_width = 0, coded_height = 0;  ///< padded to even for H.264
@@ -219,14 +254,21 @@ VideoWriter::Impl::~Impl() {
   for (AVFrame*& f : frames) av_frame_free(&f);
   av_packet_free(&packet);
   avcodec_free_context(&codec);
-  if (format) avio_closep(&format->pb);
+  if (format && streaming) close_standard_output_io(format->pb);
+  else if (format) avio_closep(&format->pb);
   avformat_free_context(format);
 }
 
 void VideoWriter::Impl::check(int code, const std::string& what, bool output) const {
   if (code >= 0) return;
+  if (streaming && code == AVERROR(EPIPE)) {
+    reader_gone = true;
+    throw OutputError("the reader of standard output has gone");
+  }
   std::string fix;
-  if (code == AVERROR(ENOSPC) || code == AVERROR(EDQUOT))
+  if ((code == AVERROR(ENOSPC) || code == AVERROR(EDQUOT)) && streaming)
+    fix = "free some disk space where standard output goes";
+  else if (code == AVERROR(ENOSPC) || code == AVERROR(EDQUOT))
     fix = "free some disk space or choose another directory";
   else if (code == AVERROR(EFBIG))
     fix = "the file size limit was reached: raise it (ulimit -f) or lower the quality";
@@ -234,7 +276,7 @@ void VideoWriter::Impl::check(int code, const std::string& what, bool output) co
     fix = "check that the disk is writable and has space, or choose another directory";
   else
     fix = "try the default quality and preset, or another format";
-  throw OutputError("cannot write video '" + file.final_path().string() + "': " + what + " failed (" +
+  throw OutputError("cannot write video to " + target + ": " + what + " failed (" +
                     av_error(code) + "): " + fix);
 }
 
@@ -249,6 +291,10 @@ void VideoWriter::Impl::convert(const std::uint8_t* argb32, int stride, const Da
       for (int x = 0; x < width; ++x) out[x] = (*palette)(in[x]);
     }
     std::memcpy(into->data[1], palette->colors.data(), sizeof palette->colors);
+  } else if (alpha_converter) {
+    alpha_converter->convert(argb32, stride,
+                             {{into->data[0], into->data[1], into->data[2], into->data[3]},
+                              {into->linesize[0], into->linesize[1], into->linesize[2], into->linesize[3]}});
   } else {
     converter->convert(argb32, stride,
                        {{into->data[0], into->data[1], into->data[2]},
@@ -298,6 +344,14 @@ std::string VideoWriter::codec_for_path(const fs::path& path) { return find_cont
 
 bool VideoWriter::is_video_path(const fs::path& path) { return container_for(path) != nullptr; }
 
+std::string VideoWriter::alpha_problem(const fs::path& path, const std::string& codec) {
+  const Container* container = container_for(path);
+  if (!container || carries_alpha(codec.empty() ? container->codec : codec)) return "";
+  return (codec.empty() ? path.extension().string() + " video" : "--codec " + codec) +
+         " cannot be transparent: write .webm (VP9 with alpha), .mov (ProRes 4444 with alpha) or PNG frames such as "
+         "frames/tmp_%04d.png";
+}
+
 VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
   av_log_set_level(AV_LOG_ERROR);  // x264 and the muxers are chatty
   if (o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192)
@@ -305,7 +359,11 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
                       " is out of range: width and height must be 1..8192");
   if (o.fps < 1 || o.fps > 240)
     throw OutputError("video fps " + std::to_string(o.fps) + " is out of range: choose 1..240");
-  const Container& container = find_container(final_path);
+  const bool streaming = final_path == kStandardOutput;
+  const Container* named = streaming ? container_named(o.format) : nullptr;
+  if (streaming && (!named || o.format == "rawvideo" || o.format == "gif"))
+    throw OutputError("-o - streams a video to standard output: add --format y4m, nut or matroska");
+  const Container& container = streaming ? *named : find_container(final_path);
   const Codec& codec = find_codec(o.codec.empty() ? container.codec : o.codec);
   const std::string codec_name = codec.name;
   const AVCodec* encoder = avcodec_find_encoder_by_name(codec.encoder);
@@ -332,6 +390,11 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
   if (lossless && o.crf >= 0) throw OutputError("--quality lossless and --crf exclude each other: give one of them");
   if (!o.preset.empty() && codec_name != "h264") notes_.push_back("the preset applies to H.264 only: ignored");
   if (!has_quality && o.crf >= 0) notes_.push_back(std::string(codec.label) + " has no quality setting: crf ignored");
+  const bool alpha = o.transparent || codec_name == "prores";  // ProRes 4444 always has an alpha plane
+  if (o.transparent && !carries_alpha(codec_name))
+    throw OutputError(std::string(codec.label) +
+                      " video cannot be transparent: write .webm (VP9 with alpha), .mov (ProRes 4444 with alpha) or "
+                      "PNG frames such as frames/tmp_%04d.png");
   if (is_gif && o.fps > 50) notes_.push_back("GIF viewers slow down frames shorter than 0.02 s: use 50 fps or less");
 
   impl_ = std::make_unique<Impl>(final_path);  // checks that the directory is writable
@@ -350,7 +413,7 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
   const std::size_t frame_bytes = std::size_t(m.coded_width) * m.coded_height * 4;
   m.capacity = frame_bytes > (64u << 20) ? 1 : 3;
 
-  m.check(avformat_alloc_output_context2(&m.format, muxer, nullptr, m.file.path().c_str()),
+  m.check(avformat_alloc_output_context2(&m.format, muxer, nullptr, m.streaming ? nullptr : m.file->path().c_str()),
           "setting up the container", false);
   m.stream = avformat_new_stream(m.format, nullptr);
   m.codec = avcodec_alloc_context3(encoder);
@@ -363,7 +426,10 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
   c->time_base = AVRational{1, o.fps};  // pts = frame index
   c->framerate = AVRational{o.fps, 1};
   c->gop_size = 5 * o.fps;  // seeking stays quick; key frames, the bulk of a line-art video, stay few
-  c->pix_fmt = is_gif ? AV_PIX_FMT_PAL8 : AV_PIX_FMT_YUV420P;
+  c->pix_fmt = is_gif                   ? AV_PIX_FMT_PAL8
+               : codec_name == "prores" ? AV_PIX_FMT_YUVA444P10LE
+               : alpha                  ? AV_PIX_FMT_YUVA420P
+                                        : AV_PIX_FMT_YUV420P;
   m.stream->time_base = c->time_base;  // a hint: the muxer may choose another in write_header
   m.stream->avg_frame_rate = c->framerate;
   if (!is_gif) {  // the tags say what the conversion below does
@@ -410,6 +476,10 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
     av_dict_set(&settings, "deadline", "realtime", 0);
     av_dict_set(&settings, "cpu-used", "8", 0);
     c->thread_count = 1;  // libvpx's VP8 threads busy-wait: on two cores one thread is faster
+  } else if (codec_name == "prores") {
+    av_dict_set(&settings, "profile", "4444", 0);
+    av_dict_set(&settings, "vendor", "apl0", 0);  // as Apple's encoder tags it: some editors look for it
+    c->thread_count = 0;  // one slice thread per core: ProRes costs about 0.12 s of CPU per 720p frame
   } else if (codec_name == "theora" || codec_name == "flv") {
     c->flags |= AV_CODEC_FLAG_QSCALE;
     c->global_quality = FF_QP2LAMBDA * q;
@@ -434,12 +504,20 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
   }
   if (is_gif)
     m.palette = std::make_unique<GifPalette>();
+  else if (alpha)
+    m.alpha_converter = std::make_unique<YuvaConverter>(
+        codec_name == "prores" ? YuvaConverter::Layout::yuva444p10 : YuvaConverter::Layout::yuva420p, m.width, m.height);
   else
     m.converter = std::make_unique<Yuv420Converter>(m.width, m.height, m.coded_width, m.coded_height);
 
   for (const auto& [key, value] : o.metadata)
     m.check(av_dict_set(&m.format->metadata, key.c_str(), value.c_str(), 0), "setting metadata", false);
-  m.check(avio_open(&m.format->pb, m.file.path().c_str(), AVIO_FLAG_WRITE), "opening the file", true);
+  if (m.streaming) {
+    m.format->pb = open_standard_output_io();
+    if (!m.format->pb) m.check(AVERROR(ENOMEM), "opening standard output", true);
+  } else {
+    m.check(avio_open(&m.format->pb, m.file->path().c_str(), AVIO_FLAG_WRITE), "opening the file", true);
+  }
   AVDictionary* header = nullptr;
   if (codec_name == "h264" && std::string(container.format) == "mp4")
     av_dict_set(&header, "movflags", "+faststart", 0);  // index first: browsers play while loading
@@ -459,6 +537,7 @@ void VideoWriter::write(const std::uint8_t* argb32, int stride, const Damage* ch
   {
     std::unique_lock lock(m.mutex);
     m.changed.wait(lock, [&] { return m.queue.size() < m.capacity || !m.failure.empty(); });
+    if (m.reader_gone) throw StreamClosed{};
     if (!m.failure.empty()) throw OutputError(m.failure);
     frame = m.free_frames.back();  // never empty: see frames
     m.free_frames.pop_back();
@@ -487,11 +566,20 @@ void VideoWriter::finish() {
   }
   m.changed.notify_all();
   if (m.worker.joinable()) m.worker.join();
-  if (!m.failure.empty()) throw OutputError(m.failure);
-  m.encode(nullptr);  // flush: encoders hold back frames for look-ahead
-  m.check(av_write_trailer(m.format), "writing the trailer", true);
-  m.check(avio_closep(&m.format->pb), "closing the file", true);
-  m.file.commit();
+  try {
+    if (!m.failure.empty()) throw OutputError(m.failure);
+    m.encode(nullptr);  // flush: encoders hold back frames for look-ahead
+    m.check(av_write_trailer(m.format), "writing the trailer", true);
+    if (m.streaming) {
+      m.check(close_standard_output_io(m.format->pb), "writing", true);
+    } else {
+      m.check(avio_closep(&m.format->pb), "closing the file", true);
+      m.file->commit();
+    }
+  } catch (const OutputError&) {
+    if (m.reader_gone) throw StreamClosed{};
+    throw;
+  }
   finished_ = true;
 }
 

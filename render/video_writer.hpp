@@ -24,6 +24,11 @@ struct VideoOptions {
   /// Timestamp of the first frame, in frames: a segment of a longer render
   /// starts at its first frame's index (and, as every video, with a key frame).
   long long first_frame = 0;
+  /// Keep the frames' alpha: VP9 in .webm (yuva420p) or ProRes 4444 in .mov;
+  /// any other format refuses it (alpha_problem says why).
+  bool transparent = false;
+  /// The container for the path "-" (standard output): "nut" or "matroska".
+  std::string format;
 };
 
 /// Encodes Cairo frames into a video file in process with FFmpeg's libraries,
@@ -32,7 +37,9 @@ struct VideoOptions {
 /// caller's thread, and a worker thread encodes behind a bounded queue, so
 /// drawing and converting the next frame overlap encoding this one. The file
 /// is written under a temporary name and renamed by finish(): a failed or
-/// abandoned writer leaves nothing at the final path.
+/// abandoned writer leaves nothing at the final path. The path "-" streams
+/// to standard output (VideoOptions::format names the container); a reader
+/// that goes away ends the writer with StreamClosed (standard_output.hpp).
 class VideoWriter {
  public:
   /// Throws OutputError for an unknown extension or codec, a missing encoder,
@@ -60,6 +67,11 @@ class VideoWriter {
   static std::string codec_for_path(const std::filesystem::path&);
   /// Whether the output name's extension is one of the video formats.
   static bool is_video_path(const std::filesystem::path&);
+  /// Why `path` (with `codec`, "" = its default) cannot hold transparency,
+  /// naming the formats that can; "" when it can.
+  static std::string alpha_problem(const std::filesystem::path&, const std::string& codec);
+  /// The path that means standard output.
+  static constexpr const char* kStandardOutput = "-";
 
  private:
   struct Impl;

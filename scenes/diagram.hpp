@@ -1,5 +1,6 @@
 #pragma once
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <functional>
 #include <optional>
 #include <span>
@@ -29,6 +30,15 @@ struct LegendEntry {
   /// The run's main quantity in a row: NaN once it blew up (empty: never does).
   std::function<double(std::span<const double> row)> probe = {};
 };
+
+/// Widens `world` to be symmetric about the vertical line at `x`, so that a
+/// pendulum's pivot sits on the frame's centre line whichever way it swings
+/// further (the view centres the world box).
+inline void center_horizontally_on(WorldBox& world, double x) {
+  const double half = std::max(x - world.min().x(), world.max().x() - x);
+  world.extend(Point(x - half, world.min().y()));
+  world.extend(Point(x + half, world.min().y()));
+}
 
 /// One plot panel beside a diagram (layout fbd+plot): a y label and its curves.
 struct PanelSpec {

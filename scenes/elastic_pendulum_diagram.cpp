@@ -50,6 +50,7 @@ void ElasticPendulumDiagram::finish_recording(WorldBox& world) {
   if (!bodies_.isEmpty()) world.extend(bodies_.min() - reach), world.extend(bodies_.max() + reach);
   world.extend(kPivot + Point(0.35, 0.12));
   world.extend(kPivot - Point(0.35, 0));
+  center_horizontally_on(world, kPivot.x());  // the pivot on the frame's centre line
 }
 
 std::array<Arrow, 3> ElasticPendulumDiagram::force_arrows(std::span<const double> row) const {

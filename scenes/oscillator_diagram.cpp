@@ -39,17 +39,30 @@ std::vector<PanelSpec> OscillatorDiagram::panels() const {
 
 void OscillatorDiagram::record(std::span<const double> row, WorldBox&) {
   largest_u_ = std::max(largest_u_, std::abs(row[1]));
-  scale_.see(law_.spring(row[1]));
-  scale_.see(law_.damper(row[2]));
-  scale_.see(law_.external(row[0]));
+  lowest_u_ = std::min(lowest_u_, row[1]), highest_u_ = std::max(highest_u_, row[1]);
+  const double forces[] = {-law_.spring(row[1]), -law_.damper(row[2]), law_.external(row[0])};
+  for (int i = 0; i < 3; ++i) {
+    scale_.see(forces[i]);
+    if (std::isfinite(forces[i])) pushes_right_[i] = std::max(pushes_right_[i], forces[i]);
+  }
 }
 
 void OscillatorDiagram::finish_recording(WorldBox& world) {
   layout_.emplace(largest_u_, true);
   scale_.set_longest(1.1 * layout_->unit);
   world.extend(layout_->extent());
-  // Arrows start on the body's centre line and reach at most 1.1 units.
-  const double reach = layout_->equilibrium_x() + layout_->unit + 1.1 * layout_->unit;
+  // Arrows start on the body's centre line, at equilibrium_x + u; the view
+  // reaches as far right as their tips and labels can, and no farther, so the
+  // drawing stays centred. A linear spring's tip is exact: at
+  // equilibrium_x + u (1 - per k), linear in u. The other forces are bounded
+  // by the body's farthest right plus their largest push.
+  const double per = scale_.per_force(), body = layout_->equilibrium_x() + highest_u_;
+  double reach = body;
+  if (law_.linear_spring()) {
+    const double shrink = 1 - per * law_.k;
+    reach = std::max(reach, layout_->equilibrium_x() + std::max(lowest_u_ * shrink, highest_u_ * shrink));
+  }
+  for (int i = law_.linear_spring() ? 1 : 0; i < 3; ++i) reach = std::max(reach, body + per * pushes_right_[i]);
   world.extend(Point(reach + 0.5 * layout_->unit, layout_->body_bottom()));
 }
 

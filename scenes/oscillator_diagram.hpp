@@ -40,7 +40,9 @@ class OscillatorDiagram final : public Diagram {
   VibrationLaw law_;
   std::function<double(double)> exact_;
   SceneColors colors_;
-  double largest_u_ = 0;
+  double largest_u_ = 0, lowest_u_ = 0, highest_u_ = 0;
+  /// The largest push to the right over the run of -s(u), -f(u') and F(t).
+  double pushes_right_[3] = {0, 0, 0};
   ForceScale scale_;
   std::optional<HorizontalLayout> layout_;
 };

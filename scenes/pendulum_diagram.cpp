@@ -45,9 +45,11 @@ void PendulumDiagram::record(std::span<const double> row, WorldBox& world) {
 }
 
 void PendulumDiagram::finish_recording(WorldBox& world) {
-  // The ceiling, the dashed vertical and the angle label always fit.
+  // The ceiling, the dashed vertical and the angle label always fit; the
+  // pivot on the frame's centre line.
   world.extend(Point(-0.35, 0.12));
   world.extend(Point(0.35, -options_.vertical_length));
+  center_horizontally_on(world, 0);
 }
 
 void PendulumDiagram::draw_static(Canvas& canvas, const render::WorldView& view) const {

@@ -13,7 +13,7 @@ PanelSpec main_quantity_panel(const SceneStyle& style, const std::string& quanti
                     [](std::span<const double> row) { return row[1]; }}}};
   if (exact)
     panel.series.push_back({"<i>" + quantity + "</i> " + exact_label, style.colors.gravity,
-                            [exact](std::span<const double> row) { return exact(row[0]); }, true});
+                            [exact](std::span<const double> row) { return exact(row[0]); }, true, exact});
   return panel;
 }
 

@@ -81,7 +81,7 @@ std::uint64_t render_fingerprint(const RenderRequest& r, const std::string& capt
     text += numbers;
   }
   text += '\n' + c.window + '\n' + r.video.codec + '\n' + r.video.quality + '\n' + std::to_string(r.video.crf) + '\n' +
-          r.video.preset;
+          r.video.preset + (r.video.transparent ? "\ntransparent" : "");
   std::uint64_t hash = 14695981039346656037ull;
   for (unsigned char byte : text) hash = (hash ^ byte) * 1099511628211ull;
   return hash;
@@ -101,9 +101,7 @@ Outputs plan_outputs(const RenderRequest& r, const render::FrameSegment& segment
   const std::filesystem::path page(r.output);
   const std::string stem = page.stem().string();
   if (!r.frames_player) return {{(page.parent_path() / (stem + ".mp4")).string(), (page.parent_path() / (stem + ".webm")).string()}, "", 4};
-  const std::filesystem::path directory = page.parent_path() / (stem + "_frames");
-  std::error_code ec;
-  std::filesystem::create_directory(directory, ec);
+  const std::filesystem::path directory = page.parent_path() / (stem + "_frames");  // the frame sink creates it
   const render::FramePattern pattern = render::parse_frame_pattern((directory / "frame_%04d.png").string(), frames);
   return {{(directory / "frame_%04d.png").string()}, stem + "_frames/frame_", pattern.digits};
 }
@@ -204,24 +202,33 @@ void write_still(const RenderRequest& r, Scene& scene, std::span<const double> r
 void run_render(const RenderRequest& r) {
   const std::string ext = extension_of(r.output);
   const bool still = r.at.has_value();
+  if (still && !std::isfinite(*r.at))
+    throw UsageError("--at " + std::string(std::isnan(*r.at) ? "nan" : "inf") +
+                     " is not a time: give a finite time inside the run, e.g. --at 3.2");
   if (still && ext != ".png" && ext != ".svg" && ext != ".pdf")
     throw UsageError("--at renders one still: give -o FILE.png, FILE.svg or FILE.pdf");
   if (!still && (ext == ".svg" || ext == ".pdf"))
     throw UsageError("-o " + r.output + " is one picture: add --at T to choose its time");
-  const bool page = ext == ".html";
+  const bool page = ext == ".html", stream = r.output == "-";
   if (r.frames_player && !page) throw UsageError("--frames-player writes a page: give -o PLAYER.html");
   if (r.csv_every < 1) throw UsageError("--every must be at least 1: the page's CSV keeps every K-th step");
   if (r.csv_every != 1 && !page) throw UsageError("--every thins the CSV beside a page: give -o PAGE.html, or drop --every");
-  if (!still && !page && !render::is_video_path(r.output) && !render::is_frame_pattern(r.output)) {
+  if (r.video.transparent && page && !r.frames_player)
+    throw UsageError("a page's MP4 cannot be transparent: add --frames-player (PNG frames), or write .webm or .mov");
+  render::check_output_settings(r.output, r.video);
+  if (!still && !page && !stream && !render::is_video_path(r.output) && !render::is_frame_pattern(r.output)) {
     if (ext == ".png")
       throw UsageError("-o " + r.output + " is one picture: add --at T, or give a pattern such as frames/tmp_%04d.png");
     throw UsageError("cannot tell what to write from -o " + r.output +
-                     ": use .mp4, .webm, .mkv, .ogv, .gif, .yuv, .html, a frame pattern frames/tmp_%04d.png, a directory, or "
-                     ".png/.svg/.pdf with --at");
+                     ": use .mp4, .webm, .mkv, .mov, .ogv, .gif, .yuv, .html, a frame pattern frames/tmp_%04d.png, a "
+                     "directory, - (standard output) with --format, or .png/.svg/.pdf with --at");
   }
 
   if (r.segment) {
     if (still) throw UsageError("--segment splits a video or frame sequence; --at renders one still: drop one of them");
+    if (stream)
+      throw UsageError("--segment writes files for vibra concat to join: give -o FILE.mp4, .mkv, .webm or PNG frames, "
+                       "not - (standard output)");
     if (page)
       throw UsageError("--segment cannot split a page (.html): render segments to .mp4, .mkv, .webm or PNG frames, "
                        "join them with vibra concat");
@@ -245,7 +252,6 @@ void run_render(const RenderRequest& r) {
   const double speed = r.scene.speed > 0 ? r.scene.speed : (mesh.period > 0 ? mesh.period / 2 : 1);
   const FrameClock clock =
       r.scene.frame_per_step ? FrameClock::per_step(mesh.dt, mesh.steps) : FrameClock::by_speed(mesh.T, r.scene.fps, speed);
-  if (clock.frames() > 100'000'000) throw UsageError("that is more than 1e8 frames: lower fps, raise speed or shorten T");
   const auto* runs = dynamic_cast<const ComparisonTrajectory*>(pre_pass.get());
   const std::string caption =
       runs ? comparison_caption(r.scene.model, runs->comparison()) : caption_of(r.scene, parameters, mesh);
@@ -264,7 +270,9 @@ void run_render(const RenderRequest& r) {
     return;
   }
 
-  std::unique_ptr<Scene> scene = make_scene_for(r.scene, *pre_pass, caption);
+  SceneConfig drawn = r.scene;
+  if (r.video.transparent) drawn.colors.background = drawn.colors.background.with_alpha(0);  // cleared, not painted
+  std::unique_ptr<Scene> scene = make_scene_for(drawn, *pre_pass, caption);
 
   // Pre-pass: fixed view and plot ranges over the whole run, in constant
   // memory; for a page also its time series and its CSV.

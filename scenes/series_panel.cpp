@@ -42,10 +42,19 @@ void SeriesPanel::record(std::span<const double> row) {
 }
 
 void SeriesPanel::observe(std::span<const double> row) {
-  for (size_t i = 0; i < recent_.size(); ++i) recent_[i].add(row[0], series_[i].value(row));
+  for (size_t i = 0; i < recent_.size(); ++i)
+    if (!series_[i].of_time) recent_[i].add(row[0], series_[i].value(row));
 }
 
 void SeriesPanel::finish_recording() {
+  // A known function's extremes fall between steps too: sample it finely.
+  const int samples = 4 * panel_.columns();
+  for (const auto& s : series_)
+    if (s.of_time)
+      for (int k = 0; k <= samples; ++k) {
+        const double v = s.of_time(t_end_ * k / samples);
+        if (std::isfinite(v)) lo_ = std::min(lo_, v), hi_ = std::max(hi_, v);
+      }
   if (lo_ > hi_) lo_ = -1, hi_ = 1;
   panel_.set_y_range(lo_, hi_);
 }
@@ -72,8 +81,13 @@ void SeriesPanel::draw_axes(render::Canvas& canvas, bool time_labels) const {
 void SeriesPanel::draw_static(render::Canvas& canvas, bool time_labels) const {
   if (mode_ != WindowMode::whole_run) return;
   draw_axes(canvas, time_labels);
-  for (size_t i = 0; i < series_.size(); ++i)
-    panel_.draw_envelope(canvas, whole_[i], t_end_, {series_[i].color.with_alpha(0.22), 2, series_[i].dashed});
+  for (size_t i = 0; i < series_.size(); ++i) {
+    const render::Stroke faint{series_[i].color.with_alpha(0.22), 2, series_[i].dashed};
+    if (series_[i].of_time)
+      panel_.draw_function(canvas, series_[i].of_time, 0, t_end_, faint);
+    else
+      panel_.draw_envelope(canvas, whole_[i], t_end_, faint);
+  }
 }
 
 void SeriesPanel::draw_progress(render::Canvas& layer, double t, bool from_start) {
@@ -81,8 +95,14 @@ void SeriesPanel::draw_progress(render::Canvas& layer, double t, bool from_start
   const int to = whole_[0].column_of(t);
   // One column back, so the new piece joins the old one without a gap.
   const int from = from_start ? 0 : std::max(0, progress_column_ - 1);
-  for (size_t i = 0; i < series_.size(); ++i)
-    panel_.draw_envelope_columns(layer, whole_[i], from, to, {series_[i].color, 2.4, series_[i].dashed});
+  const double column_width = t_end_ / whole_[0].columns();
+  for (size_t i = 0; i < series_.size(); ++i) {
+    const render::Stroke stroke{series_[i].color, 2.4, series_[i].dashed};
+    if (series_[i].of_time)  // to the same column centre as the envelopes
+      panel_.draw_function(layer, series_[i].of_time, from * column_width, (to + 0.5) * column_width, stroke);
+    else
+      panel_.draw_envelope_columns(layer, whole_[i], from, to, stroke);
+  }
   progress_column_ = to;
 }
 
@@ -102,6 +122,10 @@ void SeriesPanel::draw(render::Canvas& canvas, double t, std::span<const double>
   // jumps shows only completed windows; the others draw up to t.
   const double last_x = mode_ == WindowMode::jumps ? x1 : t;
   for (size_t i = 0; i < series_.size(); ++i) {
+    if (series_[i].of_time) {
+      panel_.draw_function(canvas, series_[i].of_time, x0, last_x, {series_[i].color, 2.4, series_[i].dashed});
+      continue;
+    }
     const auto& envelope = recent_[i];
     auto points = envelope.polyline(envelope.column_of(x0), envelope.column_of(last_x) - (mode_ == WindowMode::jumps),
                                     [&](double x, double y) { return panel_.to_pixel(x, y); });

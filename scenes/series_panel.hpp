@@ -29,6 +29,10 @@ struct SeriesSpec {
   render::Color color;
   std::function<double(std::span<const double> row)> value;
   bool dashed = false;
+  /// A known function of t (the exact solution): drawn by evaluating it at
+  /// every half pixel column, smooth at any dt, instead of joining its values
+  /// at the solver's steps.
+  std::function<double(double t)> of_time = nullptr;
 };
 
 /// A plot panel of one or more curves against time, fed a solution row at a
@@ -58,6 +62,8 @@ class SeriesPanel {
   /// The dynamic part at time t: the cursor, and for window modes the axes
   /// and curves too (they move). `row` is the solution at t.
   void draw(render::Canvas&, double t, std::span<const double> row, bool time_labels) const;
+  /// The panel's axes and mapping as last drawn (for tests and overlays).
+  const render::PlotPanel& plot() const { return panel_; }
 
  private:
   std::pair<double, double> window_at(double t) const;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "cli_support.hpp"
+#include "core/scheme.hpp"
 
 using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;
@@ -23,6 +24,34 @@ TEST_CASE("analyze convergence prints i,dt,E,r with rates near the scheme's orde
   CHECK(std::stod(rows[4][3]) == Approx(2).margin(0.1));
 }
 
+TEST_CASE("analyze convergence's defaults reach every scheme's order and say so", "[analysis]") {
+  // With no --levels, dt is halved until the last two rates agree: the last
+  // rate is then the order, for the first-order schemes too.
+  for (const auto& info : vibra::all_schemes()) {
+    const std::string scheme(info.name);
+    // Without damping, backward-damping is the centered scheme: second order.
+    const int order = info.scheme == vibra::Scheme::backward_damping ? 2 : info.order;
+    INFO(scheme << ", order " << order);
+    const auto r = run_vibra("analyze convergence undamped --set scheme=" + scheme + " --csv");
+    INFO(r.out << r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto rows = csv_rows(r.out);
+    REQUIRE(rows.size() >= 5);
+    CHECK(std::stod(rows.back()[3]) == Approx(order).margin(0.1));
+    CHECK_THAT(r.err, Catch::Contains("The rates have settled"));
+  }
+  // The aligned table says it under the table.
+  const auto aligned = run_vibra("analyze convergence undamped --set scheme=rk4");
+  CHECK_THAT(aligned.out, Catch::Contains("The rates have settled"));
+}
+
+TEST_CASE("analyze convergence says plainly when the rates have not settled", "[analysis]") {
+  // Forward Euler's first rates, from the default dt, are far from 1.
+  const auto r = run_vibra("analyze convergence undamped --set scheme=forward-euler --levels 3");
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, Catch::Contains("The rates have NOT settled"));
+}
+
 TEST_CASE("analyze experiments draw their figures at the requested size", "[analysis]") {
   ScratchDirectory dir;
   const std::string commands[] = {
@@ -39,7 +68,10 @@ TEST_CASE("analyze experiments draw their figures at the requested size", "[anal
     const auto r = run_vibra(command);
     INFO(r.err);
     CHECK(r.exit_code == 0);
-    CHECK(r.err.empty());
+    // Like render: one line saying what was written (silent with --quiet).
+    CHECK_THAT(r.err, Catch::StartsWith("vibra: wrote " + dir.path.string()));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(run_vibra(command + " --quiet").err.empty());
   }
   for (const char* name : {"convergence.png", "energy.svg", "empirical.pdf", "frequency.png", "amplitude.png", "orbit.png",
                            "period.png"})

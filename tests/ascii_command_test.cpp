@@ -12,11 +12,17 @@ TEST_CASE("ascii: the book's u and exact series, by hand", "[ascii-command]") {
   const auto r = run_vibra("ascii undamped --set dt=0.1 --set T=0.3 --width 20 --symbols +o --exact --ymin -1.2 --ymax 1.2");
   REQUIRE(r.exit_code == 0);
   CHECK(r.out ==
-        "+ u   o exact\n"
         "          |       o   0.0\n"
         "          |      o    0.1\n"
         "          | +o        0.2\n"
         "       o  |           0.3\n");
+}
+
+TEST_CASE("ascii: --legend names the series first, the lines below unchanged", "[ascii-command]") {
+  const std::string args = "ascii undamped --set dt=0.1 --set T=0.3 --width 20 --symbols +o --exact --ymin -1.2 --ymax 1.2";
+  const auto plain = run_vibra(args), legend = run_vibra(args + " --legend");
+  REQUIRE(legend.exit_code == 0);
+  CHECK(legend.out == "+ u   o exact\n" + plain.out);
 }
 
 TEST_CASE("ascii: out-of-range values are appended, counters by time", "[ascii-command]") {
@@ -38,6 +44,23 @@ TEST_CASE("ascii: several series with a legend, default range from the amplitude
   CHECK(r.out.substr(0, r.out.find('\n')) == "* theta   o S   + D");
   const auto second = r.out.substr(r.out.find('\n') + 1);
   CHECK(second.substr(0, second.find('\n')).size() >= 41);
+}
+
+TEST_CASE("ascii: the default range holds every column shown, not just the first", "[ascii-command]") {
+  // theta stays below Theta = 0.35 rad, but the wire force S is about 1:
+  // a range from theta alone puts S out of range (appended as 1.0E+00) on every line.
+  const auto r = run_vibra("ascii pendulum --columns theta,S,D --set periods=2 --width 40");
+  REQUIRE(r.exit_code == 0);
+  int lines = 0;
+  for (size_t start = r.out.find('\n') + 1, end; (end = r.out.find('\n', start)) != std::string::npos; start = end + 1) {
+    const std::string line = r.out.substr(start, end - start);
+    INFO(line);
+    CHECK(line.find("E+") == std::string::npos);
+    CHECK(line.find("E-") == std::string::npos);
+    CHECK(line.find('o') != std::string::npos);  // S is drawn on every line
+    ++lines;
+  }
+  CHECK(lines > 20);
 }
 
 TEST_CASE("ascii: bad options are one-line errors", "[ascii-command]") {

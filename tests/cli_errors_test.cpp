@@ -31,6 +31,7 @@ const ScratchDirectory& bad_scene_files() {
         {"wrong_type.toml", "model = \"pendulum\"\nfps = \"fast\"\n"},
         {"bad_colour.toml", "model = \"pendulum\"\n[colors]\nbob = \"#12345\"\n"},
         {"bad_model.toml", "model = \"pendulm\"\n"},
+        {"transposed.toml", "model = \"pendulum\"\nalpah = 0.8\n"},
     };
     for (const auto& [name, text] : files) std::ofstream(d / name, std::ios::binary) << text;
     return d;
@@ -51,6 +52,7 @@ TEST_CASE("solve refuses bad input with one line and exit code 2", "[cli]") {
       {"solve", "needs a MODEL"},
       {"solve pendulm", "did you mean 'pendulum'"},
       {"solve pendulum --set Thta=3 -o OUT.csv", "did you mean 'Theta'"},
+      {"solve pendulum --set alpah=0.8 -o OUT.csv", "did you mean 'alpha'?"},
       {"solve pendulum --set scheme=rk5 -o OUT.csv", "choose one of"},
       {"solve pendulum --set dt=0 -o OUT.csv", "dt=0 must be a positive"},
       {"solve pendulum --set dt=-0.1 -o OUT.csv", "must be a positive"},
@@ -113,6 +115,16 @@ TEST_CASE("render refuses bad input with one line and exit code 2", "[cli]") {
       {"render SCENES/wrong_type.toml -o OUT.mp4", "wrong_type.toml:2: cannot read fps='fast'"},
       {"render SCENES/bad_colour.toml -o OUT.mp4", "bad_colour.toml:3: colors.bob"},
       {"render SCENES/bad_model.toml -o OUT.mp4", "did you mean 'pendulum'"},
+      // Two letters swapped is one slip, and gets its suggestion.
+      {"render SCENES/transposed.toml -o OUT.mp4", "transposed.toml:2: unknown key 'alpah' (did you mean 'alpha'?)"},
+      {"render --set alpah=0.8 -o OUT.mp4", "did you mean 'alpha'?"},
+      {"render --set Thtea=40 -o OUT.mp4", "did you mean 'Theta'?"},
+      // A frame count beyond any integer is refused, not wrapped to a negative one.
+      {"render --speed 1e-300 -o OUT.mp4", "more than 1e8 frames"},
+      {"render --fps 240 --speed 1e-12 -o OUT.mp4", "more than 1e8 frames"},
+      {"render --at nan -o OUT.png", "--at nan is not a time"},
+      {"render --at inf -o OUT.png", "--at inf is not a time"},
+      {"render --at -inf -o OUT.svg", "--at inf is not a time"},
   };
   for (const auto& c : cases) check_refused(c);
 }
@@ -165,6 +177,8 @@ TEST_CASE("plot, ascii and analyze refuse bad input with one line and exit code 
       {"ascii pendulum --columns theta,Q", "no column 'Q'"},
       {"ascii pendulum --ymin 1", "give both --ymin and --ymax"},
       {"ascii pendulm", "did you mean 'pendulum'"},
+      {"ascii pendulum --set alpah=0.8", "did you mean 'alpha'?"},
+      {"plot pendulum --set alpah=0.8 -o OUT.png", "did you mean 'alpha'?"},
       {"analyze nonsense", "unknown experiment 'nonsense'"},
       {"analyze convergence pendulum --set scheme=rk4", "no exact solution"},
       {"analyze convergence undamped --levels 0", "--levels must be 2..20"},

@@ -41,12 +41,12 @@ inline CommandResult run_vibra(const std::string& args) {
   return result;
 }
 
-/// The standard output of a shell command (ffprobe, ffmpeg).
+/// The standard output of a shell command (ffprobe, ffmpeg; binary safe).
 inline std::string shell(const std::string& command) {
   std::string out;
   std::FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return out;
-  char buffer[4096];
+  char buffer[1 << 16];
   for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
   ::pclose(pipe);
   return out;
@@ -63,6 +63,15 @@ inline std::string read_file(const std::filesystem::path& path) {
   return bytes;
 }
 
+/// In a forked child: becomes `vibra ARGS` (exit 127 if that fails).
+[[noreturn]] inline void exec_vibra(const std::vector<std::string>& args) {
+  std::vector<char*> argv{const_cast<char*>(VIBRA_EXE)};
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  ::execv(VIBRA_EXE, argv.data());
+  ::_exit(127);
+}
+
 /// Starts `vibra ARGS` as a child process, without a shell, its stdout and
 /// stderr written to the given files (e.g. /dev/null); returns its pid.
 inline pid_t spawn_vibra(const std::vector<std::string>& args, const std::string& out_file,
@@ -73,11 +82,7 @@ inline pid_t spawn_vibra(const std::vector<std::string>& args, const std::string
     const int err = ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     ::dup2(out, 1);
     ::dup2(err, 2);
-    std::vector<char*> argv{const_cast<char*>(VIBRA_EXE)};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(VIBRA_EXE, argv.data());
-    ::_exit(127);
+    exec_vibra(args);
   }
   return pid;
 }

@@ -220,7 +220,7 @@ TEST_CASE("elastic pendulum diagram: mg, the wire's force (L - beta)/(1 - beta) 
   CHECK(trail.front().p.x() == Approx(r.rows.front()[1]));
 }
 
-TEST_CASE("orbit diagram: gravity -x/|x|^3 and v to their scales; the circular orbit keeps radius 1",
+TEST_CASE("orbit diagram: gravity -x/|x|^3 and v to their scales, and the circular orbit keeps radius 1",
           "[scene][diagram]") {
   const Recorded r = record("orbit");
   auto& d = as<OrbitDiagram>(r);
@@ -293,5 +293,74 @@ TEST_CASE("nothing is clipped: over the run no drawing touches the frame's edge,
         }
       }
     }
+  }
+}
+
+namespace {
+/// Whether pixel (x, y) of a frame is the background, near enough (antialiasing).
+bool blank(const render::Canvas& canvas, int x, int y, const render::Color& background) {
+  const auto* p = canvas.data() + y * canvas.stride() + 4 * x;  // BGRA
+  return std::abs(p[2] - background.r * 255) < 40 && std::abs(p[1] - background.g * 255) < 40 &&
+         std::abs(p[0] - background.b * 255) < 40;
+}
+
+/// The longest run of drawn pixels in pixel row `y`, as [first, last] columns.
+std::pair<int, int> longest_drawn_run(const render::Canvas& canvas, int y, const render::Color& background) {
+  std::pair<int, int> best{0, -1};
+  for (int x = 0, start = -1; x <= canvas.width(); ++x) {
+    if (x < canvas.width() && !blank(canvas, x, y, background)) {
+      if (start < 0) start = x;
+    } else if (start >= 0) {
+      if (x - 1 - start > best.second - best.first) best = {start, x - 1};
+      start = -1;
+    }
+  }
+  return best;
+}
+}  // namespace
+
+TEST_CASE("layout fbd centres every diagram: the pendulums' pivots on the centre line, the rest over the run",
+          "[scene][diagram]") {
+  const int w = 1280, h = 720;
+  for (const std::string& name : builtin_scene_names()) {
+    SceneConfig config = load_scene(name);
+    config.width = w, config.height = h, config.layout = Layout::fbd;
+    const Parameters p = model_parameters_of(config);
+    auto run = find_model(config.model).build(p);
+    auto scene = make_scene(config, run->info(), "caption");
+    auto rows = vibra::test::rows(*run);
+    for (const auto& row : rows) scene->record(row);
+    if (diagram_for(config).make({config, p, run->info()})->view_at(rows[0])) continue;  // follows its body
+    render::Canvas canvas = render::Canvas::image(w, h);
+    if (config.model == "pendulum" || config.model == "elastic-pendulum") {
+      // A pendulum hangs from the frame's centre line, whichever side it
+      // swings further to: its ceiling, the longest line near the top, is
+      // centred.
+      scene->draw(canvas, rows.back());
+      canvas.flush();
+      std::pair<int, int> ceiling{0, -1};
+      for (int y = 60; y < h / 3; ++y) {
+        const auto run_at_y = longest_drawn_run(canvas, y, config.colors.background);
+        if (run_at_y.second - run_at_y.first > ceiling.second - ceiling.first) ceiling = run_at_y;
+      }
+      INFO(name << ": ceiling from x = " << ceiling.first << " to " << ceiling.second << " of " << w);
+      CHECK(ceiling.second - ceiling.first > 50);
+      CHECK(std::abs((ceiling.first + ceiling.second) / 2.0 - (w - 1) / 2.0) <= 2);
+      continue;
+    }
+    // Any other drawing's extent over the run (below the read-out, above the
+    // caption) is centred: its left and right margins differ by under 3% of w.
+    int left = w, right = -1;
+    const size_t every = std::max<size_t>(1, rows.size() / 40);
+    for (size_t i = 0; i < rows.size(); i += every) {
+      scene->draw(canvas, rows[i]);
+      canvas.flush();
+      for (int y = 60; y < h - 60; y += 2)
+        for (int x = 0; x < w; ++x)
+          if (!blank(canvas, x, y, config.colors.background)) left = std::min(left, x), right = std::max(right, x);
+    }
+    INFO(name << ": drawn from x = " << left << " to " << right << " of " << w);
+    REQUIRE(right > left);
+    CHECK(std::abs(left - (w - 1 - right)) < 0.03 * w);
   }
 }

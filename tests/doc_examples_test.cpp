@@ -235,9 +235,6 @@ Outcome run_example(const std::string& command, const vibra::test::ScratchDirect
 /// Rule 7: examples that fail today (by their code, without a comment), each
 /// with the issue that tracks its fix.
 const std::map<std::string, std::string> kKnownFailures = {
-    // Issue 15, defect 1: a frame pattern's directory is not created. Remove
-    // this entry when the fix is merged (the test says so).
-    {"build/vibra render pendulum_book -o frames/tmp_%04d.png", "issue 15, defect 1"},
 };
 
 /// Rule 8: the docs hold at least this many runnable examples.

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include "core/error.hpp"
 #include "scenes/frame_clock.hpp"
 
 using vibra::scenes::FrameClock;
@@ -19,4 +20,16 @@ TEST_CASE("one frame per step", "[frames]") {
   auto c = FrameClock::per_step(2 * M_PI / 40, 480);
   CHECK(c.frames() == 481);
   CHECK(c.time(40) == Approx(2 * M_PI));
+}
+
+TEST_CASE("a frame count that overflows or exceeds the bound is refused, not wrapped", "[frames]") {
+  using vibra::UsageError;
+  // T / (speed / fps) = 10 * 30 / 1e-300 = 3e302: far beyond any integer.
+  CHECK_THROWS_AS(FrameClock::by_speed(10, 30, 1e-300), UsageError);
+  CHECK_THROWS_WITH(FrameClock::by_speed(10, 30, 1e-300), Catch::Contains("frames"));
+  CHECK_THROWS_AS(FrameClock::by_speed(10, 30, 0), UsageError);     // an infinite count
+  CHECK_THROWS_AS(FrameClock::by_speed(10, 30, NAN), UsageError);   // not a number
+  CHECK_THROWS_AS(FrameClock::by_speed(1e9, 30, 1), UsageError);    // 3e10 frames: over the bound
+  CHECK_THROWS_AS(FrameClock::per_step(1e-9, 2'000'000'000LL), UsageError);
+  CHECK(FrameClock::by_speed(1e6, 30, 1).frames() == 30'000'001);  // a big but sane count passes
 }

@@ -120,7 +120,7 @@ TEST_CASE("1e7 samples: every zoom level keeps both spikes, the page's data stay
   }
 }
 
-TEST_CASE("a short run is kept sample by sample; many series share the budget", "[page]") {
+TEST_CASE("a short run is kept sample by sample, and many series share the budget", "[page]") {
   PageSeriesData data(0, 3, 0.1, 31);
   for (int i = 0; i <= 30; ++i) data.add(i * 0.1 * i * 0.1);
   std::vector<PagePanel> panels(1);

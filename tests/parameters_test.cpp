@@ -29,4 +29,8 @@ TEST_CASE("parameters parse expressions, angles and choices", "[parameters]") {
 TEST_CASE("closest_match suggests near names only", "[parameters]") {
   CHECK(closest_match("pendulm", {"pendulum", "undamped"}) == "pendulum");
   CHECK(closest_match("foo", {"rho", "m"}) == "");
+  // Two neighbours swapped is one slip, even in a short name.
+  CHECK(closest_match("alpah", {"alpha", "Theta", "dt"}) == "alpha");
+  CHECK(closest_match("Thtea", {"alpha", "Theta", "dt"}) == "Theta");
+  CHECK(closest_match("td", {"dt", "T"}) == "dt");
 }

@@ -130,10 +130,11 @@ TEST_CASE("frame pattern: bad patterns throw OutputError", "[png]") {
   CHECK_THROWS_WITH(parse_frame_pattern(dir / "f.png", 10), Contains("%d"));
 }
 
-TEST_CASE("frame pattern: a missing directory, or a file in its place, throws", "[png]") {
+TEST_CASE("frame pattern: a missing directory is for the sink to create, a file in its place throws", "[png]") {
   ScratchDirectory dir;
-  CHECK_THROWS_WITH(parse_frame_pattern(dir / "missing/f_%04d.png", 10), Contains("does not exist"));
-  CHECK_THROWS_WITH(parse_frame_pattern(dir / "missing", 10), Contains("does not exist"));
+  CHECK(parse_frame_pattern(dir / "missing/f_%04d.png", 10).directory == dir.path / "missing");
+  CHECK(parse_frame_pattern(dir / "missing", 10).name(3) == dir.path / "missing/tmp_0003.png");
+  CHECK(dir.empty());  // parsing creates nothing
   std::ofstream(dir / "file") << "x";
   CHECK_THROWS_WITH(parse_frame_pattern(dir / "file/f_%04d.png", 10), Contains("not a directory"));
   CHECK_THROWS_WITH(parse_frame_pattern(dir / "file", 10), Contains("not a directory"));

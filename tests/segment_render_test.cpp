@@ -167,6 +167,19 @@ TEST_CASE("concat names the part that is wrong and writes nothing", "[render][se
   CHECK(left.empty());  // no temporaries
 }
 
+TEST_CASE("a transparent segment is from another render than an opaque one", "[render][segment][video]") {
+  ScratchDirectory dir;
+  render_segments(kSmall, 2, dir / "opaque.webm");
+  render_segments(kSmall + " --transparent", 2, dir / "clear.webm");
+  const auto r = run_vibra("concat " + (dir / "opaque.seg-0-of-2.webm") + " " + (dir / "clear.seg-1-of-2.webm") + " -o " +
+                           (dir / "out.webm"));
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, Catch::Contains("clear.seg-1-of-2.webm': it is from another render"));
+  CHECK(run_vibra("concat -q " + (dir / "clear.seg-0-of-2.webm") + " " + (dir / "clear.seg-1-of-2.webm") + " -o " +
+                  (dir / "clear.webm"))
+            .exit_code == 0);
+}
+
 TEST_CASE("skip-existing: a complete segment costs nothing, another segment's file is rendered again", "[render][segment]") {
   ScratchDirectory dir;
   const std::string args = "render --size 320x180 --fps 10 --set periods=1 --skip-existing --segment 1/3 -o " + (dir / "a.mp4");
@@ -237,6 +250,7 @@ TEST_CASE("bad --segment, --quality lossless and concat requests are refused on 
   check_refused(small + "--segment auto/4 -o OUT.mp4",
                 "takes K from JOB_COMPLETION_INDEX (an indexed job) or SLURM_ARRAY_TASK_ID, and neither is set");
   check_refused(small + "--segment 0/2 -o OUT.gif", "--segment needs a video that keeps timestamps");
+  check_refused(small + "--segment 0/2 -o - --format y4m", "--segment writes files for vibra concat to join");
   check_refused(small + "--segment 0/30 -o OUT.mp4", "segment 0/30 has no frames: the render has only 21");
   check_refused(small + "--quality lossless -o OUT.ogv", "--quality lossless needs H.264 or VP9, not Theora");
   check_refused(small + "--quality lossless --crf 10 -o OUT.mp4", "--quality lossless and --crf exclude each other");

@@ -72,6 +72,19 @@ TEST_CASE("SIGINT and SIGTERM stop video and frame renders: exit 128+signal, not
   CHECK(left.empty());
 }
 
+TEST_CASE("an interrupted frame render removes the directories it created", "[signals][render]") {
+  ScratchDirectory dir, logs;
+  const std::string target = dir / "made/for/this/run/tmp_%04d.png";
+  auto has_frames = [&] {
+    std::error_code ec;
+    return fs::exists(dir / "made/for/this/run", ec) && !fs::is_empty(dir / "made/for/this/run", ec);
+  };
+  const Interrupted run = interrupt_vibra({"render", "--set", "periods=500", "--size", "320x180", "-q", "-o", target},
+                                          logs / "out", logs / "err", SIGINT, has_frames);
+  CHECK(run.exit_code == 128 + SIGINT);
+  CHECK(dir.empty());  // no frames, and none of the four directories
+}
+
 TEST_CASE("SIGINT and SIGTERM stop an endless ASCII run after a complete line", "[signals][ascii]") {
   const std::string signal_name = GENERATE(as<std::string>{}, "SIGINT", "SIGTERM");
   CAPTURE(signal_name);

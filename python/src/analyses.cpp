@@ -30,7 +30,8 @@ py::object column_array(const app::Table& table, size_t column) {
   return numpy.attr("array")(cells, py::arg("dtype") = integers ? "int64" : "float64");
 }
 
-/// [(heading, [(name, array), ...]), ...] after writing the figure if asked.
+/// [(heading, [(name, array), ...], conclusion), ...] after writing the
+/// figure if asked; the result's conclusion goes with its last table.
 template <class Options>
 py::list run(app::ExperimentResult (*experiment)(const Options&), const Options& options, const std::string& figure,
              const std::string& size) {
@@ -42,11 +43,12 @@ py::list run(app::ExperimentResult (*experiment)(const Options&), const Options&
     app::write_figure(result, figure, size);
   }
   py::list tables;
-  for (const app::TitledTable& titled : result.tables) {
+  for (size_t t = 0; t < result.tables.size(); ++t) {
+    const app::TitledTable& titled = result.tables[t];
     py::list columns;
     for (size_t c = 0; c < titled.table.columns().size(); ++c)
       columns.append(py::make_tuple(titled.table.columns()[c], column_array(titled.table, c)));
-    tables.append(py::make_tuple(titled.heading, columns));
+    tables.append(py::make_tuple(titled.heading, columns, t + 1 == result.tables.size() ? result.conclusion : ""));
   }
   return tables;
 }
@@ -59,7 +61,8 @@ void set(std::string& field, const Text& value) {
 void bind_analyses(py::module_& m) {
   m.def(
       "convergence",
-      [](const std::string& model, const std::vector<std::string>& settings, int levels, const std::string& figure,
+      [](const std::string& model, const std::vector<std::string>& settings, std::optional<int> levels,
+         const std::string& figure,
          const std::string& size) {
         return run(&app::convergence_experiment, app::ConvergenceOptions{model, settings, levels}, figure, size);
       },

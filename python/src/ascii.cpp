@@ -31,12 +31,12 @@ void bind_ascii(py::module_& m) {
   py::class_<AsciiLines>(m, "AsciiLines")
       .def(py::init([](const std::string& model, const std::vector<std::string>& settings, int width,
                        const std::string& symbols, std::optional<double> ymin, std::optional<double> ymax, bool exact,
-                       const std::string& counter, const std::vector<std::string>& columns) {
+                       const std::string& counter, const std::vector<std::string>& columns, bool legend) {
              return std::make_unique<AsciiLines>(
-                 app::AsciiPlotOptions{model, settings, width, symbols, ymin, ymax, exact, counter, columns});
+                 app::AsciiPlotOptions{model, settings, width, symbols, ymin, ymax, exact, counter, columns, legend});
            }),
            py::arg("model"), py::arg("settings"), py::arg("width"), py::arg("symbols"), py::arg("ymin"),
-           py::arg("ymax"), py::arg("exact"), py::arg("counter"), py::arg("columns"))
+           py::arg("ymax"), py::arg("exact"), py::arg("counter"), py::arg("columns"), py::arg("legend"))
       .def("__iter__", [](py::object self) { return self; })
       .def("__next__", &AsciiLines::next);
 }

@@ -35,13 +35,13 @@ void bind_render(py::module_& m) {
       [](const std::string& scene, const std::vector<std::pair<std::string, std::string>>& settings,
          const std::string& output, std::optional<double> at, bool frame_per_step, bool frames_player,
          const std::string& codec, const std::string& quality, int crf, const std::string& preset, int threads,
-         bool quiet) {
-        render::VideoSettings video{codec, quality, crf, preset, threads};
+         bool transparent, bool quiet) {
+        render::VideoSettings video{codec, quality, crf, preset, threads, transparent, ""};
         render(scene, settings, output, at, frame_per_step, frames_player, video, quiet);
       },
       py::arg("scene"), py::arg("settings"), py::arg("output"), py::arg("at"), py::arg("frame_per_step"),
       py::arg("frames_player"), py::arg("codec"), py::arg("quality"), py::arg("crf"), py::arg("preset"),
-      py::arg("threads"), py::arg("quiet"));
+      py::arg("threads"), py::arg("transparent"), py::arg("quiet"));
   m.def("scene_names", &scenes::builtin_scene_names);
 }
 

@@ -48,6 +48,14 @@ def test_convergence_rates_are_the_schemes_orders():
     np.testing.assert_allclose(centered.r[1:], 2, atol=0.05)
 
 
+def test_convergence_by_default_halves_dt_until_the_rates_settle(cli):
+    table = vibra.convergence("undamped", scheme="forward-euler")
+    assert abs(table.r[-1] - table.r[-2]) <= 0.05 and abs(table.r[-1] - 1) < 0.1
+    assert table.conclusion.startswith("The rates have settled")
+    assert table.conclusion in cli("analyze", "convergence", "undamped", "--set", "scheme=forward-euler").stdout
+    assert "have NOT settled" in vibra.convergence("undamped", scheme="forward-euler", levels=3).conclusion
+
+
 def test_energy_table_is_the_command_lines(cli):
     table = vibra.energy(schemes=["rk4", "euler-cromer"], T=10, dt=[0.05, 0.025])
     assert table.scheme.dtype.kind == "U" and list(table.scheme) == ["rk4", "rk4", "euler-cromer", "euler-cromer"]

@@ -55,6 +55,18 @@ def test_a_still_is_an_image(in_tmp):
     assert svg._repr_mimebundle_()["image/svg+xml"].lstrip().startswith("<?xml")
 
 
+def test_a_transparent_still_has_alpha_where_nothing_is_drawn(in_tmp):
+    image = vibra.render(at=0.5, size=(320, 180), layout="fbd", out="overlay.png", transparent=True)
+    assert probe(image)["pix_fmt"] == "rgba"
+    rgba = subprocess.run(["ffmpeg", "-v", "error", "-i", os.fspath(image), "-f", "rawvideo", "-pix_fmt", "rgba", "-"],
+                          capture_output=True, check=True).stdout
+    alpha = rgba[3::4]
+    assert len(alpha) == 320 * 180 and alpha[0] == 0  # the corner: no background
+    assert max(alpha) == 255  # the drawing is opaque
+    with pytest.raises(OSError, match="cannot be transparent"):
+        vibra.render(out="overlay.mp4", transparent=True, T=0.5)
+
+
 def test_default_still_name_and_scene_keys(in_tmp):
     image = vibra.render("pendulum_book", at=0, size=(200, 150))
     assert os.fspath(image) == "pendulum_book.png" and (in_tmp / "pendulum_book.png").is_file()

@@ -12,11 +12,14 @@ from ._keys import assignments, comma_list, size_text, value_text
 
 class Table:
     """An experiment's table: `heading` says what it holds; each column is a
-    numpy array, as an attribute or by name (`table["dt"]`). Shows itself as
-    an HTML table in a notebook."""
+    numpy array, as an attribute or by name (`table["dt"]`); `conclusion` is
+    the sentence the command prints under it ("" for none), e.g. whether
+    convergence rates have settled. Shows itself as an HTML table in a
+    notebook."""
 
-    def __init__(self, heading, columns):
+    def __init__(self, heading, columns, conclusion=""):
         self.heading = heading
+        self.conclusion = conclusion
         self._columns = dict(columns)
 
     @property
@@ -54,7 +57,7 @@ class Table:
         rows = [list(self._columns)] + self._rows()
         widths = [max(len(row[c]) for row in rows) for c in range(len(rows[0]))]
         lines = ["  ".join(cell.rjust(width) for cell, width in zip(row, widths)).rstrip() for row in rows]
-        return "\n".join([self.heading] + lines)
+        return "\n".join([self.heading] + lines + ([self.conclusion] if self.conclusion else []))
 
     def _repr_html_(self):
         head = "".join(f"<th>{html.escape(name)}</th>" for name in self._columns)
@@ -64,11 +67,12 @@ class Table:
                                         for a, cell in zip(align, row)) + "</tr>"
                        for row in self._rows())
         return (f"<table><caption style=\"caption-side: top\">{html.escape(self.heading)}</caption>"
-                f"<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>")
+                f"<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+                + (f"<p>{html.escape(self.conclusion)}</p>" if self.conclusion else ""))
 
 
 def _tables(result):
-    tables = tuple(Table(heading, columns) for heading, columns in result)
+    tables = tuple(Table(heading, columns, conclusion) for heading, columns, conclusion in result)
     return tables[0] if len(tables) == 1 else tables
 
 
@@ -76,8 +80,9 @@ def _figure(out):
     return "" if out is None else str(out)
 
 
-def convergence(model="undamped", *, levels=5, out=None, size="1280x720", **keys):
-    """Errors E and rates r for dt halved `levels - 1` times, against the exact
+def convergence(model="undamped", *, levels=None, out=None, size="1280x720", **keys):
+    """Errors E and rates r for dt halved `levels - 1` times (default: until
+    the last two rates agree, which `conclusion` says), against the exact
     solution (undamped, or two-body's circular orbit). Model keys as keywords;
     dt (or steps_per_period) is the first level's."""
     return _tables(_vibra.convergence(model, assignments(keys), levels, _figure(out), size_text(size)))

@@ -5,13 +5,13 @@ from ._keys import assignments
 
 
 def ascii_lines(model, *, width=68, symbols="*o+x@", ymin=None, ymax=None, exact=False,
-                counter="", columns=(), **keys):
+                counter="", columns=(), legend=False, **keys):
     """Yields the lines `vibra ascii MODEL` prints (without newlines): a legend
-    when there are several series, then one line per time step with its
+    with columns or legend=True, then one line per time step with its
     counter (period, time or none). Keys of the model as keywords (T="inf"
     runs until you stop iterating). columns=("theta", "S") picks the series."""
     if isinstance(columns, str):
         columns = columns.split(",")
     return _vibra.AsciiLines(model, assignments(keys), width, symbols,
                              None if ymin is None else float(ymin), None if ymax is None else float(ymax),
-                             exact, counter, list(columns))
+                             exact, counter, list(columns), legend)

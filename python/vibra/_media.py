@@ -81,7 +81,7 @@ class Image(_Output):
 
 def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=None, speed=None,
            window=None, window_mode=None, compare=None, frame_per_step=False, frames_player=False,
-           codec="", quality="medium", crf=-1, preset="", threads=0, quiet=True, **keys):
+           codec="", quality="medium", crf=-1, preset="", threads=0, transparent=False, quiet=True, **keys):
     """Renders a scene as `vibra render` does: a video (out="name.mp4", .webm,
     .mkv, .ogv or .gif; default SCENE.mp4), or with at=T one still (out=
     "name.png", .svg or .pdf; default SCENE.png). PNG frame patterns
@@ -90,7 +90,9 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
     "1280x720", fps, layout="fbd", speed, window="8periods", ...) or keys of
     the scene's model (Theta=40, alpha=0.8, T=20). compare={"scheme": ["forward-euler",
     "rk4"]} (or "scheme=forward-euler,rk4") draws one run per value together, as
-    --compare does. Returns a Video or an Image.
+    --compare does. transparent=True draws no background (PNG with alpha, .webm
+    VP9 with alpha, .mov ProRes 4444, SVG/PDF without the background rectangle).
+    Returns a Video or an Image.
     """
     settings = []
     for key, value in (("size", size), ("fps", fps), ("layout", layout), ("speed", speed),
@@ -102,7 +104,7 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
         out = Path(scene).stem + (".png" if at is not None else ".mp4")
     out = os.fspath(out)
     _vibra.render(scene, settings, out, None if at is None else float(at), frame_per_step, frames_player,
-                  codec, quality, crf, preset, threads, quiet)
+                  codec, quality, crf, preset, threads, transparent, quiet)
     suffix = Path(out).suffix.lower()
     if at is not None:
         return Image(out)

@@ -2,13 +2,34 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "core/error.hpp"
 #include "core/models/model.hpp"
 #include "render/decimal_format.hpp"
+#include "render/stop_signal.hpp"
 
 namespace vibra::app {
+
+namespace {
+/// The largest |value| of the given columns (and the exact solution, if
+/// given) over the run, or its first kPrePassSteps steps for a longer or
+/// endless one: the range then holds every series shown.
+double largest_value(Trajectory& run, const std::vector<int>& columns, const std::function<double(double)>& exact) {
+  constexpr long long kPrePassSteps = 1'000'000;
+  std::vector<double> row(run.width());
+  double largest = 0;
+  do {
+    run.row(row);
+    for (int c : columns)
+      if (std::isfinite(row[c])) largest = std::max(largest, std::abs(row[c]));
+    if (exact) largest = std::max(largest, std::abs(exact(row[0])));
+    if ((run.index() & 0xffff) == 0) render::throw_if_stop_requested();
+  } while (run.index() < kPrePassSteps && run.advance());
+  return largest;
+}
+}  // namespace
 
 AsciiPlot::AsciiPlot(const AsciiPlotOptions& o) : exact_(o.exact) {
   trajectory_ = find_model(o.model).build(model_settings(o.model, o.settings));
@@ -33,18 +54,24 @@ AsciiPlot::AsciiPlot(const AsciiPlotOptions& o) : exact_(o.exact) {
   row_.resize(trajectory_->width());
   values_.resize(series);
 
-  // The range: given, or 1.2 times the model's known amplitude, or 1.2 times
-  // the largest initial value.
+  // The range: given; for the classic plot 1.2 times the model's known
+  // amplitude (as the book's plotter); for several columns (theta, S, D differ
+  // in size) 1.2 times the largest value of any series over the run.
   double ymin, ymax;
   if (o.ymin.has_value() != o.ymax.has_value()) throw UsageError("give both --ymin and --ymax, or neither");
   if (o.ymin) {
     ymin = *o.ymin, ymax = *o.ymax;
   } else {
-    trajectory_->row(row_);
-    double largest = columns_.size() == 1 ? info.amplitude_bound : 0;
-    for (int c : columns_) largest = std::max(largest, std::abs(row_[c]));
-    if (o.exact) largest = std::max(largest, std::abs(info.exact(row_[0])));
-    if (!(largest > 0)) largest = 1;
+    double largest = 0;
+    if (columns_.size() == 1) {
+      trajectory_->row(row_);
+      largest = std::max(info.amplitude_bound, std::abs(row_[columns_[0]]));
+      if (o.exact) largest = std::max(largest, std::abs(info.exact(row_[0])));
+    } else {
+      largest = largest_value(*find_model(o.model).build(model_settings(o.model, o.settings)), columns_,
+                              o.exact ? info.exact : nullptr);
+    }
+    if (!(largest > 0) || !std::isfinite(largest)) largest = 1;
     ymax = 1.2 * largest, ymin = -ymax;
   }
   if (o.width < 1 || o.width > 10000) throw UsageError("--width must be 1..10000 (or auto)");
@@ -62,7 +89,7 @@ AsciiPlot::AsciiPlot(const AsciiPlotOptions& o) : exact_(o.exact) {
   by_period_ = counter == "period";
   inverse_period_ = info.mesh.period > 0 ? 1 / info.mesh.period : 0;
 
-  if (series > 1) {
+  if (o.legend || !o.columns.empty()) {
     for (size_t i = 0; i < columns_.size(); ++i)
       legend_ += std::string(legend_.empty() ? "" : "   ") + o.symbols[i] + " " + info.columns[columns_[i]];
     if (o.exact) legend_ += std::string("   ") + o.symbols[columns_.size()] + " " + info.exact_label;

@@ -15,10 +15,16 @@ struct AsciiPlotOptions {
   std::vector<std::string> settings;  ///< KEY=VALUE for the model (T=inf runs until stopped)
   int width = 68;                     ///< plot columns - 1, 1..10000
   std::string symbols = "*o+x@";
-  std::optional<double> ymin, ymax;  ///< both or neither; default 1.2 times the known amplitude
+  /// Both or neither; default: 1.2 times the known amplitude for one column,
+  /// 1.2 times the largest value of every series shown for several.
+  std::optional<double> ymin, ymax;
   bool exact = false;                ///< add the exact solution as the last series
   std::string counter;               ///< period | time | none; "" = period when the model has one
   std::vector<std::string> columns;  ///< series to plot; empty = the main quantity
+  /// Start with a legend line (always with `columns`): the classic run, one
+  /// column with or without the exact solution, stays the book's plotter
+  /// line for line.
+  bool legend = false;
 };
 
 /// A run plotted line by line as text (`vibra ascii`, `vibra.ascii_lines`):
@@ -30,7 +36,8 @@ class AsciiPlot {
   /// naming the option and the fix (in the command line's words).
   explicit AsciiPlot(const AsciiPlotOptions&);
 
-  /// Symbol and name of each series, e.g. "* u   o exact"; "" for one series.
+  /// Symbol and name of each series, e.g. "* u   o exact"; "" unless
+  /// AsciiPlotOptions::legend or columns asked for it.
   const std::string& legend() const { return legend_; }
   /// The current sample's line with its counter, without a newline; valid
   /// until the next call.

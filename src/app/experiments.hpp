@@ -1,5 +1,6 @@
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct TitledTable {
 
 struct ExperimentResult {
   std::vector<TitledTable> tables;
+  /// A sentence under the tables saying what they show, e.g. whether the
+  /// convergence rates have settled; "" for none.
+  std::string conclusion;
   std::function<render::Figure(int width, int height)> figure;
 };
 
@@ -34,7 +38,10 @@ void write_figure(const ExperimentResult&, const std::string& figure, const std:
 struct ConvergenceOptions {
   std::string model;
   std::vector<std::string> settings;  ///< KEY=VALUE; dt (or steps_per_period) is the first level's
-  int levels = 5;
+  /// Number of dt values, 2..20; none: halve dt until the last two rates
+  /// settle (kAutoMinLevels to kAutoMaxLevels levels). The conclusion says
+  /// whether they have.
+  std::optional<int> levels;
 };
 ExperimentResult convergence_experiment(const ConvergenceOptions&);
 

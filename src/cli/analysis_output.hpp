@@ -14,9 +14,10 @@ struct AnalysisOutput {
   bool csv = false;
   std::string figure;  ///< -o FILE.png|svg|pdf; "" for none
   std::string size = "1280x720";
+  bool quiet = false;  ///< no "vibra: wrote" line (and no note on stderr)
 };
 
-/// Adds --csv, -o/--output and --size to an experiment's subcommand.
+/// Adds --csv, -o/--output, --size and -q/--quiet to an experiment's subcommand.
 void add_output_options(CLI::App&, AnalysisOutput&);
 
 /// Checks -o and --size before the experiment runs, so a long run does not

@@ -30,6 +30,7 @@ struct AsciiOptions {
   std::string counter;  ///< period | time | none; "" = period when the model has one
   double rate = 0;
   std::string columns;
+  bool legend = false;
 };
 
 /// Splits "a,b,c".
@@ -49,7 +50,9 @@ int terminal_columns() {
 }
 
 void run(const AsciiOptions& o) {
-  app::AsciiPlotOptions plot_options{o.model, o.settings};
+  app::AsciiPlotOptions plot_options;
+  plot_options.model = o.model;
+  plot_options.settings = o.settings;
   if (o.width == "auto") {
     plot_options.width = std::max(10, terminal_columns() - 8);  // room for the counter
   } else {
@@ -67,6 +70,7 @@ void run(const AsciiOptions& o) {
   plot_options.exact = o.exact;
   plot_options.counter = o.counter;
   if (!o.columns.empty()) plot_options.columns = split(o.columns);
+  plot_options.legend = o.legend;
   app::AsciiPlot plot(plot_options);
   if (o.rate < 0) throw UsageError("--rate must be >= 0 lines per second");
 
@@ -119,7 +123,10 @@ void add_ascii_command(CLI::App& app) {
   cmd->add_option("--ymin", o->ymin, "Lower end of the y axis (with --ymax)");
   cmd->add_option("--ymax", o->ymax, "Upper end of the y axis (with --ymin)");
   cmd->add_flag("--exact", o->exact, "Add the exact solution as the last series");
-  cmd->add_option("--columns", o->columns, "Series to plot, e.g. theta,S,D (default: the main quantity)");
+  cmd->add_option("--columns", o->columns,
+                  "Series to plot, e.g. theta,S,D (default: the main quantity); a legend line comes first, and the "
+                  "default range holds every series over the run (its first million steps if longer)");
+  cmd->add_flag("--legend", o->legend, "Start with a line naming each series' symbol (always with --columns)");
   cmd->add_option("--counter", o->counter, "period (t/P, one decimal), time, or none");
   cmd->add_option("--rate", o->rate, "Lines per second, to watch (the book used 10); default: as fast as it computes");
   cmd->footer(

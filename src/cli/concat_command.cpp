@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/wrote_message.hpp"
 #include "core/error.hpp"
 #include "render/video_concat.hpp"
 
@@ -22,9 +23,8 @@ void run(const ConcatOptions& o) {
   if (o.output.empty()) throw UsageError("vibra concat needs an output: add -o OUT.mp4 (or .mkv, .webm)");
   const std::vector<std::filesystem::path> parts(o.parts.begin(), o.parts.end());
   const render::ConcatSummary joined = render::concat_segments(parts, o.output);
-  if (!o.quiet)
-    std::fprintf(stderr, "vibra: wrote %s (%lld frames from %zu segments, no re-encoding)\n", o.output.c_str(),
-                 joined.frames, joined.parts);
+  say_wrote(o.quiet, o.output + " (" + std::to_string(joined.frames) + " frames from " +
+                         std::to_string(joined.parts) + " segments, no re-encoding)");
 }
 }  // namespace
 

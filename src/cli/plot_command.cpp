@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "app/list_option.hpp"
 #include "cli/model_help.hpp"
+#include "cli/wrote_message.hpp"
 #include "core/error.hpp"
 #include "render/figure.hpp"
 #include "scenes/comparison_figure.hpp"
@@ -31,6 +32,8 @@ struct PlotOptions {
   std::string size;
   std::vector<std::string> compare;
   bool help = false;
+  bool quiet = false;
+  bool transparent = false;
 };
 
 constexpr const char* kUsage =
@@ -55,7 +58,7 @@ constexpr const char* kExamples =
 
 int figure_height(size_t panels) { return panels > 2 ? 960 : 720; }
 
-void plot_comparison(const PlotOptions& o, const Parameters& parameters) {
+render::Figure comparison_plot(const PlotOptions& o, const Parameters& parameters) {
   if (o.compare.size() > 1) throw UsageError("--compare is given " + std::to_string(o.compare.size()) +
                                              " times: compare one key at a time, e.g. --compare dt=0.1,0.05");
   Comparison comparison(find_model(o.model), parameters, parse_comparison(o.compare[0]));
@@ -64,8 +67,17 @@ void plot_comparison(const PlotOptions& o, const Parameters& parameters) {
       o.panels.empty() ? scenes::default_comparison_panels(info) : app::word_list("--panels", o.panels);
   int width = 1280, height = figure_height(panels.size());
   if (!o.size.empty()) scenes::parse_size(o.size, width, height);
-  scenes::comparison_figure(comparison, panels, width, height, scenes::comparison_caption(o.model, comparison))
-      .write(o.output);
+  return scenes::comparison_figure(comparison, panels, width, height, scenes::comparison_caption(o.model, comparison));
+}
+
+render::Figure trajectory_plot(const PlotOptions& o, const Parameters& parameters) {
+  std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
+  const std::vector<std::string> panels =
+      o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : app::word_list("--panels", o.panels);
+  int width = 1280, height = figure_height(panels.size());
+  if (!o.size.empty()) scenes::parse_size(o.size, width, height);
+  const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);
+  return scenes::trajectory_figure(*trajectory, panels, width, height, title);
 }
 
 /// FIGURE.html: the run's time series as a page of linked, zoomable plots.
@@ -101,17 +113,18 @@ void run_plot(const PlotOptions& o) {
   }
   if (o.output.empty())
     throw UsageError("vibra plot needs an output file: add -o FILE.png, FILE.svg, FILE.pdf or FILE.html");
-  if (std::filesystem::path(o.output).extension() == ".html") return write_figure_page(o);
-  render::require_picture_extension(o.output);
-  const Parameters parameters = model_settings(o.model, o.settings);
-  if (!o.compare.empty()) return plot_comparison(o, parameters);
-  std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
-  const std::vector<std::string> panels =
-      o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : app::word_list("--panels", o.panels);
-  int width = 1280, height = figure_height(panels.size());
-  if (!o.size.empty()) scenes::parse_size(o.size, width, height);
-  const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);
-  scenes::trajectory_figure(*trajectory, panels, width, height, title).write(o.output);
+  if (std::filesystem::path(o.output).extension() == ".html") {
+    if (o.transparent)
+      throw UsageError("--transparent is for pictures; a page has no background to drop: give -o FILE.png, .svg or .pdf");
+    write_figure_page(o);
+  } else {
+    render::require_picture_extension(o.output);
+    const Parameters parameters = model_settings(o.model, o.settings);
+    render::Figure figure = o.compare.empty() ? trajectory_plot(o, parameters) : comparison_plot(o, parameters);
+    figure.set_transparent(o.transparent);
+    figure.write(o.output);
+  }
+  say_wrote(o.quiet, o.output);
 }
 }  // namespace
 
@@ -129,6 +142,8 @@ void add_plot_command(CLI::App& app) {
   cmd->add_option("--compare", o->compare, "KEY=V1,V2,...: one run per value of KEY, drawn together (up to 8)")
       ->allow_extra_args(false);
   cmd->add_option("--size", o->size, "Picture size WxH in pixels (default 1280x720, 1280x960 for 3+ panels)");
+  cmd->add_flag("--transparent", o->transparent, "No background: PNG with alpha, SVG/PDF without the paper rectangle");
+  cmd->add_flag("-q,--quiet", o->quiet, "No message on stderr after writing");
   cmd->callback([o] { run_plot(*o); });
 }
 

@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/segment_option.hpp"
 #include "core/error.hpp"
+#include "render/standard_output.hpp"
 #include "scenes/diagram_registry.hpp"
 #include "scenes/render_job.hpp"
 #include "scenes/scene_config.hpp"
@@ -60,7 +61,9 @@ std::string scene_keys_help() {
          "  vibra render --segment 1/3 -o lecture.mp4             # lecture.seg-1-of-3.mp4; then vibra concat\n"
          "  vibra render --set periods=40 -o lecture.html        # video, zoomable plots, CSV\n"
          "  vibra render spring --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 -o schemes.mp4\n"
-         "  vibra render undamped --compare dt=0.2,0.1,0.05 --layout grid --set periods=40 --window 4periods -o dt.mp4\n";
+         "  vibra render undamped --compare dt=0.2,0.1,0.05 --layout grid --set periods=40 --window 4periods -o dt.mp4\n"
+         "  vibra render --transparent -o overlay.webm          # or .mov, or frames/tmp_%04d.png\n"
+         "  vibra render -o - --format y4m | ffplay -            # watch while it renders\n";
   return out;
 }
 
@@ -93,7 +96,11 @@ void run(const RenderOptions& o) {
   request.video = o.video;
   if (!o.segment.empty()) request.segment = parse_segment_option(o.segment, [](const char* name) { return std::getenv(name); });
   request.skip_existing = o.skip_existing;
-  scenes::run_render(request);
+  try {
+    scenes::run_render(request);
+  } catch (const render::StreamClosed&) {
+    // -o - and the reader has gone (a closed player, `| head -c`): a pipeline's normal end.
+  }
 }
 }  // namespace
 
@@ -103,7 +110,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("SCENE", o->scene, "Built-in scene name or a TOML scene file")->capture_default_str();
   cmd->add_option("--set", o->settings, "KEY=VALUE: a scene key or a model key, repeatable");
   cmd->add_option("-o,--output", o->output,
-                  "OUT.mp4|.webm|.mkv|.ogv|.gif|.yuv, PAGE.html (MP4 + WebM + CSV + an interactive page), frames/tmp_%04d.png or a directory, or a "
+                  "OUT.mp4|.webm|.mkv|.mov|.ogv|.gif|.yuv|.nut, PAGE.html (MP4 + WebM + CSV + an interactive page), "
+                  "frames/tmp_%04d.png or a directory (created if missing), - for standard output (with --format), or a "
                   "still .png/.svg/.pdf with --at (default: SCENE.mp4)");
   cmd->add_option("--size", o->size, "Frame size WxH, e.g. 1920x1080");
   cmd->add_option("--fps", o->fps, "Frames per second");
@@ -132,6 +140,11 @@ void add_render_command(CLI::App& app) {
                   "numbers (PNG); auto: K and N of a Slurm job array; auto/N: K from JOB_COMPLETION_INDEX");
   cmd->add_flag("--skip-existing", o->skip_existing,
                 "Do nothing when the output (or this segment) is already complete at its final path");
+  cmd->add_option("--format", o->video.format,
+                  "With -o - (standard output): y4m (raw frames, for ffplay -), nut or matroska (H.264)");
+  cmd->add_flag("--transparent", o->video.transparent,
+                "No background: PNG with alpha, .webm (VP9 with alpha), .mov (ProRes 4444), SVG/PDF without the "
+                "background rectangle");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or messages");
   cmd->footer(scene_keys_help());
   cmd->callback([o] { run(*o); });

@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/model_help.hpp"
+#include "cli/wrote_message.hpp"
 #include "core/csv_writer.hpp"
 #include "core/error.hpp"
 #include "render/output_error.hpp"
@@ -21,6 +22,7 @@ struct SolveOptions {
   long long every = 1;
   bool energy = false;
   bool help = false;
+  bool quiet = false;
 };
 
 void run_solve(const SolveOptions& o) {
@@ -77,6 +79,7 @@ void run_solve(const SolveOptions& o) {
         throw render::OutputError("writing '" + o.output + "' failed (disk full?): free space or choose another path");
       out = stdout;
       file->commit();
+      say_wrote(o.quiet, o.output);
     }
   } catch (...) {
     close();
@@ -97,6 +100,7 @@ void add_solve_command(CLI::App& app) {
   cmd->add_option("--every", options->every, "Write every K-th step (the last step is always written)");
   cmd->add_flag("--energy", options->energy,
                 "Append the energy E (scheme's own velocity) and E_rel = (E - E(0))/|E(0)|");
+  cmd->add_flag("-q,--quiet", options->quiet, "No message on stderr after writing a file");
   cmd->callback([options] { run_solve(*options); });
 }
 

@@ -23,4 +23,18 @@ std::vector<ConvergenceLevel> convergence_study(const std::function<std::unique_
                                                 const std::function<double(double)>& exact, double dt0,
                                                 int levels);
 
+/// Rates "settle" when the last two agree within this: the errors then follow
+/// one power of dt, the asymptotic range where the rate means the order.
+constexpr double kSettledRateTolerance = 0.05;
+
+/// Whether the study has at least two rates and the last two agree within
+/// kSettledRateTolerance.
+bool rates_settled(const std::vector<ConvergenceLevel>&);
+
+/// As convergence_study, but halves dt until the rates settle (at least
+/// `min_levels` levels) or `max_levels` levels are done, whichever is first.
+std::vector<ConvergenceLevel> convergence_until_settled(
+    const std::function<std::unique_ptr<Trajectory>(double dt)>& make, const std::function<double(double)>& exact,
+    double dt0, int min_levels, int max_levels);
+
 }  // namespace vibra

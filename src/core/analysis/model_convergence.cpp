@@ -7,7 +7,7 @@
 namespace vibra {
 
 ModelConvergence model_convergence(const std::string& model_name, const std::vector<std::string>& settings, int levels) {
-  if (levels < 2 || levels > 20) throw UsageError("--levels must be 2..20 (each level halves dt), e.g. --levels 5");
+  if (levels != 0 && (levels < 2 || levels > 20)) throw UsageError("--levels must be 2..20 (each level halves dt), e.g. --levels 5");
   const ModelDefinition& model = find_model(model_name);
   Parameters base = model_parameters(model);
   for (const auto& s : settings) base.assign(s);
@@ -22,7 +22,11 @@ ModelConvergence model_convergence(const std::string& model_name, const std::vec
 
   auto make = [&](double dt) { return model.build(parameters_with_dt(model, settings, dt)); };
   const SchemeInfo& scheme = scheme_info(info.mesh.scheme);
-  return {std::string(scheme.name), scheme.order, convergence_study(make, info.exact, info.mesh.dt, levels)};
+  ModelConvergence study{std::string(scheme.name), scheme.order,
+                         levels == 0 ? convergence_until_settled(make, info.exact, info.mesh.dt, kAutoMinLevels, kAutoMaxLevels)
+                                     : convergence_study(make, info.exact, info.mesh.dt, levels)};
+  study.settled = rates_settled(study.levels);
+  return study;
 }
 
 }  // namespace vibra
