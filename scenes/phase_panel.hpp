@@ -38,6 +38,10 @@ class PhasePanel final : public ScenePanel {
 
   /// Trail points kept per curve at most.
   static constexpr size_t kTrailPoints = 400;
+  size_t trail_size(size_t curve) const { return trails_[curve].size(); }
+  /// The fixed horizontal range (after finish_recording), and where a point is drawn.
+  std::pair<double, double> x_range() const { return {panel_.x0(), panel_.x1()}; }
+  render::Point pixel_of(double x, double y) const { return panel_.to_pixel(x, y); }
 
  private:
   struct TrailPoint {
