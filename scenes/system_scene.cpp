@@ -18,7 +18,10 @@ SystemScene::SystemScene(int width, int height, const TrajectoryInfo& info, Scen
   if (style_.layout == Layout::fbd) {
     diagram_area_ = {0, 0, double(width), double(height)};
   } else {
-    const double diagram_width = std::min(0.46 * width, 1.0 * height);
+    // Energy bars widen the diagram's area by most of their strip, so the
+    // diagram keeps its size and the panels give up the room.
+    const double bars = bars_ ? EnergyBars::width(scale) : 0;
+    const double diagram_width = std::min((bars_ ? 0.54 : 0.46) * width, 1.0 * height + bars);
     diagram_area_ = {0, 0, diagram_width, double(height)};
     if (specs.empty())
       for (PanelSpec& own : diagram_->panels()) specs.push_back({std::move(own.label), std::move(own.series), {}, {}, {}, 0, {}});
