@@ -73,6 +73,7 @@ QuantityPanelSpec quantity_panel(const std::string& name, const TrajectoryInfo& 
       throw UsageError("this model has no mechanical energy to plot: drop 'energy' from --panels");
     spec.label = "(<i>E</i> − <i>E</i><sub>0</sub>) / |<i>E</i><sub>0</sub>|  energy change";
     spec.curves.push_back(energy_curve(info, color, curve_label));
+    spec.empty_note = "E(0) = 0: no relative change";
   } else if (name == "error") {
     if (!info.exact)
       throw UsageError(std::string("this run has no exact solution to take the error from: drop 'error' from --panels (") +

@@ -92,10 +92,11 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   const render::WorldView view = moving ? render::WorldView(*moving, view_area_) : *view_;
   if (moving) {
     // A following view runs its ground off the sides and the bottom: keep it
-    // out of the panels and off the caption's line.
+    // out of the panels, the energy bars and off the caption's line.
     cairo_save(canvas.cr());
     const double bottom = std::min(diagram_area_.y + diagram_area_.h, view_area_.y + view_area_.h + 16 * canvas.scale());
-    cairo_rectangle(canvas.cr(), diagram_area_.x, diagram_area_.y, diagram_area_.w, bottom - diagram_area_.y);
+    const double right = bars_ ? bars_->area().x - 8 * canvas.scale() : diagram_area_.x + diagram_area_.w;  // off the bars
+    cairo_rectangle(canvas.cr(), diagram_area_.x, diagram_area_.y, right - diagram_area_.x, bottom - diagram_area_.y);
     cairo_clip(canvas.cr());
     diagram_->draw(canvas, view, row);
     cairo_restore(canvas.cr());
