@@ -38,7 +38,7 @@ class EnergyBars {
   explicit EnergyBars(const TrajectoryInfo&);
 
   /// The room the bars take beside a diagram, in pixels at this scale.
-  static double width(double scale) { return 140 * scale; }
+  static double width(double scale) { return 150 * scale; }
 
   /// Pre-pass over every solver row: the scale.
   void record(std::span<const double> row);

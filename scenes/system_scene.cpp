@@ -43,7 +43,7 @@ SystemScene::SystemScene(int width, int height, const TrajectoryInfo& info, Scen
     // their margin beside the narrower view.
     const double strip = EnergyBars::width(scale);
     view_area_.w -= strip;
-    bars_->place({view_area_.x + view_area_.w + side, diagram_area_.y + 12 * scale, strip - 8 * scale,
+    bars_->place({view_area_.x + view_area_.w + side, diagram_area_.y + 12 * scale, strip - 16 * scale,
                   view_area_.y + view_area_.h + 40 * scale - diagram_area_.y - 12 * scale},
                  scale);
   }

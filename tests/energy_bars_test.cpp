@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "cli_support.hpp"
 #include "core/error.hpp"
 #include "scenes/energy_bars.hpp"
 #include "test_support.hpp"
@@ -119,4 +120,10 @@ TEST_CASE("bars for a model without a mechanical energy are refused", "[energy-b
   info.columns = {"t", "u", "v"};
   CHECK_THROWS_AS(EnergyBars(info), UsageError);
   CHECK_THROWS_WITH(EnergyBars(info), Catch::Contains("drop --energy-bars"));
+}
+
+TEST_CASE("energy bars need a diagram to stand beside", "[energy-bars]") {
+  test::check_refused("render pendulum --layout plot --energy-bars --at 1 -o OUT.png", "use --layout fbd or fbd+plot");
+  test::ScratchDirectory dir;
+  CHECK(test::run_vibra("render pendulum --layout fbd --energy-bars --at 1 -q -o " + (dir / "fbd.png")).exit_code == 0);
 }
