@@ -15,8 +15,17 @@ std::string power_of_ten(int exponent) {
   return "10<sup>" + (exponent < 0 ? kMinus + std::to_string(-exponent) : std::to_string(exponent)) + "</sup>";
 }
 
-/// Linear tick labels: plain decimals for everyday magnitudes, else a mantissa
-/// times the power of ten of the largest tick, so 1.2e8 does not print as nine digits.
+/// m x 10^k as a plain decimal when every label is of everyday size, else in powers of ten.
+std::string log_label(int m, int k, bool plain) {
+  if (plain) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", std::max(0, -k), m * std::pow(10.0, k));
+    return buf;
+  }
+  return m == 1 ? power_of_ten(k) : std::to_string(m) + "×" + power_of_ten(k);
+}
+}  // namespace
+
 std::vector<AxisTick> label_linear(const std::vector<double>& values) {
   std::vector<AxisTick> out;
   if (values.empty()) return out;
@@ -33,17 +42,6 @@ std::vector<AxisTick> label_linear(const std::vector<double>& values) {
   }
   return out;
 }
-
-/// m x 10^k as a plain decimal when every label is of everyday size, else in powers of ten.
-std::string log_label(int m, int k, bool plain) {
-  if (plain) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", std::max(0, -k), m * std::pow(10.0, k));
-    return buf;
-  }
-  return m == 1 ? power_of_ten(k) : std::to_string(m) + "×" + power_of_ten(k);
-}
-}  // namespace
 
 bool Axis::shows(double v) const { return std::isfinite(v) && (scale_ == AxisScale::linear || v > 0); }
 

@@ -12,6 +12,10 @@ struct AxisTick {
   std::string label;
 };
 
+/// Labels for linear ticks (1-2-5 steps): plain decimals for everyday
+/// magnitudes, else a mantissa times the power of ten of the largest tick.
+std::vector<AxisTick> label_linear(const std::vector<double>& values);
+
 /// One axis of a figure panel: the range it shows and where a value sits
 /// along it, linearly or by decades. Knows nothing of pixels.
 class Axis {

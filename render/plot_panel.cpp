@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "render/axis.hpp"
 #include "render/text.hpp"
 
 namespace vibra::render {
@@ -69,11 +70,12 @@ Point PlotPanel::to_pixel(double x, double y) const {
 void PlotPanel::draw_axes(Canvas& canvas, const std::string& y_label, const std::string& x_label) const {
   const Stroke grid{palette::grid, 1};
   const TextStyle ticks{kTickFont, palette::ink.with_alpha(0.8)};
-  const double y_step = nice_step(y1_ - y0_, 5), x_step = nice_step(x1_ - x0_, 6);
-  for (double y : nice_ticks(y0_, y1_, 5)) {
-    const Point p = to_pixel(x0_, y);
+  const double x_step = nice_step(x1_ - x0_, 6);
+  // Tiny or huge values (a scheme's energy drift) as a mantissa times a power of ten.
+  for (const AxisTick& y : label_linear(nice_ticks(y0_, y1_, 5))) {
+    const Point p = to_pixel(x0_, y.value);
     draw_pixel_line(canvas, p, {area_.x + area_.w, p.y()}, grid);
-    draw_text(canvas, {area_.x - 6 * scale_, p.y()}, tick_label(y, y_step), ticks, Anchor::right);
+    draw_text(canvas, {area_.x - 6 * scale_, p.y()}, y.label, ticks, Anchor::right);
   }
   for (double x : nice_ticks(x0_, x1_, 6)) {
     const Point p = to_pixel(x, y0_);

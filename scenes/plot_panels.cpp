@@ -44,14 +44,8 @@ std::vector<std::string> default_plot_panels(const TrajectoryInfo& info) {
 
 std::vector<std::string> panel_order(const TrajectoryInfo& info, const std::vector<std::string>& panels) {
   const std::vector<std::string> valid = plot_panel_names(info);
-  for (const auto& name : panels) {
-    if (std::find(valid.begin(), valid.end(), name) != valid.end()) continue;
-    std::string list;
-    for (const auto& v : valid) list += (list.empty() ? "" : ", ") + v;
-    const std::string near = closest_match(name, valid);
-    throw UsageError("unknown panel '" + name + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
-                     ": choose from " + list);
-  }
+  for (const auto& name : panels)
+    if (std::find(valid.begin(), valid.end(), name) == valid.end()) reject_unknown_panel(name, valid);
   if (panels.empty()) throw UsageError("--panels is empty: name at least one panel, e.g. --panels " + valid[0]);
   const std::string& main = info.columns[1];
   std::vector<std::string> order;
@@ -62,11 +56,22 @@ std::vector<std::string> panel_order(const TrajectoryInfo& info, const std::vect
   return order;
 }
 
+void reject_unknown_panel(const std::string& name, const std::vector<std::string>& valid) {
+  std::string list;
+  for (const auto& v : valid) list += (list.empty() ? "" : ", ") + v;
+  const std::string near = closest_match(name, valid);
+  throw UsageError("unknown panel '" + name + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+                   ": choose from " + list);
+}
+
+const char* const kRunsWithExactSolution =
+    "undamped always has one, pendulum with alpha=0 its small-angle solution, two-body a circular orbit";
+
 std::vector<std::string> ordered_plot_panels(const TrajectoryInfo& info, const std::vector<std::string>& panels) {
   std::vector<std::string> order = panel_order(info, panels);
   if (std::find(panels.begin(), panels.end(), "exact") != panels.end() && !info.exact)
-    throw UsageError("this run has no exact solution to overlay: drop 'exact' from --panels (undamped always has one, "
-                     "pendulum with alpha=0 its small-angle solution, two-body a circular orbit)");
+    throw UsageError(std::string("this run has no exact solution to overlay: drop 'exact' from --panels (") +
+                     kRunsWithExactSolution + ")");
   if (!std::isfinite(info.mesh.T)) throw UsageError("a plot needs a finite end time: give T or periods");
   return order;
 }

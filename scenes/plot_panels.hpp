@@ -31,6 +31,13 @@ std::vector<std::string> default_plot_panels(const TrajectoryInfo&);
 /// unknown panel (naming the closest) or an empty list.
 std::vector<std::string> panel_order(const TrajectoryInfo&, const std::vector<std::string>& panels);
 
+/// Throws the UsageError for a panel name not in `valid`: the closest valid
+/// name and the whole list.
+[[noreturn]] void reject_unknown_panel(const std::string& name, const std::vector<std::string>& valid);
+
+/// Which runs have an exact solution, for the message that a panel needs one.
+extern const char* const kRunsWithExactSolution;
+
 /// panel_order, after checking that the run can be plotted: `exact` needs an
 /// exact solution, and a plot needs a finite end time (UsageError otherwise).
 std::vector<std::string> ordered_plot_panels(const TrajectoryInfo&, const std::vector<std::string>& panels);

@@ -12,6 +12,7 @@
 
 #include "core/comparison.hpp"
 #include "core/error.hpp"
+#include "core/word_list.hpp"
 #include "core/models/model.hpp"
 #include "scenes/builtin_scenes.hpp"
 #include "scenes/diagram_registry.hpp"
@@ -105,6 +106,8 @@ const std::vector<KeySpec>& scene_keys() {
       {"compare", ValueKind::text, "", "", "KEY=V1,V2,...: one run per value (up to 8), drawn together", {}, {}},
       {"window", ValueKind::number, "", "time", "plot window: a time, or N periods as 8periods; none = whole run", {}, {}},
       {"window_mode", ValueKind::choice, "movement", "", "drawing, movement or jumps (the moving plot window)", {"drawing", "movement", "jumps"}, {}},
+      {"panels", ValueKind::choice, "", "", "fbd+plot panels: columns, phase, energy, error, period", {}, {}},
+      {"energy_bars", ValueKind::choice, "false", "", "kinetic, potential, dissipated energy beside the diagram", {"true", "false"}, {}},
       {"drag_magnification", ValueKind::number, "5", "", "drag arrow drawn this many times longer", {}, {}},
       {"colors.background", ValueKind::number, "#ffffff", "", "colour #rrggbb", {}, {}},
       {"colors.bob", ValueKind::number, "#0073b3", "", "colour #rrggbb", {}, {}},
@@ -187,6 +190,14 @@ void apply_setting(SceneConfig& c, const Setting& s) {
     } catch (const UsageError& e) {
       throw UsageError(s.origin + ": " + e.what());
     }
+  } else if (k == "panels") {
+    try {
+      c.panels = word_list("panels", s.value);
+    } catch (const UsageError& e) {
+      throw UsageError(s.origin + ": " + e.what());
+    }
+  } else if (k == "energy_bars") {
+    c.energy_bars = parse_bool(s);
   } else if (k == "drag_magnification") {
     c.drag_magnification = parse_number(s);
     if (!(c.drag_magnification > 0) || std::isinf(c.drag_magnification))

@@ -29,6 +29,9 @@ struct SceneConfig {
   /// Plot window: "" = the whole run; a time ("10") or periods ("8periods").
   std::string window;
   WindowMode window_mode = WindowMode::movement;
+  /// Panels beside the diagram (layout fbd+plot), by name; empty = the diagram's own.
+  std::vector<std::string> panels;
+  bool energy_bars = false;  ///< kinetic, potential and dissipated energy beside the diagram
   double drag_magnification = 5;
   SceneColors colors;
   /// "KEY=V1,V2,...": one run per value, drawn together; "" = one run.

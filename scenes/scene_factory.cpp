@@ -1,5 +1,7 @@
 #include "scenes/scene_factory.hpp"
 
+#include <iterator>
+
 #include "core/error.hpp"
 #include "scenes/comparison_diagram.hpp"
 #include "scenes/comparison_labels.hpp"
@@ -28,7 +30,40 @@ SeriesSpec main_series(const MemberColumns& columns, render::Color color) {
   return {"", color, columns.reading([](std::span<const double> row) { return row[1]; })};
 }
 SeriesSpec exact_series(const std::function<double(double)>& exact, render::Color color) {
-  return {"", color.with_alpha(0.8), [exact](std::span<const double> row) { return exact(row[0]); }, true};
+  return {"", color.with_alpha(0.8), [exact](std::span<const double> row) { return exact(row[0]); }, true, exact};
+}
+void check_panel_options(const SceneConfig& config) {
+  if (!config.panels.empty() && config.layout != Layout::fbd_plot)
+    throw UsageError("panels are drawn beside the diagram: use --layout fbd+plot, or drop --panels");
+  if (config.energy_bars && (config.layout == Layout::plot || config.layout == Layout::grid))
+    throw UsageError("energy bars stand beside the diagram: use --layout fbd or fbd+plot, or drop --energy-bars");
+}
+
+/// A comparison's panel `name`: each member's curves (or phase curves) in its
+/// colour, read from its columns; the references (exact solution, exact
+/// period) once in ink when the members solve one problem, else each member's
+/// in its colour.
+QuantityPanelSpec comparison_panel(const std::string& name, const Comparison& comparison,
+                                   const std::vector<MemberColumns>& columns, const std::vector<LegendEntry>& legend) {
+  QuantityPanelSpec combined;
+  for (size_t i = 0; i < columns.size(); ++i) {
+    const bool shared = comparison.same_problem();
+    QuantityPanelSpec member = quantity_panel(name, comparison.trajectory(i).info(), legend[i].color, "",
+                                              shared ? render::palette::ink : legend[i].color);
+    if (i == 0) {
+      combined.label = member.label, combined.x_label = member.x_label;
+      combined.least_span = member.least_span, combined.empty_note = member.empty_note;
+    }
+    for (SeriesSpec& c : member.curves) c.value = columns[i].reading(std::move(c.value)), c.label.clear();
+    for (SeriesSpec& r : member.references) r.value = columns[i].reading(std::move(r.value)), r.label.clear();
+    for (PhaseCurveSpec& c : member.phase)
+      c.x = columns[i].reading(std::move(c.x)), c.y = columns[i].reading(std::move(c.y)), c.label.clear();
+    std::move(member.curves.begin(), member.curves.end(), std::back_inserter(combined.curves));
+    std::move(member.phase.begin(), member.phase.end(), std::back_inserter(combined.phase));
+    if (!shared || i == 0)
+      std::move(member.references.begin(), member.references.end(), std::back_inserter(combined.references));
+  }
+  return combined;
 }
 }  // namespace
 
@@ -36,14 +71,19 @@ std::unique_ptr<Scene> make_scene(const SceneConfig& config, const TrajectoryInf
   if (config.layout == Layout::grid)
     throw UsageError("layout grid draws a comparison's members in a panel each: add --compare KEY=V1,V2,... "
                      "or choose fbd, fbd+plot or plot");
+  check_panel_options(config);
   const SceneStyle style = style_of(config, info, caption);
   if (config.layout == Layout::plot)
     return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style,
                                        std::vector{main_quantity_panel(style, info.columns[1], info.exact, info.exact_label)});
   const DiagramKind& kind = diagram_for(config);
   const Parameters parameters = model_parameters_of(config);
-  return std::make_unique<SystemScene>(config.width, config.height, info.mesh.T, style,
-                                       kind.make({config, parameters, info}));
+  std::vector<QuantityPanelSpec> panels;
+  for (const auto& name : config.panels)
+    panels.push_back(quantity_panel(name, info, config.colors.bob, "", render::palette::vermillion));
+  std::unique_ptr<EnergyBars> bars = config.energy_bars ? std::make_unique<EnergyBars>(info) : nullptr;
+  return std::make_unique<SystemScene>(config.width, config.height, info, style, kind.make({config, parameters, info}),
+                                       std::move(panels), std::move(bars));
 }
 
 std::unique_ptr<Trajectory> build_scene_runs(const SceneConfig& config) {
@@ -61,6 +101,7 @@ std::unique_ptr<Scene> make_scene_for(const SceneConfig& config, const Trajector
 
 std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const ComparisonTrajectory& runs,
                                              const std::string& caption) {
+  check_panel_options(config);
   const Comparison& comparison = runs.comparison();
   const TrajectoryInfo& info = runs.info();
   const SceneStyle style = style_of(config, info, caption);
@@ -99,6 +140,10 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
     return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style, std::move(panels));
   }
 
+  if (config.energy_bars)
+    throw UsageError("energy bars show one run's energy: drop --energy-bars, or --compare");
+  std::vector<QuantityPanelSpec> panels;
+  for (const auto& name : config.panels) panels.push_back(comparison_panel(name, comparison, columns, legend));
   const DiagramKind& kind = diagram_for(config);
   std::vector<ComparisonDiagram::Member> members;
   for (size_t i = 0; i < columns.size(); ++i) {
@@ -108,8 +153,8 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
                        std::move(legend[i])});
   }
   return std::make_unique<SystemScene>(
-      config.width, config.height, info.mesh.T, style,
-      std::make_unique<ComparisonDiagram>(std::move(members), shared_exact, first.exact_label));
+      config.width, config.height, info, style,
+      std::make_unique<ComparisonDiagram>(std::move(members), shared_exact, first.exact_label), std::move(panels));
 }
 
 }  // namespace vibra::scenes

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "render/text.hpp"
 
 namespace vibra::scenes {
 
@@ -36,14 +37,17 @@ void SeriesPanel::record(std::span<const double> row) {
   for (size_t i = 0; i < series_.size(); ++i) {
     const double v = series_[i].value(row);
     if (!std::isfinite(v)) continue;
+    if (i == 0) first_curve_seen_ = true;
     lo_ = std::min(lo_, v), hi_ = std::max(hi_, v);
     if (mode_ == WindowMode::whole_run) whole_[i].add(row[0], v);
   }
 }
 
 void SeriesPanel::observe(std::span<const double> row) {
-  for (size_t i = 0; i < recent_.size(); ++i)
-    if (!series_[i].of_time) recent_[i].add(row[0], series_[i].value(row));
+  for (size_t i = 0; i < recent_.size(); ++i) {
+    if (series_[i].of_time) continue;  // drawn from its function of t
+    if (const double v = series_[i].value(row); std::isfinite(v)) recent_[i].add(row[0], v);
+  }
 }
 
 void SeriesPanel::finish_recording() {
@@ -56,6 +60,10 @@ void SeriesPanel::finish_recording() {
         if (std::isfinite(v)) lo_ = std::min(lo_, v), hi_ = std::max(hi_, v);
       }
   if (lo_ > hi_) lo_ = -1, hi_ = 1;
+  if (hi_ - lo_ < least_span_) {
+    const double middle = 0.5 * (lo_ + hi_);
+    lo_ = middle - 0.5 * least_span_, hi_ = middle + 0.5 * least_span_;
+  }
   panel_.set_y_range(lo_, hi_);
 }
 
@@ -76,6 +84,11 @@ void SeriesPanel::draw_axes(render::Canvas& canvas, bool time_labels) const {
   for (const auto& s : series_)
     if (!s.label.empty()) legend.emplace_back(s.label, s.color);
   if (legend.size() > 1) panel_.draw_legend(canvas, legend);
+  if (!first_curve_seen_ && !empty_note_.empty()) {
+    render::TextStyle style{15, render::palette::ink.with_alpha(0.8)};
+    style.halo = true;
+    render::draw_text(canvas, panel_.area().center(), empty_note_, style);
+  }
 }
 
 void SeriesPanel::draw_static(render::Canvas& canvas, bool time_labels) const {
@@ -107,8 +120,9 @@ void SeriesPanel::draw_progress(render::Canvas& layer, double t, bool from_start
 }
 
 void SeriesPanel::draw(render::Canvas& canvas, double t, std::span<const double> row, bool time_labels) const {
+  const double cursor = series_[0].value(row);
   if (mode_ == WindowMode::whole_run) {
-    panel_.draw_cursor(canvas, t, series_[0].value(row), series_[0].color);
+    if (std::isfinite(cursor)) panel_.draw_cursor(canvas, t, cursor, series_[0].color);
     return;
   }
   const auto [x0, x1] = window_at(t);
@@ -132,7 +146,7 @@ void SeriesPanel::draw(render::Canvas& canvas, double t, std::span<const double>
     render::draw_pixel_polyline(canvas, points, {series_[i].color, 2.4, series_[i].dashed});
   }
   cairo_restore(canvas.cr());
-  if (mode_ != WindowMode::jumps) panel_.draw_cursor(canvas, t, series_[0].value(row), series_[0].color);
+  if (mode_ != WindowMode::jumps && std::isfinite(cursor)) panel_.draw_cursor(canvas, t, cursor, series_[0].color);
 }
 
 }  // namespace vibra::scenes

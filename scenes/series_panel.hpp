@@ -8,6 +8,7 @@
 #include "render/column_envelope.hpp"
 #include "render/plot_panel.hpp"
 #include "render/rolling_envelope.hpp"
+#include "scenes/scene_panel.hpp"
 
 namespace vibra::scenes {
 
@@ -36,32 +37,39 @@ struct SeriesSpec {
 };
 
 /// A plot panel of one or more curves against time, fed a solution row at a
-/// time. Memory is one envelope cell per pixel column, whatever the run:
+/// time. A curve's value may be NaN where it has none (a period not yet
+/// measured): nothing is drawn there. Memory is one envelope cell per pixel column, whatever the run:
 /// whole_run keeps one envelope over [0, T] (filled by record() in a
 /// pre-pass); window modes keep the newest two windows (filled by observe()).
-class SeriesPanel {
+class SeriesPanel final : public ScenePanel {
  public:
   SeriesPanel(const render::PixelRect& outer, double scale, std::string y_label, std::vector<SeriesSpec> series,
               double t_end, WindowMode mode, double window);
 
   /// Pre-pass over the whole run: the y range (fixed for every frame) and, for
   /// whole_run, the curves.
-  void record(std::span<const double> row);
+  void record(std::span<const double> row) override;
   /// Live, for every solver step up to the frame being drawn (window modes).
-  void observe(std::span<const double> row);
+  void observe(std::span<const double> row) override;
   /// Fixes the y range after the pre-pass.
-  void finish_recording();
+  void finish_recording() override;
+  /// The y range spans at least this much about the curves' middle (before
+  /// finish_recording), so a nearly flat curve is not blown up to fill it.
+  void set_least_span(double span) { least_span_ = span; }
+  /// Shown in the panel when the pre-pass found no value of the first curve
+  /// (e.g. no period completed), so an empty panel says why.
+  void set_empty_note(std::string note) { empty_note_ = std::move(note); }
 
   /// Whether draw_static() holds everything that does not change per frame.
   bool has_static_axes() const { return mode_ == WindowMode::whole_run; }
   /// Axes and faint whole-run curves (whole_run only).
-  void draw_static(render::Canvas&, bool time_labels) const;
+  void draw_static(render::Canvas&, bool time_labels) const override;
   /// whole_run: extends the curves drawn on `layer` up to time t (from t = 0
   /// when `from_start`). The layer keeps them, so each frame adds a column or two.
-  void draw_progress(render::Canvas& layer, double t, bool from_start);
+  void draw_progress(render::Canvas& layer, double t, bool from_start) override;
   /// The dynamic part at time t: the cursor, and for window modes the axes
   /// and curves too (they move). `row` is the solution at t.
-  void draw(render::Canvas&, double t, std::span<const double> row, bool time_labels) const;
+  void draw(render::Canvas&, double t, std::span<const double> row, bool time_labels) const override;
   /// The panel's axes and mapping as last drawn (for tests and overlays).
   const render::PlotPanel& plot() const { return panel_; }
 
@@ -78,6 +86,9 @@ class SeriesPanel {
   std::vector<render::ColumnEnvelope> whole_;
   std::vector<render::RollingEnvelope> recent_;
   double lo_ = 1e300, hi_ = -1e300;
+  double least_span_ = 0;
+  std::string empty_note_;
+  bool first_curve_seen_ = false;
   int progress_column_ = 0;  ///< whole_run: curves are drawn on the layer up to here
 };
 

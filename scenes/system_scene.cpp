@@ -6,24 +6,33 @@
 
 namespace vibra::scenes {
 
-SystemScene::SystemScene(int width, int height, double t_end, SceneStyle style, std::unique_ptr<Diagram> diagram)
+SystemScene::SystemScene(int width, int height, const TrajectoryInfo& info, SceneStyle style,
+                         std::unique_ptr<Diagram> diagram, std::vector<QuantityPanelSpec> specs,
+                         std::unique_ptr<EnergyBars> bars)
     : height_(height),
       style_(std::move(style)),
       diagram_(std::move(diagram)),
       legend_(diagram_->legend(), height),
+      bars_(std::move(bars)),
       background_([this](render::Canvas& c) { draw_static(c); }) {
   const double scale = render::scale_for_height(height);
   if (style_.layout == Layout::fbd) {
     diagram_area_ = {0, 0, double(width), double(height)};
   } else {
-    const double diagram_width = std::min(0.46 * width, 1.0 * height);
+    // Energy bars widen the diagram's area by most of their strip, so the
+    // diagram keeps its size and the panels give up the room.
+    const double bars = bars_ ? EnergyBars::width(scale) : 0;
+    const double diagram_width = std::min((bars_ ? 0.54 : 0.46) * width, 1.0 * height + bars);
     diagram_area_ = {0, 0, diagram_width, double(height)};
-    std::vector<PanelSpec> specs = diagram_->panels();
+    if (specs.empty())
+      for (PanelSpec& own : diagram_->panels()) specs.push_back({std::move(own.label), std::move(own.series), {}, {}, {}, 0, {}});
     const double x = diagram_width, w = width - diagram_width - 10 * scale, top = 10 * scale;
     const double h = (height - top - 10 * scale) / std::max<size_t>(1, specs.size());
-    for (size_t i = 0; i < specs.size(); ++i)
-      panels_.emplace_back(render::PixelRect{x, top + i * h, w, h}, scale, std::move(specs[i].label),
-                           std::move(specs[i].series), t_end, style_.window_mode, style_.window);
+    for (size_t i = 0; i < specs.size(); ++i) {
+      panels_.push_back(make_scene_panel(std::move(specs[i]), info, render::PixelRect{x, top + i * h, w, h}, scale,
+                                         style_.window_mode, style_.window));
+      if (panels_.back()->against_time()) time_labels_panel_ = i;
+    }
   }
   // Room for arrow labels and the read-out at the top; the caption's line at
   // the bottom comes below the lowest arrow's label.
@@ -31,24 +40,35 @@ SystemScene::SystemScene(int width, int height, double t_end, SceneStyle style, 
   // A legend too wide for a small frame overlaps the drawing rather than squeeze it away.
   const double view_width = std::max(diagram_area_.w - 2 * side - legend_.width(), 0.3 * diagram_area_.w);
   view_area_ = {diagram_area_.x + side, diagram_area_.y + top, view_width, diagram_area_.h - top - bottom};
+  if (bars_) {
+    // The bars take a strip at the diagram's right; the arrows' labels keep
+    // their margin beside the narrower view.
+    const double strip = EnergyBars::width(scale);
+    view_area_.w -= strip;
+    bars_->place({view_area_.x + view_area_.w + side, diagram_area_.y + 12 * scale, strip - 16 * scale,
+                  view_area_.y + view_area_.h + 40 * scale - diagram_area_.y - 12 * scale},
+                 scale);
+  }
   world_.setEmpty();
 }
 
 void SystemScene::record(std::span<const double> row) {
   diagram_->record(row, world_);
   legend_.record(row);
-  for (auto& panel : panels_) panel.record(row);
+  for (auto& panel : panels_) panel->record(row);
+  if (bars_) bars_->record(row);
 }
 
 void SystemScene::observe(std::span<const double> row) {
-  for (auto& panel : panels_) panel.observe(row);
+  for (auto& panel : panels_) panel->observe(row);
+  if (bars_) bars_->observe(row);
 }
 
 void SystemScene::prepare() {
   if (view_) return;
   diagram_->finish_recording(world_);
   view_.emplace(world_, view_area_);
-  for (auto& panel : panels_) panel.finish_recording();
+  for (auto& panel : panels_) panel->finish_recording();
 }
 
 render::WorldView SystemScene::view_at(std::span<const double> row) {
@@ -59,7 +79,7 @@ render::WorldView SystemScene::view_at(std::span<const double> row) {
 
 void SystemScene::draw_static(render::Canvas& canvas) {
   canvas.clear(style_.colors.background);
-  for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw_static(canvas, i + 1 == panels_.size());
+  for (size_t i = 0; i < panels_.size(); ++i) panels_[i]->draw_static(canvas, i == time_labels_panel_);
   diagram_->draw_static(canvas, *view_);
   if (!legend_.empty()) legend_.draw_static(canvas, legend_corner(canvas.scale()));
   if (!style_.caption.empty())
@@ -71,18 +91,19 @@ void SystemScene::draw_static(render::Canvas& canvas) {
 void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   prepare();
   background_.paint(canvas, progress_to(row[0]));
-  for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw(canvas, row[0], row, i + 1 == panels_.size());
+  for (size_t i = 0; i < panels_.size(); ++i) panels_[i]->draw(canvas, row[0], row, i == time_labels_panel_);
   const std::optional<WorldBox> moving = diagram_->view_at(row);
   const render::WorldView view = moving ? render::WorldView(*moving, view_area_) : *view_;
   if (moving || !legend_.empty()) {
     // A following view runs its ground off the sides and the bottom, and a
     // comparison's run that blows up leaves the view: keep them out of the
-    // panels, the legend and the caption's line.
+    // panels, the legend, the energy bars and the caption's line.
     cairo_save(canvas.cr());
     const render::PixelRect area = drawing_area();
     const double bottom =
         moving ? std::min(area.y + area.h, view_area_.y + view_area_.h + 16 * canvas.scale()) : area.y + area.h;
-    cairo_rectangle(canvas.cr(), area.x, area.y, area.w, bottom - area.y);
+    const double right = bars_ ? bars_->area().x - 8 * canvas.scale() : area.x + area.w;
+    cairo_rectangle(canvas.cr(), area.x, area.y, right - area.x, bottom - area.y);
     cairo_clip(canvas.cr());
     diagram_->draw(canvas, view, row);
     cairo_restore(canvas.cr());
@@ -90,6 +111,7 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
     diagram_->draw(canvas, view, row);
   }
   if (!legend_.empty()) legend_.draw(canvas, legend_corner(canvas.scale()), row[0]);
+  if (bars_) bars_->draw(canvas, row);
   draw_readout(canvas, diagram_area_, row[0], style_);
 }
 
@@ -109,7 +131,7 @@ render::Point SystemScene::legend_corner(double scale) const {
 
 StaticLayer::Grow SystemScene::progress_to(double t) {
   return [this, t](render::Canvas& layer, bool from_start) {
-    for (auto& panel : panels_) panel.draw_progress(layer, t, from_start);
+    for (auto& panel : panels_) panel->draw_progress(layer, t, from_start);
   };
 }
 

@@ -3,24 +3,30 @@
 #include <optional>
 #include <vector>
 
+#include "core/trajectory.hpp"
 #include "scenes/diagram.hpp"
+#include "scenes/energy_bars.hpp"
+#include "scenes/quantity_panels.hpp"
 #include "scenes/run_legend.hpp"
 #include "scenes/scene.hpp"
+#include "scenes/scene_panel.hpp"
 #include "scenes/scene_style.hpp"
-#include "scenes/series_panel.hpp"
 #include "scenes/static_layer.hpp"
 
 namespace vibra::scenes {
 
-/// A system's diagram alone (layout fbd) or beside stacked panels of its own
-/// quantities against time with a cursor at the current time (fbd+plot),
-/// with the time read-out and the caption. The view is fixed over the run
+/// A system's diagram alone (layout fbd) or beside stacked panels (fbd+plot:
+/// the diagram's own quantities against time with a cursor at the current
+/// time, or the panels chosen), with the time read-out, the caption and,
+/// when asked, energy bars at the diagram's side. The view is fixed over the run
 /// from the pre-pass, so nothing jumps and nothing is clipped, unless the
 /// diagram follows its body (a vehicle on a long road). A comparison's
 /// diagram brings a legend of its runs, which gets a column of its own.
 class SystemScene final : public Scene {
  public:
-  SystemScene(int width, int height, double t_end, SceneStyle, std::unique_ptr<Diagram>);
+  /// `panels` empty: the diagram's own. `bars` null: none.
+  SystemScene(int width, int height, const TrajectoryInfo&, SceneStyle, std::unique_ptr<Diagram>,
+              std::vector<QuantityPanelSpec> panels = {}, std::unique_ptr<EnergyBars> bars = nullptr);
 
   void record(std::span<const double> row) override;
   void observe(std::span<const double> row) override;
@@ -48,7 +54,9 @@ class SystemScene final : public Scene {
 
   render::PixelRect diagram_area_, view_area_;
   RunLegend legend_;
-  std::vector<SeriesPanel> panels_;
+  std::vector<std::unique_ptr<ScenePanel>> panels_;
+  size_t time_labels_panel_ = 0;  ///< the lowest panel against time labels the time axis
+  std::unique_ptr<EnergyBars> bars_;
   WorldBox world_;
   std::optional<render::WorldView> view_;
   StaticLayer background_;

@@ -8,17 +8,6 @@
 
 namespace vibra::app {
 
-std::vector<std::string> word_list(const std::string& option, const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) {
-    std::erase(item, ' ');
-    if (!item.empty()) out.push_back(item);
-  }
-  if (out.empty()) throw UsageError(option + " is empty: give a comma-separated list");
-  return out;
-}
-
 std::vector<double> positive_list(const std::string& option, const std::string& text) {
   std::vector<double> out;
   for (const auto& item : word_list(option, text)) {

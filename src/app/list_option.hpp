@@ -2,11 +2,11 @@
 #include <string>
 #include <vector>
 
+#include "core/word_list.hpp"
+
 namespace vibra::app {
 
-/// A comma-separated option value as words (spaces dropped); throws
-/// UsageError naming `option` when it is empty.
-std::vector<std::string> word_list(const std::string& option, const std::string& text);
+using vibra::word_list;
 
 /// A comma-separated list of numbers, each > 0 and possibly an expression
 /// such as 2*pi/40; throws UsageError naming `option` and the bad item.

@@ -27,6 +27,8 @@ struct RenderOptions {
   long long every = 1;
   std::string window, window_mode;
   std::string compare;
+  std::string panels;
+  bool energy_bars = false;
   std::optional<double> at;
   std::string segment;
   bool skip_existing = false;
@@ -58,6 +60,7 @@ std::string scene_keys_help() {
          "  vibra render pendulum_book -o frames/tmp_%04d.png\n"
          "  vibra render --set Theta=40 --set alpha=0.8 -o lecture.webm\n"
          "  vibra render --at 3.2 -o still.svg\n"
+         "  vibra render spring_dashpot --panels u,phase,energy --energy-bars --at 5 -o still.png\n"
          "  vibra render --segment 1/3 -o lecture.mp4             # lecture.seg-1-of-3.mp4; then vibra concat\n"
          "  vibra render --set periods=40 -o lecture.html        # video, zoomable plots, CSV\n"
          "  vibra render spring --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 -o schemes.mp4\n"
@@ -86,6 +89,8 @@ void run(const RenderOptions& o) {
   flag("window", o.window, "--window");
   flag("window_mode", o.window_mode, "--window-mode");
   flag("compare", o.compare, "--compare");
+  flag("panels", o.panels, "--panels");
+  if (o.energy_bars) request.scene.energy_bars = true;
   if (o.frame_per_step) request.scene.frame_per_step = true;
   request.output = o.output.empty() ? request.scene.name + ".mp4" : o.output;
   request.at = o.at;
@@ -124,6 +129,12 @@ void add_render_command(CLI::App& app) {
                   "together: the first solid, the others as ghosts in their own colours, a curve each in every panel");
   cmd->add_option("--window", o->window, "Plot window: a time or N periods (8periods); default the whole run");
   cmd->add_option("--window-mode", o->window_mode, "drawing, movement (default) or jumps");
+  cmd->add_option("--panels", o->panels,
+                  "Panels beside the diagram, top to bottom (layout fbd+plot): the model's columns, phase (the main "
+                  "quantity against its velocity), energy ((E - E0)/|E0|), error (against the exact solution), period "
+                  "(each measured period against the exact one); default: the system's own");
+  cmd->add_flag("--energy-bars", o->energy_bars,
+                "Kinetic, potential and dissipated energy as bars beside the diagram, on one scale over the run");
   cmd->add_flag("--frames-player", o->frames_player, "With -o PAGE.html: PNG frames and a page that steps through them");
   cmd->add_option("--every", o->every, "With -o PAGE.html: the CSV beside the page keeps every K-th step (and the last)");
   cmd->add_option("--at", o->at, "Render one still at this time");

@@ -32,6 +32,10 @@ struct TrajectoryInfo {
   /// the energy is not conserved: E - E(0) then includes the force's work.
   EnergyFunction energy;
   std::string energy_unit;  ///< what the energy is measured in, e.g. "m g L"
+  /// The power of the external force (F·v from a row, in the energy's unit
+  /// per time unit): its integral is the work in E - E(0). Empty for a model
+  /// without an external force.
+  std::function<double(std::span<const double> row)> forcing_power;
 };
 
 /// The column holding the main quantity's velocity: v<name> where the model

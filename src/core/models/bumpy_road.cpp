@@ -68,6 +68,10 @@ ModelDefinition bumpy_road_model() {
       return EnergyParts{0.5 * mass * row[2] * row[2], 0.5 * k * row[1] * row[1]};
     };
     info.energy_unit = "J";
+    // The road pushes the body with -m h''(x) speed^2 relative to the wheel.
+    info.forcing_power = [road, mass, speed](std::span<const double> row) {
+      return -mass * road->curvature(speed * row[0]) * speed * speed * row[2];
+    };
     auto system = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::general(
         [road, k, mass, speed](const Vec<1>& u, double t) {
           return Vec<1>(-k / mass * u[0] - road->curvature(speed * t) * speed * speed);

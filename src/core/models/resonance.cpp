@@ -61,6 +61,7 @@ ModelDefinition resonance_model() {
     // the forcing's work makes it change even without damping.
     info.energy = [](std::span<const double> row) { return EnergyParts{0.5 * row[2] * row[2], 0.5 * row[1] * row[1]}; };
     info.energy_unit = "k (static deflection)^2";
+    info.forcing_power = [gamma](std::span<const double> row) { return std::sin(gamma * row[0]) * row[2]; };
     auto system = std::make_shared<SecondOrderSystem<1>>(SecondOrderSystem<1>::general(
         [gamma](const Vec<1>& u, double t) { return Vec<1>(std::sin(gamma * t) - u[0]); }));
     system->damping = beta > 0 ? Damping::linear : Damping::none;

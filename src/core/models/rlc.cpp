@@ -50,6 +50,7 @@ ModelDefinition rlc_model() {
       return EnergyParts{0.5 * L * row[2] * row[2], 0.5 * inverse_C * row[1] * row[1]};
     };
     info.energy_unit = "J";
+    if (law.F) info.forcing_power = [law](std::span<const double> row) { return law.external(row[0]) * row[2]; };
     if (!law.F) info.amplitude_bound = std::sqrt(q0 * q0 + I0 * I0 / (w * w));
     return std::make_unique<SecondOrderTrajectory<1>>(law.system(), Vec<1>(q0), Vec<1>(I0), info,
                                                       [law](const Sample<1>& x, std::span<double> out) {

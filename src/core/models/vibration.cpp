@@ -74,6 +74,7 @@ ModelDefinition vibration_model() {
       return EnergyParts{0.5 * mass * row[2] * row[2], potential(row[1])};
     };
     info.energy_unit = "mass length^2/time^2";
+    if (law.F) info.forcing_power = [law](std::span<const double> row) { return law.external(row[0]) * row[2]; };
     // Without forcing the energy never grows, so it bounds the amplitude.
     if (!law.F) {
       const double E0 = 0.5 * law.mass * V * V + potential(I);

@@ -1,0 +1,129 @@
+// Energy bars: kinetic, potential and dissipated energy add up to E(0) plus
+// the forcing's work, dissipated stays 0 without damping, and the bars stay
+// inside their area.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "cli_support.hpp"
+#include "core/error.hpp"
+#include "scenes/energy_bars.hpp"
+#include "test_support.hpp"
+
+using namespace vibra;
+using scenes::EnergyBars;
+
+namespace {
+/// Bars fed a whole run as a render feeds them: the pre-pass, then the steps again.
+struct FedBars {
+  std::vector<std::vector<double>> rows;
+  EnergyBars bars;
+  explicit FedBars(Trajectory& run) : rows(test::rows(run)), bars(run.info()) {
+    for (const auto& row : rows) bars.record(row);
+  }
+};
+
+double total(const scenes::EnergyBudget& b) { return b.kinetic + b.potential + b.dissipated; }
+}  // namespace
+
+TEST_CASE("an unforced damped run's bars add up to E(0), dissipated growing to what was lost", "[energy-bars]") {
+  for (const std::string model : {"vibration", "pendulum", "sliding-box"}) {
+    INFO(model);
+    auto run = test::trajectory(model, model == "vibration" ? std::vector<std::string>{"b=0.3", "periods=4"}
+                                                             : std::vector<std::string>{"periods=4"});
+    REQUIRE(run->info().damped);
+    FedBars fed(*run);
+    const double E0 = run->info().energy(fed.rows[0]).total();
+    for (const auto& row : fed.rows) {
+      fed.bars.observe(row);
+      CHECK(total(fed.bars.at(row)) == Approx(E0).epsilon(1e-12));
+    }
+    const auto last = fed.bars.at(fed.rows.back());
+    CHECK(last.dissipated > 0.3 * E0);  // a real loss over four periods
+    CHECK(last.dissipated == Approx(E0 - run->info().energy(fed.rows.back()).total()).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("dissipated stays 0 without damping, forced or not", "[energy-bars]") {
+  struct Case {
+    std::string model;
+    std::vector<std::string> settings;
+    double tolerance;  ///< of max energy: the scheme's error in E, and the work's quadrature
+  };
+  // RK4 loses energy as (w dt)^4: 1e-7 at 400 steps a period. The work's
+  // trapezoidal rule is second order: 1e-5 here (its order is tested below).
+  for (const Case& c : {Case{"undamped", {"scheme=rk4", "steps_per_period=400", "periods=5"}, 1e-7},
+                        Case{"vibration", {"b=0", "F=0.5*cos(0.7*t)", "scheme=rk4", "steps_per_period=400", "periods=5"}, 3e-5},
+                        Case{"resonance", {"beta=0", "scheme=rk4", "steps_per_period=400", "periods=5"}, 3e-5}}) {
+    INFO(c.model);
+    auto run = test::trajectory(c.model, c.settings);
+    REQUIRE(!run->info().damped);
+    FedBars fed(*run);
+    double largest_E = 0, worst = 0, moved = 0;
+    for (const auto& row : fed.rows) {
+      fed.bars.observe(row);
+      const auto b = fed.bars.at(row);
+      largest_E = std::max(largest_E, std::abs(b.kinetic + b.potential));
+      worst = std::max(worst, std::abs(b.dissipated));
+      moved = std::max(moved, std::abs(b.kinetic + b.potential - run->info().energy(fed.rows[0]).total()));
+    }
+    CHECK(worst < c.tolerance * largest_E);
+    if (c.model != "undamped") CHECK(moved > 0.1 * largest_E);  // the force did real work
+  }
+}
+
+TEST_CASE("the forcing's work converges at second order in dt (trapezoidal rule)", "[energy-bars]") {
+  auto dissipated_at_end = [](int steps) {
+    auto run = test::trajectory("vibration", {"b=0", "F=cos(0.7*t)", "scheme=rk4", "steps_per_period=" + std::to_string(steps),
+                                              "periods=3"});
+    FedBars fed(*run);
+    for (const auto& row : fed.rows) fed.bars.observe(row);
+    return std::abs(fed.bars.at(fed.rows.back()).dissipated);
+  };
+  const double coarse = dissipated_at_end(40), fine = dissipated_at_end(80);
+  CHECK(coarse > 1e-6);
+  CHECK(coarse / fine == Approx(4).epsilon(0.15));
+}
+
+TEST_CASE("bars never leave their area, between steps included", "[energy-bars]") {
+  for (const std::string model : {"vibration", "two-body", "bouncing-ball", "pendulum"}) {
+    INFO(model);
+    auto run = test::trajectory(model, model == "vibration" ? std::vector<std::string>{"b=0.2", "F=cos(t)"}
+                                                             : std::vector<std::string>{});
+    FedBars fed(*run);
+    fed.bars.place({100, 50, 120, 400}, 1);
+    const render::PixelRect inner = fed.bars.bars_area();
+    CHECK(inner.x >= 100);
+    CHECK(inner.y >= 50);
+    CHECK(inner.y + inner.h <= 450);
+    auto between = test::trajectory(model, model == "vibration" ? std::vector<std::string>{"b=0.2", "F=cos(t)"}
+                                                                 : std::vector<std::string>{});
+    std::vector<double> row(between->width());
+    do {
+      between->row(row);
+      fed.bars.observe(row);
+      between->row_at(between->t() - 0.37 * between->info().mesh.dt, row);  // a frame between two steps
+      const auto px = fed.bars.bar_pixels(row);
+      for (int i = 0; i < 3; ++i) {
+        CHECK(px.top[i] >= inner.y);
+        CHECK(px.bottom[i] <= inner.y + inner.h);
+        CHECK(px.top[i] <= px.bottom[i]);
+      }
+    } while (between->advance());
+    CHECK(fed.bars.lo() <= 0);
+    CHECK(fed.bars.hi() >= 0);
+  }
+}
+
+TEST_CASE("bars for a model without a mechanical energy are refused", "[energy-bars]") {
+  TrajectoryInfo info;
+  info.columns = {"t", "u", "v"};
+  CHECK_THROWS_AS(EnergyBars(info), UsageError);
+  CHECK_THROWS_WITH(EnergyBars(info), Catch::Contains("drop --energy-bars"));
+}
+
+TEST_CASE("energy bars need a diagram to stand beside", "[energy-bars]") {
+  test::check_refused("render pendulum --layout plot --energy-bars --at 1 -o OUT.png", "use --layout fbd or fbd+plot");
+  test::ScratchDirectory dir;
+  CHECK(test::run_vibra("render pendulum --layout fbd --energy-bars --at 1 -q -o " + (dir / "fbd.png")).exit_code == 0);
+}

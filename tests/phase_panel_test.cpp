@@ -1,0 +1,41 @@
+// The phase-plane panel: fixed ranges from the pre-pass, a trail of bounded
+// length, the current point drawn where the row puts it.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "scenes/phase_panel.hpp"
+#include "test_support.hpp"
+
+using namespace vibra;
+
+TEST_CASE("the phase panel draws the current point at (u, v) and keeps a bounded trail", "[panels][phase]") {
+  auto run = test::trajectory("undamped", {"scheme=forward-euler", "steps_per_period=400", "periods=60"});
+  const auto rows = test::rows(*run);
+  const render::Color color = render::palette::blue;
+  scenes::PhasePanel panel({0, 0, 400, 300}, 1, "<i>u</i>", "<i>v</i>",
+                           {{"", color, [](std::span<const double> r) { return r[1]; },
+                             [](std::span<const double> r) { return r[2]; }}},
+                           run->info().mesh.period);
+  for (const auto& row : rows) panel.record(row);
+  panel.finish_recording();
+  // Forward Euler spirals outward: the fixed range holds the largest turn.
+  const auto [x0, x1] = panel.x_range();
+  CHECK(x1 >= std::abs(rows.back()[1]));
+  CHECK(x0 < -1);
+  for (const auto& row : rows) panel.observe(row);
+  CHECK(panel.trail_size(0) <= scenes::PhasePanel::kTrailPoints + 1);
+  CHECK(panel.trail_size(0) > scenes::PhasePanel::kTrailPoints / 2);
+
+  render::Canvas canvas = render::Canvas::image(400, 300);
+  canvas.clear(render::palette::paper);
+  panel.draw_static(canvas, false);
+  const auto& now = rows[rows.size() * 2 / 3];
+  panel.draw(canvas, now[0], now, false);
+  canvas.flush();
+  const render::Point p = panel.pixel_of(now[1], now[2]);
+  const auto word = *reinterpret_cast<const std::uint32_t*>(canvas.data() + int(p.y()) * canvas.stride() + 4 * int(p.x()));
+  const int red = (word >> 16) & 255, blue = word & 255;
+  CHECK(std::abs(blue - 0.70 * 255) < 30);  // the point's blue, not paper
+  CHECK(red < 60);
+}

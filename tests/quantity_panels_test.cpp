@@ -1,0 +1,137 @@
+// The panels `vibra render --panels` offers: their values from the run's rows
+// (the energy panel equals `vibra solve --energy`), their errors, and stills
+// of every kind for every built-in scene, whole run and windowed.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "cli_support.hpp"
+#include "core/error.hpp"
+#include "scenes/quantity_panels.hpp"
+#include "scenes/scene_config.hpp"
+#include "test_support.hpp"
+
+using namespace vibra;
+using scenes::quantity_panel;
+
+namespace {
+const render::Color kBlue = render::palette::blue, kRed = render::palette::vermillion;
+}
+
+TEST_CASE("the energy panel's values are solve --energy's E_rel at the same steps", "[panels]") {
+  for (const std::string& settings : {"vibration --set b=0.3 --set scheme=centered", "pendulum --set scheme=forward-euler",
+                                      "two-body --set vy0=1.2 --set scheme=rk4 --set steps_per_period=30"}) {
+    INFO(settings);
+    const auto solved = test::run_vibra("solve " + settings + " --set periods=2 --energy");
+    REQUIRE(solved.exit_code == 0);
+    const auto cells = test::csv_rows(solved.out);
+    REQUIRE(cells[0].back() == "E_rel");
+
+    // The same run in this process, its rows fed to the panel in time order.
+    std::vector<std::string> keys;
+    for (size_t at = settings.find("--set "); at != std::string::npos; at = settings.find("--set ", at + 1))
+      keys.push_back(settings.substr(at + 6, settings.find(' ', at + 6) - at - 6));
+    keys.push_back("periods=2");
+    auto run = test::trajectory(settings.substr(0, settings.find(' ')), keys);
+    const auto spec = quantity_panel("energy", run->info(), kBlue, "", kRed);
+    REQUIRE(spec.curves.size() == 1);
+    const auto rows = test::rows(*run);
+    REQUIRE(rows.size() + 1 == cells.size());
+    double largest = 0;
+    for (size_t n = 0; n < rows.size(); ++n) {
+      const double panel = spec.curves[0].value(rows[n]);
+      CHECK(panel == Approx(std::stod(cells[n + 1].back())).margin(1e-15).epsilon(1e-14));
+      largest = std::max(largest, std::abs(panel));
+    }
+    CHECK(largest > 1e-6);  // a real change, not zeros compared
+  }
+}
+
+TEST_CASE("the error panel is the main quantity minus the exact solution", "[panels]") {
+  auto run = test::trajectory("undamped", {"scheme=forward-euler", "steps_per_period=20", "periods=3"});
+  const auto spec = quantity_panel("error", run->info(), kBlue, "", kRed);
+  for (const auto& row : test::rows(*run)) CHECK(spec.curves[0].value(row) == row[1] - run->info().exact(row[0]));
+  CHECK_THROWS_WITH(quantity_panel("error", test::trajectory("vibration", {"b=0.2", "F=cos(t)"})->info(), kBlue, "", kRed),
+                    Catch::StartsWith("this run has no exact solution") && Catch::Contains("drop 'error'"));
+}
+
+TEST_CASE("a column panel overlays the exact solution on the main quantity only", "[panels]") {
+  auto run = test::trajectory("undamped", {"periods=1"});
+  const auto u = quantity_panel("u", run->info(), kBlue, "", kRed);
+  REQUIRE(u.references.size() == 1);
+  CHECK(u.references[0].dashed);
+  CHECK(quantity_panel("v", run->info(), kBlue, "", kRed).references.empty());
+  const auto phase = quantity_panel("phase", run->info(), kBlue, "", kRed);
+  REQUIRE(phase.is_phase());
+  const std::vector<double> row = {0.5, 0.25, -2};
+  CHECK(phase.phase[0].x(row) == 0.25);
+  CHECK(phase.phase[0].y(row) == -2);
+}
+
+TEST_CASE("the period panel steps at each crossing and holds the exact period dashed", "[panels]") {
+  auto run = test::trajectory("pendulum", {"alpha=0", "Theta=90", "scheme=rk4", "steps_per_period=200", "periods=5"});
+  const TrajectoryInfo& info = run->info();
+  auto spec = quantity_panel("period", info, kBlue, "", kRed);
+  REQUIRE(spec.references.size() == 1);
+  CHECK(spec.references[0].label == "exact period");
+  CHECK(spec.references[0].value({}) == info.exact_period);
+  CHECK(spec.least_span > 0);
+  const auto rows = test::rows(*run);
+  int measured = 0;
+  for (const auto& row : rows) {
+    const double P = spec.curves[0].value(row);
+    if (std::isnan(P)) {
+      CHECK(measured == 0);  // NaN only before the first period completes
+      continue;
+    }
+    ++measured;
+    CHECK(P == Approx(info.exact_period).epsilon(1e-6));
+  }
+  CHECK(measured > 0);
+  CHECK(info.exact_period > info.mesh.period * 1.15);  // 90 degrees: clearly slower than small-angle
+  // A second pass over the same rows (the render after the pre-pass) gives the same values.
+  auto again = quantity_panel("period", info, kBlue, "", kRed);
+  for (const auto& row : rows) again.curves[0].value(row);
+  for (size_t n = 0; n < rows.size(); n += 37) {
+    const double a = spec.curves[0].value(rows[n]), b = again.curves[0].value(rows[n]);
+    CHECK(((std::isnan(a) && std::isnan(b)) || a == b));
+  }
+  // Without an exact period the small-oscillation one stands in, and says so.
+  auto damped = quantity_panel("period", test::trajectory("pendulum", {"alpha=0.3"})->info(), kBlue, "", kRed);
+  CHECK(damped.references.at(0).label == "small-oscillation period");
+}
+
+TEST_CASE("an unknown panel is refused with the closest name, on the command line too", "[panels]") {
+  const auto info = test::trajectory("undamped", {"periods=1"})->info();
+  CHECK_THROWS_WITH(quantity_panel("enrgy", info, kBlue, "", kRed),
+                    "unknown panel 'enrgy' (did you mean 'energy'?): choose from u, v, phase, energy, error, period");
+  test::check_refused("render spring --panels u,phse --at 1 -o OUT.png", "did you mean 'phase'?");
+  test::check_refused("render spring_dashpot --panels error --at 1 -o OUT.png", "drop 'error' from --panels");
+  test::check_refused("render pendulum --layout fbd --panels phase --at 1 -o OUT.png", "use --layout fbd+plot");
+  test::check_refused("render pendulum --panels , --at 1 -o OUT.png", "panels is empty");
+}
+
+TEST_CASE("every panel kind draws for every built-in scene, whole run and windowed, PNG and SVG", "[panels][render]") {
+  test::ScratchDirectory dir;
+  for (const auto& scene : scenes::builtin_scene_names()) {
+    const std::string panels = scene == "spring" ? "phase,energy,period,error" : "phase,energy,period";
+    for (const std::string& window : {"", " --window 2periods --window-mode jumps", " --window 3 --window-mode movement"}) {
+      const std::string args = "render " + scene + " --panels " + panels + " --energy-bars --size 640x360 --at 4" + window;
+      INFO(args);
+      const auto png = test::run_vibra(args + " -q -o " + (dir / "still.png"));
+      CHECK(png.exit_code == 0);
+      CHECK(png.err.empty());
+    }
+    const auto svg = test::run_vibra("render " + scene + " --panels " + panels + " --at 2 -q -o " + (dir / "still.svg"));
+    CHECK(svg.exit_code == 0);
+    CHECK(test::read_file(dir / "still.svg").find("</svg>") != std::string::npos);
+  }
+}
+
+TEST_CASE("a scene file chooses panels and energy bars", "[panels]") {
+  scenes::SceneConfig config = scenes::parse_scene("model = \"undamped\"\npanels = \"u, phase,energy\"\nenergy_bars = true\n",
+                                                   "lecture.toml");
+  CHECK(config.panels == std::vector<std::string>{"u", "phase", "energy"});
+  CHECK(config.energy_bars);
+  CHECK_THROWS_WITH(scenes::parse_scene("panels = \" , \"\n", "lecture.toml"), Catch::Contains("panels is empty"));
+}
