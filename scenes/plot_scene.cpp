@@ -1,6 +1,6 @@
 #include "scenes/plot_scene.hpp"
 
-#include "render/text.hpp"
+#include "render/caption.hpp"
 
 namespace vibra::scenes {
 
@@ -27,9 +27,10 @@ PlotScene::PlotScene(int width, int height, double t_end, SceneStyle style, cons
       background_([this](render::Canvas& canvas) {
         canvas.clear(style_.colors.background);
         panel_.draw_static(canvas, true);
-        if (!style_.caption.empty())
-          render::draw_text(canvas, {16 * canvas.scale(), area_.h - 6 * canvas.scale()}, style_.caption,
-                            {15, style_.colors.wire.with_alpha(0.75)}, render::Anchor::bottom_left);
+        if (!style_.caption.empty())  // one line under the time axis: shrunk, or cut short, to the width
+          render::draw_caption(canvas, {16 * canvas.scale(), area_.h - 6 * canvas.scale()},
+                               render::fit_caption(canvas, style_.caption, area_.w - 32 * canvas.scale(),
+                                                   {15, style_.colors.wire.with_alpha(0.75)}, 1));
       }) {}
 
 void PlotScene::prepare() {
