@@ -15,6 +15,22 @@ std::string power_of_ten(int exponent) {
   return "10<sup>" + (exponent < 0 ? kMinus + std::to_string(-exponent) : std::to_string(exponent)) + "</sup>";
 }
 
+/// Linear tick labels for a figure: one power of ten written on every label
+/// (a figure's axes never need an offset: Axis::fit keeps their relative span
+/// at least 1e-5).
+std::vector<AxisTick> label_linear(const std::vector<double>& values) {
+  std::vector<AxisTick> out;
+  if (values.empty()) return out;
+  const double step = values.size() > 1 ? values[1] - values[0] : std::max(std::abs(values[0]), 1.0);
+  const LinearTickLabels labels = linear_tick_labels(values, step);
+  for (size_t i = 0; i < values.size(); ++i) {
+    std::string label = labels.labels[i];
+    if (!labels.common.empty() && std::abs(values[i]) > 1e-9 * step) label += labels.common;
+    out.push_back({values[i], label});
+  }
+  return out;
+}
+
 /// m x 10^k as a plain decimal when every label is of everyday size, else in powers of ten.
 std::string log_label(int m, int k, bool plain) {
   if (plain) {
@@ -26,19 +42,30 @@ std::string log_label(int m, int k, bool plain) {
 }
 }  // namespace
 
-std::vector<AxisTick> label_linear(const std::vector<double>& values) {
-  std::vector<AxisTick> out;
+LinearTickLabels linear_tick_labels(const std::vector<double>& values, double step) {
+  LinearTickLabels out;
   if (values.empty()) return out;
-  const double step = values.size() > 1 ? values[1] - values[0] : std::max(std::abs(values[0]), 1.0);
   double largest = 0;
   for (double v : values) largest = std::max(largest, std::abs(v));
-  const bool scientific = largest >= 1e5 || (largest > 0 && largest < 1e-3);
-  const int exponent = scientific ? static_cast<int>(std::floor(std::log10(largest))) : 0;
+  const double span = std::max(values.back() - values.front(), step);
+  // Ticks that differ in their fifth significant digit or beyond: subtract a
+  // round number near them, so the labels show only what differs.
+  double offset = 0;
+  if (span < 1e-4 * largest) {
+    const double round_to = std::pow(10.0, std::floor(std::log10(span)) + 1);
+    offset = std::round(values.front() / round_to) * round_to;
+  }
+  double rest = 0;
+  for (double v : values) rest = std::max(rest, std::abs(v - offset));
+  out.scaled = rest >= 1e5 || (rest > 0 && rest < 1e-3);
+  const int exponent = out.scaled ? static_cast<int>(std::floor(std::log10(rest))) : 0;
   const double unit = std::pow(10.0, exponent);
-  for (double v : values) {
-    std::string label = tick_label(v / unit, step / unit);
-    if (scientific && std::abs(v) > 1e-9 * step) label += "×" + power_of_ten(exponent);
-    out.push_back({v, label});
+  for (double v : values) out.labels.push_back(tick_label((v - offset) / unit, step / unit));
+  if (out.scaled) out.common = "×" + power_of_ten(exponent);
+  if (offset != 0) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.12g", std::abs(offset));
+    out.common += std::string(out.common.empty() ? "" : " ") + (offset < 0 ? kMinus : "+") + " " + buf;
   }
   return out;
 }

@@ -12,9 +12,18 @@ struct AxisTick {
   std::string label;
 };
 
-/// Labels for linear ticks (1-2-5 steps): plain decimals for everyday
-/// magnitudes, else a mantissa times the power of ten of the largest tick.
-std::vector<AxisTick> label_linear(const std::vector<double>& values);
+/// Labels of linear ticks `step` apart. Everyday magnitudes get plain
+/// decimals and an empty `common`. Tiny or huge numbers, or ticks that differ
+/// only far below their size (r = 1 ± 10^-9), get short labels sharing a
+/// power of ten and, in the latter case, an offset, both stated once in
+/// `common` for the axis's label, as matplotlib does: tick 2 with common
+/// "×10^-9 + 1" reads 1 + 2×10^-9.
+struct LinearTickLabels {
+  std::vector<std::string> labels;  ///< one per tick, Pango markup
+  std::string common;               ///< "", "×10<sup>−9</sup>", "+ 1", or both
+  bool scaled = false;              ///< the labels are in units of a power of ten
+};
+LinearTickLabels linear_tick_labels(const std::vector<double>& values, double step);
 
 /// One axis of a figure panel: the range it shows and where a value sits
 /// along it, linearly or by decades. Knows nothing of pixels.

@@ -172,9 +172,16 @@ void draw_ground_profile(Canvas& canvas, const WorldView& view, std::span<const 
   const double spacing = 14 * canvas.scale();
   double low = top.front().y(), high = top.front().y();
   for (const Point& p : top) low = std::min(low, p.y()), high = std::max(high, p.y());
-  const double x0 = top.front().x() - (high - low + drop), x1 = top.back().x();
-  for (double x = x0; x < x1; x += spacing)
-    draw_pixel_line(canvas, {x, high + drop}, {x + (high - low + drop), low}, hatch);
+  // Only the hatches that cross the clip (the band within the frame's
+  // visible part), in one stroke: a clipped stroke costs Cairo a mask pass.
+  double clip_x0, clip_y0, clip_x1, clip_y1;
+  cairo_clip_extents(cr, &clip_x0, &clip_y0, &clip_x1, &clip_y1);
+  const double rise = high - low + drop, start = top.front().x() - rise;
+  const double x0 = start + std::max(0.0, std::floor((clip_x0 - rise - start) / spacing)) * spacing;
+  const double x1 = std::min(top.back().x(), clip_x1);
+  std::vector<std::pair<Point, Point>> hatches;
+  for (double x = x0; x < x1; x += spacing) hatches.push_back({{x, high + drop}, {x + rise, low}});
+  draw_pixel_segments(canvas, hatches, hatch);
   cairo_restore(cr);
   Stroke line = s;
   line.width = 1.4 * s.width;

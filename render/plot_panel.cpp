@@ -19,6 +19,10 @@ double nice_step(double span, int target) {
     if (m * magnitude >= raw) return m * magnitude;
   return 10 * magnitude;
 }
+/// An axis label followed by its ticks' common factor and offset, if any.
+std::string with_common(const std::string& label, const std::string& common) {
+  return common.empty() ? label : label + "  <span size=\"smaller\">(" + common + ")</span>";
+}
 }  // namespace
 
 std::vector<double> nice_ticks(double lo, double hi, int target) {
@@ -70,17 +74,20 @@ Point PlotPanel::to_pixel(double x, double y) const {
 void PlotPanel::draw_axes(Canvas& canvas, const std::string& y_label, const std::string& x_label) const {
   const Stroke grid{palette::grid, 1};
   const TextStyle ticks{kTickFont, palette::ink.with_alpha(0.8)};
-  const double x_step = nice_step(x1_ - x0_, 6);
-  // Tiny or huge values (a scheme's energy drift) as a mantissa times a power of ten.
-  for (const AxisTick& y : label_linear(nice_ticks(y0_, y1_, 5))) {
-    const Point p = to_pixel(x0_, y.value);
+  // Tiny or huge ranges (a radius drifting by 1e-9) label their ticks in a
+  // power of ten and an offset that the axis's label states once.
+  const std::vector<double> y_ticks = nice_ticks(y0_, y1_, 5), x_ticks = nice_ticks(x0_, x1_, 6);
+  const LinearTickLabels y_labels = linear_tick_labels(y_ticks, nice_step(y1_ - y0_, 5));
+  const LinearTickLabels x_labels = linear_tick_labels(x_ticks, nice_step(x1_ - x0_, 6));
+  for (size_t i = 0; i < y_ticks.size(); ++i) {
+    const Point p = to_pixel(x0_, y_ticks[i]);
     draw_pixel_line(canvas, p, {area_.x + area_.w, p.y()}, grid);
-    draw_text(canvas, {area_.x - 6 * scale_, p.y()}, y.label, ticks, Anchor::right);
+    draw_text(canvas, {area_.x - 6 * scale_, p.y()}, y_labels.labels[i], ticks, Anchor::right);
   }
-  for (double x : nice_ticks(x0_, x1_, 6)) {
-    const Point p = to_pixel(x, y0_);
+  for (size_t i = 0; i < x_ticks.size(); ++i) {
+    const Point p = to_pixel(x_ticks[i], y0_);
     draw_pixel_line(canvas, {p.x(), area_.y}, p, grid);
-    if (!x_label.empty()) draw_text(canvas, {p.x(), p.y() + 4 * scale_}, tick_label(x, x_step), ticks, Anchor::top);
+    if (!x_label.empty()) draw_text(canvas, {p.x(), p.y() + 4 * scale_}, x_labels.labels[i], ticks, Anchor::top);
   }
   if (y0_ < 0 && y1_ > 0) draw_pixel_line(canvas, to_pixel(x0_, 0), to_pixel(x1_, 0), {palette::faint, 1.2});
   cairo_rectangle(canvas.cr(), area_.x, area_.y, area_.w, area_.h);
@@ -89,12 +96,14 @@ void PlotPanel::draw_axes(Canvas& canvas, const std::string& y_label, const std:
   canvas.stroke();
   // The y label sits above the frame's top-left corner: readable without
   // rotation, clear of the curve, and it does not steal width from the plot.
-  draw_text(canvas, {area_.x, area_.y - 3 * scale_}, y_label, {kLabelFont, palette::ink}, Anchor::bottom_left);
+  draw_text(canvas, {area_.x, area_.y - 3 * scale_}, with_common(y_label, y_labels.common), {kLabelFont, palette::ink},
+            Anchor::bottom_left);
   // The x label sits at the end of the axis, inside the frame, as in textbooks.
   if (!x_label.empty()) {
     TextStyle style{kLabelFont, palette::ink};
     style.halo = true;
-    draw_text(canvas, {area_.x + area_.w - 6 * scale_, area_.y + area_.h - 4 * scale_}, x_label, style,
+    draw_text(canvas, {area_.x + area_.w - 6 * scale_, area_.y + area_.h - 4 * scale_},
+              with_common(x_label, x_labels.common), style,
               Anchor::bottom_right);
   }
 }

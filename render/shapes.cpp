@@ -30,6 +30,13 @@ void draw_pixel_line(Canvas& canvas, const Point& a, const Point& b, const Strok
   canvas.stroke();
 }
 
+void draw_pixel_segments(Canvas& canvas, std::span<const std::pair<Point, Point>> segments, const Stroke& s) {
+  if (segments.empty()) return;
+  apply(canvas, s);
+  for (const auto& [a, b] : segments) move_to(canvas.cr(), a), line_to(canvas.cr(), b);
+  canvas.stroke();
+}
+
 void draw_pixel_polyline(Canvas& canvas, std::span<const Point> points, const Stroke& s) {
   if (points.size() < 2) return;
   apply(canvas, s);

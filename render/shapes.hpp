@@ -1,4 +1,5 @@
 #pragma once
+#include <utility>
 #include <span>
 
 #include "render/canvas.hpp"
@@ -27,6 +28,8 @@ void draw_ceiling(Canvas&, const WorldView&, const Point& center, double half_wi
 // Shapes in pixels, for plots.
 void draw_pixel_polyline(Canvas&, std::span<const Point> points, const Stroke&);
 void draw_pixel_line(Canvas&, const Point& a, const Point& b, const Stroke&);
+/// Separate segments a-b in one stroke: one pass of Cairo (and of its clip) for hatching.
+void draw_pixel_segments(Canvas&, std::span<const std::pair<Point, Point>> segments, const Stroke&);
 void fill_pixel_rect(Canvas&, const PixelRect&, const Color&);
 
 }  // namespace vibra::render

@@ -17,6 +17,10 @@ std::unique_ptr<PangoLayout, void (*)(void*)> make_layout(Canvas& canvas, const 
   pango_layout_set_font_description(layout, font);
   pango_font_description_free(font);
   pango_layout_set_markup(layout, markup.c_str(), -1);
+  if (style.max_width > 0) {
+    pango_layout_set_width(layout, static_cast<int>(style.max_width * PANGO_SCALE));
+    pango_layout_set_ellipsize(layout, PANGO_ELLIPSIZE_END);
+  }
   return {layout, g_object_unref};
 }
 

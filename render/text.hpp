@@ -17,6 +17,8 @@ struct TextStyle {
   /// A background-coloured outline, so a label stays readable over lines.
   bool halo = false;
   Color halo_color = palette::paper;
+  /// When > 0: pixels the text may take across; beyond, it ends in "…".
+  double max_width = 0;
 };
 
 /// Starts loading the font configuration in the background (Pango 1.50 runs

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "render/canvas.hpp"
@@ -8,12 +9,13 @@
 namespace vibra::render {
 
 /// The path a body leaves behind, stamped with time and thinned as it streams
-/// in: a point is kept only `spacing` world units from the last one kept
-/// (finer than a pixel at the sizes drawn), and when more than `budget` are
-/// kept the spacing doubles and every other point goes. So a run of a million
-/// steps holds no more points than one of a thousand, and drawing the part of
-/// the path within a time window costs what that part's length says, never
-/// what the step count says.
+/// in: a point is kept only `spacing` world units from the last one kept, and
+/// when more than `budget` are kept the spacing doubles and every other point
+/// goes, so memory stays flat over any run. Drawn, the path is simplified
+/// once more for the picture's zoom: a point is dropped while the straight
+/// line past it misses it by less than a quarter pixel, so a frame strokes
+/// what the curve's shape on screen needs (a circle of 200 pixels takes about
+/// 60 segments), the same for a thousand steps as for a million.
 class Trail {
  public:
   explicit Trail(double spacing, size_t budget = size_t(1) << 16);
@@ -21,8 +23,10 @@ class Trail {
   /// Points must come in time order.
   void add(double t, const Point& p);
   /// The path from `t - fade` to `t` as a polyline whose opacity falls from
-  /// 1 at t to 0 at `t - fade`; it ends at the latest point before t.
-  void draw(Canvas&, const WorldView&, double t, double fade, const Color&, double width) const;
+  /// 1 at t to 0 at `t - fade`; it ends at `head` (the body's position at t)
+  /// when given, else at the latest kept point before t.
+  void draw(Canvas&, const WorldView&, double t, double fade, const Color&, double width,
+            const std::optional<Point>& head = std::nullopt) const;
 
   struct Stamped {
     double t;
@@ -32,11 +36,19 @@ class Trail {
   /// The kept points with time in [from, to].
   std::vector<Point> between(double from, double to) const;
   double spacing() const { return spacing_; }
+  /// The points drawn at `zoom` pixels per world unit: a subset of points(),
+  /// first and last included, every dropped point within a quarter pixel of
+  /// the segment drawn in its place.
+  const std::vector<Stamped>& drawn_points(double zoom) const;
 
  private:
   double spacing_;
   size_t budget_;
   std::vector<Stamped> points_;
+  size_t version_ = 0;  ///< counts changes to points_, so the drawn cache knows it is stale
+  mutable std::vector<Stamped> drawn_;
+  mutable double drawn_zoom_ = 0;
+  mutable size_t drawn_version_ = size_t(-1);
 };
 
 }  // namespace vibra::render

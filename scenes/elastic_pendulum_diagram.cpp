@@ -67,7 +67,7 @@ void ElasticPendulumDiagram::draw_static(render::Canvas& canvas, const render::W
 
 void ElasticPendulumDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
   const Point p = position(row);
-  trail_.draw(canvas, view, row[0], kFade, colors_.bob, 1.8);
+  trail_.draw(canvas, view, row[0], kFade, colors_.bob, 1.8, p);
   render::SpringShape spring;
   spring.width = 0.07, spring.lead = 0.08, spring.coils = 12;
   render::draw_spring(canvas, view, kPivot, p + kBob * (kPivot - p).normalized(), spring, {colors_.wire, 1.8});

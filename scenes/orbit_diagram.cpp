@@ -24,10 +24,14 @@ OrbitDiagram::OrbitDiagram(double window, double t_end, SceneColors colors)
 }
 
 std::vector<PanelSpec> OrbitDiagram::panels() const {
-  // x and y; the distance's drift r - r(0) is left out while the axis cannot
-  // label a range of 1e-9 (PEFRL's) legibly.
+  // x and y, and the distance's drift from its start, where a circular
+  // orbit shows its scheme: at 200 steps an orbit Euler-Cromer's radius
+  // swings by 1e-2, PEFRL's by 2e-8 (the axis states the power of ten once). The panels sample rows
+  // after record() has seen the first one.
   return {{"<i>x</i>", {{"", colors_.bob, [](std::span<const double> r) { return r[1]; }}}},
-          {"<i>y</i>", {{"", colors_.bob, [](std::span<const double> r) { return r[2]; }}}}};
+          {"<i>y</i>", {{"", colors_.bob, [](std::span<const double> r) { return r[2]; }}}},
+          {"<i>r</i> − <i>r</i>(0)",
+           {{"", colors_.bob, [this](std::span<const double> r) { return position(r).norm() - start_radius_; }}}}};
 }
 
 void OrbitDiagram::record(std::span<const double> row, WorldBox& world) {
@@ -35,6 +39,7 @@ void OrbitDiagram::record(std::span<const double> row, WorldBox& world) {
     // Circular when the speed is the circular one, 1/sqrt(r), across the radius.
     const Point x = position(row), v = velocity(row);
     const double r = x.norm();
+    start_radius_ = r;
     if (r > 0 && std::abs(x.dot(v)) < 1e-12 * r * v.norm() && std::abs(v.squaredNorm() * r - 1) < 1e-12)
       circle_radius_ = r;
     first_ = false;
@@ -73,8 +78,8 @@ void OrbitDiagram::draw_static(render::Canvas& canvas, const render::WorldView& 
 
 void OrbitDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
   // Without a window the whole run's path stays, fading only slightly.
-  trail_.draw(canvas, view, row[0], window_ > 0 ? window_ : 2 * t_end_ + 1, colors_.bob, 1.6);
   const Point x = position(row);
+  trail_.draw(canvas, view, row[0], window_ > 0 ? window_ : 2 * t_end_ + 1, colors_.bob, 1.6, x);
   render::draw_circle(canvas, view, x, kPlanet, colors_.bob, {colors_.wire, 1.4});
   if (ghost()) return;
   const auto a = arrows(row);

@@ -14,7 +14,7 @@ namespace vibra::scenes {
 /// run, or the last `window` time units with --window, fading), the exact
 /// circle dashed when the start is on a circular orbit, and arrows for the
 /// gravity -x/|x|^3 (to one scale) and the velocity (to its own).
-/// Panels: x and y. Rows: t, x, y, vx, vy.
+/// Panels: x, y and r - r(0). Rows: t, x, y, vx, vy.
 class OrbitDiagram final : public Diagram {
  public:
   /// `window`: time units of trail to show; 0 for the whole run.
@@ -42,6 +42,7 @@ class OrbitDiagram final : public Diagram {
   render::Trail trail_{1e-3};
   WorldBox bodies_;
   double circle_radius_ = 0;
+  double start_radius_ = 0;  ///< |x| at the first row, for the panel r - r(0)
   bool first_ = true;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "render/caption.hpp"
 #include "render/text.hpp"
 
 namespace vibra::scenes {
@@ -51,9 +52,10 @@ void PlotScene::draw_static(render::Canvas& canvas) {
   canvas.clear(style_.colors.background);
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw_static(canvas, i + 1 == panels_.size());
   if (!legend_.empty()) legend_.draw_static(canvas, {area_.w - 4 * canvas.scale(), 44 * canvas.scale()});
-  if (!style_.caption.empty())
-    render::draw_text(canvas, {16 * canvas.scale(), area_.h - 6 * canvas.scale()}, style_.caption,
-                      {15, style_.colors.wire.with_alpha(0.75)}, render::Anchor::bottom_left);
+  if (!style_.caption.empty())  // one line under the time axis: shrunk, or cut short, to the width
+    render::draw_caption(canvas, {16 * canvas.scale(), area_.h - 6 * canvas.scale()},
+                         render::fit_caption(canvas, style_.caption, area_.w - 32 * canvas.scale(),
+                                             {15, style_.colors.wire.with_alpha(0.75)}, 1));
 }
 
 StaticLayer::Grow PlotScene::progress_to(double t) {

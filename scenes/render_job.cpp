@@ -38,19 +38,6 @@ std::string extension_of(const std::string& path) {
   return ext;
 }
 
-std::string caption_of(const SceneConfig& scene, const Parameters& p, const TimeMesh& mesh) {
-  std::string caption = scene.model + " · " + std::string(scheme_info(mesh.scheme).name);
-  char dt[64];
-  std::snprintf(dt, sizeof dt, " · Δ<i>t</i> = %.4g", mesh.dt);
-  caption += dt;
-  for (const auto& a : p.given_assignments()) {
-    const std::string key = a.substr(0, a.find('='));
-    if (key != "scheme" && key != "dt" && key != "steps_per_period" && key != "T" && key != "periods")
-      caption += " · " + a;
-  }
-  return caption;
-}
-
 /// Pango markup without its tags, for file metadata.
 std::string plain_text(const std::string& markup) {
   std::string out;
@@ -60,6 +47,10 @@ std::string plain_text(const std::string& markup) {
     else if (c == '>') in_tag = false;
     else if (!in_tag) out += c;
   }
+  // The entities run_caption escapes, back to their characters.
+  for (const auto& [entity, c] : {std::pair{"&lt;", '<'}, {"&gt;", '>'}, {"&amp;", '&'}})
+    for (size_t at = 0; (at = out.find(entity, at)) != std::string::npos; ++at)
+      out.replace(at, std::string_view(entity).size(), 1, c);
   return out;
 }
 
@@ -254,7 +245,7 @@ void run_render(const RenderRequest& r) {
       r.scene.frame_per_step ? FrameClock::per_step(mesh.dt, mesh.steps) : FrameClock::by_speed(mesh.T, r.scene.fps, speed);
   const auto* runs = dynamic_cast<const ComparisonTrajectory*>(pre_pass.get());
   const std::string caption =
-      runs ? comparison_caption(r.scene.model, runs->comparison()) : caption_of(r.scene, parameters, mesh);
+      runs ? comparison_caption(r.scene.model, runs->comparison()) : run_caption(r.scene.model, parameters, mesh);
   render::FrameSegment segment{0, 1, clock.frames()};
   if (r.segment) {
     segment = {r.segment->index, r.segment->count, clock.frames(), render_fingerprint(r, caption, clock.frames())};

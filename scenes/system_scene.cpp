@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "render/caption.hpp"
 #include "render/text.hpp"
 
 namespace vibra::scenes {
@@ -66,6 +67,15 @@ void SystemScene::observe(std::span<const double> row) {
 
 void SystemScene::prepare() {
   if (view_) return;
+  if (!style_.caption.empty()) {
+    // A long caption breaks between facts onto up to three lines (or
+    // shrinks) to stay inside the diagram's part; the diagram makes room.
+    render::Canvas measure = render::Canvas::image(1, height_);
+    const double scale = measure.scale();
+    caption_ = render::fit_caption(measure, style_.caption, diagram_area_.w - 32 * scale,
+                                   {15, style_.colors.wire.with_alpha(0.75)}, 3);
+    view_area_.h -= caption_->height() - caption_->line_height;
+  }
   diagram_->finish_recording(world_);
   view_.emplace(world_, view_area_);
   for (auto& panel : panels_) panel->finish_recording();
@@ -82,10 +92,10 @@ void SystemScene::draw_static(render::Canvas& canvas) {
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i]->draw_static(canvas, i == time_labels_panel_);
   diagram_->draw_static(canvas, *view_);
   if (!legend_.empty()) legend_.draw_static(canvas, legend_corner(canvas.scale()));
-  if (!style_.caption.empty())
-    render::draw_text(canvas,
-                      {diagram_area_.x + 16 * canvas.scale(), diagram_area_.y + diagram_area_.h - 12 * canvas.scale()},
-                      style_.caption, {15, style_.colors.wire.with_alpha(0.75)}, render::Anchor::bottom_left);
+  if (caption_)
+    render::draw_caption(
+        canvas, {diagram_area_.x + 16 * canvas.scale(), diagram_area_.y + diagram_area_.h - 12 * canvas.scale()},
+        *caption_);
 }
 
 void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/trajectory.hpp"
+#include "render/caption.hpp"
 #include "scenes/diagram.hpp"
 #include "scenes/energy_bars.hpp"
 #include "scenes/quantity_panels.hpp"
@@ -37,6 +38,13 @@ class SystemScene final : public Scene {
   const WorldBox& world_box() const { return world_; }
   /// The view the diagram is drawn through at this row (after record()).
   render::WorldView view_at(std::span<const double> row);
+  /// The caption as fitted to the diagram's width (after record()); none without one.
+  const std::optional<render::Caption>& caption() {
+    prepare();
+    return caption_;
+  }
+  /// Where the diagram, its caption and read-out are drawn.
+  const render::PixelRect& diagram_area() const { return diagram_area_; }
 
  private:
   void prepare();
@@ -59,6 +67,7 @@ class SystemScene final : public Scene {
   std::unique_ptr<EnergyBars> bars_;
   WorldBox world_;
   std::optional<render::WorldView> view_;
+  std::optional<render::Caption> caption_;  ///< set with the view
   StaticLayer background_;
 };
 

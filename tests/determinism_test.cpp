@@ -81,5 +81,7 @@ TEST_CASE("PNG frames are byte-identical across runs and thread counts, and held
   CHECK(render_frames("2", two_threads) == hash);
   CHECK(render_frames("2", again) == hash);
   CHECK(one_thread == two_threads);
-  CHECK(hash == 0xd4e0e2a0a5d4188dull);
+  // The pendulum centred on its pivot (layout fbd defect) and the caption broken
+  // onto three lines inside the diagram's part at 320x180.
+  CHECK(hash == 0x406cd9903a8df6d7ull);
 }

@@ -12,7 +12,6 @@ import argparse
 import math
 import os
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import pendulum_scene as scene  # noqa: E402
@@ -37,20 +36,16 @@ def main():
     ax.set_ylabel("u")
     (line,) = ax.plot([], [], "r-")
     window = args.window * 2 * math.pi
-    os.makedirs(args.out, exist_ok=True)
-    start = time.perf_counter()
-    for i in range(args.frames):
+
+    def draw(i):
         n = i * args.stride + 1
         left = max(0.0, t[n] - window)
         first = int(left / scene.DT)
         line.set_data(t[first:n + 1], u[first:n + 1])
         ax.set_xlim(left, max(window, t[n]))
         ax.set_title("t=%6.3f" % t[n])
-        fig.savefig(os.path.join(args.out, "tmp_%04d.png" % i), dpi=100)
-    took = time.perf_counter() - start
-    print("moving_window: %d frames in %.3f s, %.1f frames/s" % (args.frames, took, args.frames / took),
-          file=sys.stderr)
 
+    scene.save_png_frames(fig, draw, args.frames, args.out, "moving_window")
 
 if __name__ == "__main__":
     main()

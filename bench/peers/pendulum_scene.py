@@ -16,6 +16,9 @@ Coordinates are in units of the canvas height.
 """
 import argparse
 import math
+import os
+import sys
+import time
 
 import numpy as np
 
@@ -161,3 +164,15 @@ def diagram_run(args):
     diagram = Diagram(ax, width, height)
     draw = diagram.update if args.mode == "reuse" else diagram.redraw
     return fig, lambda i: draw(theta[i], S[i], D[i])
+
+
+def save_png_frames(fig, draw, frames, out, name):
+    """draw(i) then savefig to out/tmp_%04d.png for each frame; the loop's
+    frames/s on stderr, prefixed by `name`."""
+    os.makedirs(out, exist_ok=True)
+    start = time.perf_counter()
+    for i in range(frames):
+        draw(i)
+        fig.savefig(os.path.join(out, "tmp_%04d.png" % i), dpi=100)
+    took = time.perf_counter() - start
+    print("%s: %d frames in %.3f s, %.1f frames/s" % (name, frames, took, frames / took), file=sys.stderr)

@@ -9,7 +9,6 @@ redraws the axes every frame. Prints the loop's frames/s on stderr.
 """
 import os
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import pendulum_scene as scene  # noqa: E402
@@ -18,14 +17,7 @@ import pendulum_scene as scene  # noqa: E402
 def main():
     args = scene.diagram_arguments("frames").parse_args()
     fig, draw = scene.diagram_run(args)
-    os.makedirs(args.out, exist_ok=True)
-    start = time.perf_counter()
-    for i in range(args.frames):
-        draw(i)
-        fig.savefig(os.path.join(args.out, "tmp_%04d.png" % i), dpi=100)
-    took = time.perf_counter() - start
-    print("png_frames: %d frames in %.3f s, %.1f frames/s" % (args.frames, took, args.frames / took), file=sys.stderr)
-
+    scene.save_png_frames(fig, draw, args.frames, args.out, "png_frames")
 
 if __name__ == "__main__":
     main()

@@ -1,0 +1,89 @@
+// Tick labels of linear axes: plain decimals for everyday ranges; tiny,
+// huge or offset ranges share a power of ten and an offset stated once.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "render/axis.hpp"
+#include "render/plot_panel.hpp"
+
+using vibra::render::linear_tick_labels;
+using vibra::render::LinearTickLabels;
+using vibra::render::nice_ticks;
+
+namespace {
+double number(const std::string& s) {
+  const std::string minus = "\u2212";
+  return s.compare(0, minus.size(), minus) == 0 ? -std::stod(s.substr(minus.size())) : std::stod(s);
+}
+
+/// Characters, not bytes: the minus sign takes three bytes.
+size_t characters(const std::string& s) {
+  size_t n = 0;
+  for (unsigned char c : s) n += (c & 0xC0) != 0x80;
+  return n;
+}
+
+/// The value a tick label stands for, with the axis's common factor and offset.
+double value_of(const std::string& label, const LinearTickLabels& labels) {
+  double scale = 1, offset = 0;
+  std::string common = labels.common;
+  const std::string sup = "×10<sup>";
+  if (common.rfind(sup, 0) == 0) {
+    const size_t end = common.find("</sup>");
+    scale = std::pow(10.0, number(common.substr(sup.size(), end - sup.size())));
+    common = common.substr(end + 6);
+  }
+  if (!common.empty()) {
+    const size_t sign = common.find_first_not_of(' ');
+    const bool minus = common.compare(sign, std::string("\u2212").size(), "\u2212") == 0;
+    offset = (minus ? -1 : 1) * number(common.substr(common.find(' ', sign) + 1));
+  }
+  return offset + number(label) * scale;
+}
+
+LinearTickLabels labels_for(double lo, double hi) {
+  const auto ticks = nice_ticks(lo, hi, 5);
+  REQUIRE(ticks.size() >= 2);
+  return linear_tick_labels(ticks, ticks[1] - ticks[0]);
+}
+}  // namespace
+
+TEST_CASE("axis labels: everyday ranges get plain decimals and no common factor", "[render][axis]") {
+  const LinearTickLabels l = labels_for(-1.2, 1.2);
+  CHECK(l.common.empty());
+  CHECK(l.labels.front() == "\u22121.0");
+  CHECK(l.labels.back() == "1.0");
+}
+
+TEST_CASE("axis labels: a drift of 1e-9 reads in units of 10^-9 stated once", "[render][axis]") {
+  const LinearTickLabels l = labels_for(-1.2e-9, 2.4e-9);
+  CHECK(l.common == "×10<sup>\u22129</sup>");
+  CHECK(l.labels.front() == "\u22121");
+  CHECK(l.labels.back() == "2");
+}
+
+TEST_CASE("axis labels: ticks differing far below their size get an offset", "[render][axis]") {
+  const LinearTickLabels l = labels_for(1 - 2e-9, 1 + 3e-9);
+  CHECK(l.common == "×10<sup>\u22129</sup> + 1");
+  CHECK(l.labels.front() == "\u22122");
+}
+
+TEST_CASE("axis labels: every tiny, huge or offset range labels distinct ticks that read back their values",
+          "[render][axis]") {
+  for (double centre : {0.0, 1.0, -1000.0, 3e6, 1e12})
+    for (double span : {1e-13, 1e-9, 1e-6, 1e-3, 1.0, 1e3, 1e7}) {
+      if (centre != 0 && span < 1e-13 * std::abs(centre) * 1e3) continue;  // beyond double precision
+      const auto ticks = nice_ticks(centre - 0.3 * span, centre + 0.7 * span, 5);
+      const double step = ticks[1] - ticks[0];
+      const LinearTickLabels l = linear_tick_labels(ticks, step);
+      INFO("centre " << centre << ", span " << span << ", common '" << l.common << "'");
+      REQUIRE(l.labels.size() == ticks.size());
+      CHECK(std::set<std::string>(l.labels.begin(), l.labels.end()).size() == ticks.size());
+      for (size_t i = 0; i < ticks.size(); ++i) {
+        CHECK(characters(l.labels[i]) <= 8);  // short: what differs, not the digits all share
+        CHECK(std::abs(value_of(l.labels[i], l) - ticks[i]) <= 1e-3 * step);
+      }
+    }
+}
