@@ -3,7 +3,7 @@
 # stable on a shared machine; absolute times are not). Prints frames/s of the
 # whole process (best of REPEAT=3 runs), peak memory and file sizes.
 #
-#   bench/render_bench.sh [FRAMES] [png|video|window|scenes|trail]   (default 300 frames,
+#   bench/render_bench.sh [FRAMES] [png|video|window|scenes|trail|compare]   (default 300 frames,
 #                                             every case; installs the peers' packages first)
 #
 # Cases: PNG sequences (--layout fbd) of the pendulum against png_frames.py
@@ -12,7 +12,8 @@
 # frames from raw YUV in memory with the same settings (the encoder's own
 # ceiling); the moving window against moving_window.py; the built-in scenes
 # spring_dashpot, bumpy_road, elastic_pendulum and orbit as MP4 against the
-# encoder's ceiling; the orbit's trail over 1e3 and 1e6 steps.
+# encoder's ceiling; the orbit's trail over 1e3 and 1e6 steps; a 4-run
+# comparison (--compare scheme=...) against one run of the same scene.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup --bench >/dev/null  # the peers' packages, and a current build
@@ -154,5 +155,18 @@ for steps in 1000 1000000; do
   printf "  -> %.2f ms a frame, whole process; %d KiB peak\n" "$(echo "1000 / $LAST_FPS" | bc -l)" "$LAST_KIB"
   unset CASE_FRAMES
   rm -f "$WORK/v.mp4"
+done
+}
+
+wanted compare && {
+echo
+echo "== A 4-run comparison against one run, MP4 720p (layout fbd+plot), about $FRAMES frames"
+periods=$(( FRAMES / 60 > 0 ? FRAMES / 60 : 1 ))
+for scene in spring pendulum; do
+  run "vibra $scene, one run" "$VIBRA" render $scene --set periods=$periods -q -o "$WORK/one.mp4"; one=$LAST_FPS
+  run "vibra $scene, 4 runs (--compare scheme=...)" "$VIBRA" render $scene --set periods=$periods -q -o "$WORK/four.mp4" \
+    --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4
+  printf "  -> 4 runs at %.0f%% of one run's frames/s (target >= 75%%)\n" "$(echo "100 * $LAST_FPS / $one" | bc -l)"
+  rm -f "$WORK/one.mp4" "$WORK/four.mp4"
 done
 }
