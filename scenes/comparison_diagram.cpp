@@ -10,23 +10,7 @@ namespace vibra::scenes {
 namespace {
 /// Ghosts are this opaque: the first member shows through them.
 constexpr double kGhostAlpha = 0.5;
-/// The widest member row a panel's reading copies on the stack.
-constexpr size_t kMostColumns = 32;
 }  // namespace
-
-std::span<const double> MemberColumns::slice(std::span<const double> row, std::span<double> out) const {
-  out[0] = row[0];
-  std::copy_n(row.begin() + offset, width - 1, out.begin() + 1);
-  return out.first(width);
-}
-
-std::function<double(std::span<const double>)> MemberColumns::reading(
-    std::function<double(std::span<const double>)> value) const {
-  return [columns = *this, value = std::move(value)](std::span<const double> row) {
-    std::array<double, kMostColumns> member;
-    return value(columns.slice(row, member));
-  };
-}
 
 ComparisonDiagram::ComparisonDiagram(std::vector<Member> members, bool shared_exact, std::string exact_label)
     : members_(std::move(members)), shared_exact_(shared_exact), exact_label_(std::move(exact_label)) {
@@ -35,7 +19,7 @@ ComparisonDiagram::ComparisonDiagram(std::vector<Member> members, bool shared_ex
     widest = std::max(widest, members_[i].columns.width);
     members_[i].diagram->set_ghost(i > 0);
   }
-  if (widest > kMostColumns) throw std::logic_error("a comparison member has more columns than a panel reads");
+  if (widest > kMostMemberColumns) throw std::logic_error("a comparison member has more columns than a panel reads");
   slice_.resize(widest);
 }
 

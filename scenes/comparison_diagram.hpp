@@ -3,20 +3,9 @@
 #include <vector>
 
 #include "scenes/diagram.hpp"
+#include "scenes/member_columns.hpp"
 
 namespace vibra::scenes {
-
-/// A member's columns within a comparison's row (ComparisonTrajectory: t,
-/// then every member's columns): where they start and how many there are
-/// with t.
-struct MemberColumns {
-  size_t offset = 1;
-  size_t width = 0;
-  /// Copies the member's row (t first) out of the comparison's row into `out` (at least `width` long).
-  std::span<const double> slice(std::span<const double> row, std::span<double> out) const;
-  /// `value` of a member row, read from a comparison row.
-  std::function<double(std::span<const double>)> reading(std::function<double(std::span<const double>)> value) const;
-};
 
 /// The members of a comparison in one diagram: the first drawn solid with its
 /// forces, the others as ghosts (their bodies only, in their own colours,

@@ -13,18 +13,14 @@ ComparisonPagePlots::ComparisonPagePlots(const ComparisonTrajectory& runs, const
     std::vector<std::string> panels = page_panel_names(info);
     if (comparison.same_problem() && i > 0) std::erase(panels, "exact");  // one problem: its exact solution once
     members_.emplace_back(info, panels, comparison.label(i), member_color(first, i));
-    offsets_.push_back(runs.offset(i));
-    widths_.push_back(info.columns.size());
-    slice_.resize(std::max(slice_.size(), widths_.back()));
+    columns_.push_back(MemberColumns::of(runs, i));
+    slice_.resize(std::max(slice_.size(), columns_.back().width));
   }
 }
 
 void ComparisonPagePlots::observe(const ComparisonTrajectory& runs, std::span<const double> row) {
   for (size_t i = 0; i < members_.size(); ++i) {
-    if (!runs.at_sample(i)) continue;
-    slice_[0] = row[0];
-    std::copy_n(row.begin() + offsets_[i], widths_[i] - 1, slice_.begin() + 1);
-    members_[i].observe(std::span<const double>(slice_.data(), widths_[i]));
+    if (runs.at_sample(i)) members_[i].observe(columns_[i].slice(row, slice_));
   }
 }
 

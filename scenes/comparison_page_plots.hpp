@@ -4,6 +4,7 @@
 
 #include "core/comparison_trajectory.hpp"
 #include "render/color.hpp"
+#include "scenes/member_columns.hpp"
 #include "scenes/page_plot_collector.hpp"
 
 namespace vibra::scenes {
@@ -25,7 +26,7 @@ class ComparisonPagePlots {
 
  private:
   std::vector<PagePlotCollector> members_;
-  std::vector<size_t> offsets_, widths_;
+  std::vector<MemberColumns> columns_;
   std::vector<double> slice_;
 };
 

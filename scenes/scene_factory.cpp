@@ -108,7 +108,7 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
   std::vector<MemberColumns> columns;
   std::vector<LegendEntry> legend;
   for (size_t i = 0; i < comparison.size(); ++i) {
-    columns.push_back({runs.offset(i), comparison.trajectory(i).width()});
+    columns.push_back(MemberColumns::of(runs, i));
     legend.push_back({member_markup(comparison, i), member_color(config.colors.bob, i), false,
                       columns[i].reading([](std::span<const double> row) { return row[1]; })});
   }

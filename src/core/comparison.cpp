@@ -82,7 +82,7 @@ void Comparison::set_escape_limit_from_bounds() {
 }
 
 bool Comparison::escaped(Member& m, std::span<const double> row) {
-  if (std::abs(row[1]) <= escape_limit_) return false;
+  if (!leaves_view(row)) return false;
   m.blew_up = true, m.blow_up_time = row[0];
   return true;
 }

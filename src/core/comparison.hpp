@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <span>
@@ -61,6 +62,9 @@ class Comparison {
   /// only non-finite values stop it).
   void set_escape_limit(double limit) { escape_limit_ = limit; }
   double escape_limit() const { return escape_limit_; }
+  /// Whether a member's row has left the view: its main quantity is beyond
+  /// the escape limit or not finite.
+  bool leaves_view(std::span<const double> row) const { return !(std::abs(row[1]) <= escape_limit_); }
   /// The limit every picture of a comparison uses: twice the largest
   /// amplitude the members can reach (from their energy), so that a scheme
   /// that gains energy is seen doing it before it leaves the view; no limit

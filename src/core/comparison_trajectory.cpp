@@ -50,7 +50,7 @@ void ComparisonTrajectory::check_escape(size_t i) {
   Trajectory& run = comparison_.trajectory(i);
   const std::span<double> row(scratch_.data(), run.width());
   run.row(row);
-  if (!std::isfinite(row[1]) || std::abs(row[1]) > comparison_.escape_limit()) members_[i].blow_up_time = run.t();
+  if (comparison_.leaves_view(row)) members_[i].blow_up_time = run.t();
 }
 
 bool ComparisonTrajectory::done() const {
