@@ -35,6 +35,15 @@ Canvas::Canvas(cairo_surface_t* surface, int width, int height)
   cairo_set_antialias(cr_.get(), CAIRO_ANTIALIAS_GOOD);
   cairo_set_line_join(cr_.get(), CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr_.get(), CAIRO_LINE_CAP_ROUND);
+  keep_labels(true);
+}
+
+void Canvas::keep_labels(bool keep) {
+  // Labels may keep as many bytes as the picture has, and at least 4 MiB.
+  if (keep && cairo_surface_get_type(surface()) == CAIRO_SURFACE_TYPE_IMAGE)
+    labels_ = std::make_shared<LabelCache>(std::max(std::size_t(4) << 20, std::size_t(4) * width_ * height_));
+  else
+    labels_.reset();
 }
 
 Canvas Canvas::image(int width, int height) {

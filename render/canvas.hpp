@@ -9,6 +9,7 @@
 
 #include "render/color.hpp"
 #include "render/damage.hpp"
+#include "render/label_cache.hpp"
 
 namespace vibra::render {
 
@@ -50,6 +51,13 @@ class Canvas {
   void flush() const;
   /// Vector canvases: finish writing the file; throws OutputError on failure.
   void finish();
+  /// Image canvases: labels laid out and drawn once, pasted after (see
+  /// LabelCache); null for a vector canvas, where text stays text.
+  LabelCache* labels() const { return labels_.get(); }
+  /// Image canvases: whether labels are kept (the default). Off, every label
+  /// is set afresh, as on a vector canvas: the reference that tests hold the
+  /// kept images to.
+  void keep_labels(bool keep);
 
   /// Paints every pixel with the colour (alpha included). A fully transparent
   /// colour on an SVG or PDF page draws nothing: the page is already empty.
@@ -88,6 +96,7 @@ class Canvas {
   std::uint64_t id_;
   bool tracking_ = false;
   Damage drawn_, drawn_last_frame_, restored_;
+  std::shared_ptr<LabelCache> labels_;
 };
 
 /// Maps world coordinates (y up, equal aspect) into a pixel rectangle (y down),

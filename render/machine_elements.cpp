@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace vibra::render {
 
@@ -149,40 +150,76 @@ void draw_hatched_surface(Canvas& canvas, const WorldView& view, const Point& a,
   (void)across;
 }
 
-void draw_ground_profile(Canvas& canvas, const WorldView& view, std::span<const Point> points, double depth,
-                         const Stroke& s) {
-  if (points.size() < 2) return;
-  const std::vector<Point> top = to_pixels(view, points);
-  const double drop = depth * view.zoom();
+namespace {
+/// One period of a ground's fill: a tile `period` pixels square, the pale
+/// `fill` crossed by hatches rising to the right (the lines u + v = k period).
+/// Repeated, the hatches run on unbroken across tiles.
+std::shared_ptr<cairo_surface_t> hatch_tile(int period, const Color& fill, const Stroke& hatch, double scale) {
+  std::shared_ptr<cairo_surface_t> tile(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, period, period),
+                                        cairo_surface_destroy);
+  cairo_t* cr = cairo_create(tile.get());
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_GOOD);  // as the canvas draws
+  cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, fill.a);
+  cairo_paint(cr);
+  cairo_set_source_rgba(cr, hatch.color.r, hatch.color.g, hatch.color.b, hatch.color.a);
+  cairo_set_line_width(cr, hatch.width * scale);
+  for (int k = 0; k <= 2; ++k) {  // k = 0 and 2 reach the corners
+    cairo_move_to(cr, -2, k * period + 2);
+    cairo_line_to(cr, k * period + 2, -2);
+  }
+  cairo_stroke(cr);
+  cairo_destroy(cr);
+  cairo_surface_flush(tile.get());
+  return tile;
+}
+}  // namespace
+
+void draw_ground_profile(Canvas& canvas, const WorldView& view, const std::function<double(double)>& height, double step,
+                         double depth, const Stroke& s) {
   cairo_t* cr = canvas.cr();
-  // The solid under the road: a pale band, hatched.
-  cairo_new_path(cr);
-  cairo_move_to(cr, top.front().x(), top.front().y());
-  for (const Point& p : top) cairo_line_to(cr, p.x(), p.y());
-  cairo_line_to(cr, top.back().x(), top.back().y() + drop);
-  for (auto p = top.rbegin(); p != top.rend(); ++p) cairo_line_to(cr, p->x(), p->y() + drop);
-  cairo_close_path(cr);
-  set_source(canvas, s.color.with_alpha(0.08));
-  cairo_save(cr);
-  canvas.fill_preserve();
-  cairo_clip(cr);
+  double clip_x0, clip_y0, clip_x1, clip_y1;
+  cairo_clip_extents(cr, &clip_x0, &clip_y0, &clip_x1, &clip_y1);
+  // The road's points at whole multiples of `step`, one beyond each side of
+  // the visible part.
+  const double zoom = view.zoom(), origin = view.to_pixel(Point(0, 0)).x();
+  const double reach = 2 * s.width * canvas.scale();
+  if (!(step > 0)) return;
+  const auto first = static_cast<long long>(std::floor((clip_x0 - reach - origin) / zoom / step));
+  const auto last = static_cast<long long>(std::ceil((clip_x1 + reach - origin) / zoom / step));
+  if (last - first > 1'000'000) return;
+  std::vector<Point> top;
+  top.reserve(size_t(last - first + 1));
+  for (long long i = first; i <= last; ++i) top.push_back(view.to_pixel(Point(i * step, height(i * step))));
+  if (top.size() < 2) return;
+  double low = top.front().y();  // the road's highest point, in pixel rows
+  for (const Point& p : top) low = std::min(low, p.y());
+  // The band ends below the visible part: deeper would not show.
+  const double drop = std::min(depth * zoom, std::max(0.0, clip_y1 + reach - low));
+
+  // The solid under the road: a pale band, hatched. The hatching is a tile
+  // repeated from a whole pixel near the world's origin, so it moves with the
+  // road; one fill paints it (stroking each hatch cut to the band would cost
+  // Cairo many times more).
   Stroke hatch = s;
   hatch.width = 0.5 * s.width;
   hatch.color = s.color.with_alpha(0.35);
-  const double spacing = 14 * canvas.scale();
-  double low = top.front().y(), high = top.front().y();
-  for (const Point& p : top) low = std::min(low, p.y()), high = std::max(high, p.y());
-  // Only the hatches that cross the clip (the band within the frame's
-  // visible part), in one stroke: a clipped stroke costs Cairo a mask pass.
-  double clip_x0, clip_y0, clip_x1, clip_y1;
-  cairo_clip_extents(cr, &clip_x0, &clip_y0, &clip_x1, &clip_y1);
-  const double rise = high - low + drop, start = top.front().x() - rise;
-  const double x0 = start + std::max(0.0, std::floor((clip_x0 - rise - start) / spacing)) * spacing;
-  const double x1 = std::min(top.back().x(), clip_x1);
-  std::vector<std::pair<Point, Point>> hatches;
-  for (double x = x0; x < x1; x += spacing) hatches.push_back({{x, high + drop}, {x + rise, low}});
-  draw_pixel_segments(canvas, hatches, hatch);
-  cairo_restore(cr);
+  const int period = std::max(4, static_cast<int>(std::lround(14 * canvas.scale())));
+  const std::shared_ptr<cairo_surface_t> tile = hatch_tile(period, s.color.with_alpha(0.08), hatch, canvas.scale());
+  cairo_pattern_t* fill = cairo_pattern_create_for_surface(tile.get());
+  cairo_pattern_set_extend(fill, CAIRO_EXTEND_REPEAT);
+  cairo_pattern_set_filter(fill, CAIRO_FILTER_NEAREST);
+  cairo_matrix_t shift;
+  cairo_matrix_init_translate(&shift, -std::round(origin), 0);
+  cairo_pattern_set_matrix(fill, &shift);
+  cairo_new_path(cr);
+  cairo_move_to(cr, top.front().x(), top.front().y());
+  for (const Point& p : top) cairo_line_to(cr, p.x(), p.y());
+  for (auto p = top.rbegin(); p != top.rend(); ++p) cairo_line_to(cr, p->x(), p->y() + drop);
+  cairo_close_path(cr);
+  cairo_set_source(cr, fill);
+  canvas.fill();
+  cairo_pattern_destroy(fill);
+
   Stroke line = s;
   line.width = 1.4 * s.width;
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);

@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -54,8 +55,12 @@ void draw_box(Canvas&, const WorldView&, const Point& low, const Point& high, co
 void draw_hatched_surface(Canvas&, const WorldView&, const Point& a, const Point& b, const Point& outside,
                           const Stroke&);
 
-/// A ground profile through `points` (world, x increasing): the line, and a
-/// band below it `depth` world units deep, hatched, so the road reads as solid.
-void draw_ground_profile(Canvas&, const WorldView&, std::span<const Point> points, double depth, const Stroke&);
+/// The ground under a road profile `height(x)` (world units) across the part
+/// of the view that is visible (the clip): the road's line through points
+/// `step` apart, and a band `depth` deep under it, hatched, so the road reads
+/// as solid. Points and hatches are fixed to the world, so when the view
+/// follows a vehicle the ground moves under it as a whole.
+void draw_ground_profile(Canvas&, const WorldView&, const std::function<double(double)>& height, double step,
+                         double depth, const Stroke&);
 
 }  // namespace vibra::render

@@ -4,16 +4,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 namespace vibra::render {
 
 namespace {
-std::unique_ptr<PangoLayout, void (*)(void*)> make_layout(Canvas& canvas, const std::string& markup,
-                                                          const TextStyle& style) {
-  PangoLayout* layout = pango_cairo_create_layout(canvas.cr());
+/// A new layout of the markup, set up for `cr` (the caller unrefs it).
+PangoLayout* new_layout(cairo_t* cr, const std::string& markup, const TextStyle& style, double scale) {
+  PangoLayout* layout = pango_cairo_create_layout(cr);
   PangoFontDescription* font = pango_font_description_from_string(style.family);
-  pango_font_description_set_absolute_size(font, style.size * canvas.scale() * PANGO_SCALE);
+  pango_font_description_set_absolute_size(font, style.size * scale * PANGO_SCALE);
   pango_layout_set_font_description(layout, font);
   pango_font_description_free(font);
   pango_layout_set_markup(layout, markup.c_str(), -1);
@@ -21,27 +22,101 @@ std::unique_ptr<PangoLayout, void (*)(void*)> make_layout(Canvas& canvas, const 
     pango_layout_set_width(layout, static_cast<int>(style.max_width * PANGO_SCALE));
     pango_layout_set_ellipsize(layout, PANGO_ELLIPSIZE_END);
   }
-  return {layout, g_object_unref};
+  return layout;
 }
 
-Point ink_size(PangoLayout* layout) {
-  PangoRectangle logical;
-  pango_layout_get_pixel_extents(layout, nullptr, &logical);
-  return {logical.width, logical.height};
+/// How far a halo reaches beyond the glyphs' outlines, in pixels.
+double halo_reach(const TextStyle& style, double scale) { return style.halo ? 2.5 * scale : 0; }
+
+/// The halo, then the text, with the layout's origin at (x, y).
+void show_layout(cairo_t* cr, PangoLayout* layout, const TextStyle& style, double scale, double x, double y) {
+  if (style.halo) {
+    cairo_save(cr);
+    cairo_move_to(cr, x, y);
+    pango_cairo_layout_path(cr, layout);
+    cairo_set_source_rgba(cr, style.halo_color.r, style.halo_color.g, style.halo_color.b, style.halo_color.a);
+    cairo_set_line_width(cr, 2 * halo_reach(style, scale));
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_stroke(cr);
+    cairo_restore(cr);
+  }
+  cairo_move_to(cr, x, y);
+  cairo_set_source_rgba(cr, style.color.r, style.color.g, style.color.b, style.color.a);
+  pango_cairo_show_layout(cr, layout);
+  cairo_new_path(cr);
 }
-}  // namespace
 
-void start_loading_fonts() { pango_cairo_font_map_get_default(); }
-
-Point text_size(Canvas& canvas, const std::string& markup, const TextStyle& style) {
-  return ink_size(make_layout(canvas, markup, style).get());
+/// The canvas's label cache, when labels may be pasted from it: an image
+/// canvas drawing at whole pixels (kept images sit on the pixel grid).
+LabelCache* pasting_cache(Canvas& canvas) {
+  LabelCache* cache = canvas.labels();
+  if (!cache) return nullptr;
+  cairo_matrix_t m;
+  cairo_get_matrix(canvas.cr(), &m);
+  const bool whole_pixels = m.xx == 1 && m.yy == 1 && m.xy == 0 && m.yx == 0 && m.x0 == std::round(m.x0) &&
+                            m.y0 == std::round(m.y0);
+  return whole_pixels ? cache : nullptr;
 }
 
-void draw_text(Canvas& canvas, const Point& at, const std::string& markup, const TextStyle& style, Anchor anchor) {
-  auto layout = make_layout(canvas, markup, style);
-  PangoRectangle ink, logical;
-  pango_layout_get_pixel_extents(layout.get(), &ink, &logical);
-  const Point size(logical.width, logical.height);  // as ink_size()
+/// Everything that decides a label's pixels, as one string.
+std::string label_key(const std::string& markup, const TextStyle& s, double scale) {
+  char numbers[320];
+  std::snprintf(numbers, sizeof numbers, "%a %a|%a %a %a %a|%d %a %a %a %a|%s|", s.size * scale, s.max_width, s.color.r,
+                s.color.g, s.color.b, s.color.a, int(s.halo), s.halo_color.r, s.halo_color.g, s.halo_color.b,
+                s.halo_color.a, s.family);
+  return numbers + markup;
+}
+
+LabelCache::Label& cached_label(LabelCache& cache, Canvas& canvas, const std::string& markup, const TextStyle& style) {
+  const std::string key = label_key(markup, style, canvas.scale());
+  if (LabelCache::Label* kept = cache.find(key)) return *kept;
+  LabelCache::Label label;
+  label.layout.reset(new_layout(canvas.cr(), markup, style, canvas.scale()), g_object_unref);
+  pango_layout_get_pixel_extents(label.layout.get(), &label.ink, &label.logical);
+  return cache.keep(key, std::move(label));
+}
+
+/// The pixels a label covers from its layout's origin: glyphs may reach
+/// beyond the logical box (italics, accents), and the halo beyond both.
+struct LabelBox {
+  int x0, y0, x1, y1;
+};
+LabelBox label_box(const PangoRectangle& ink, const PangoRectangle& logical, double reach) {
+  const int pad = static_cast<int>(std::ceil(reach));
+  return {std::min(ink.x, logical.x) - pad, std::min(ink.y, logical.y) - pad,
+          std::max(ink.x + ink.width, logical.x + logical.width) + pad,
+          std::max(ink.y + ink.height, logical.y + logical.height) + pad};
+}
+
+/// Makes a kept label's image; false if none could be made.
+bool draw_image(Canvas& canvas, LabelCache::Label& label, const std::string& markup, const TextStyle& style) {
+  const double scale = canvas.scale();
+  const LabelBox box = label_box(label.ink, label.logical, halo_reach(style, scale) + 1);
+  const int w = std::max(1, box.x1 - box.x0), h = std::max(1, box.y1 - box.y0);
+  std::shared_ptr<cairo_surface_t> image(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h), cairo_surface_destroy);
+  if (cairo_surface_status(image.get()) != CAIRO_STATUS_SUCCESS) return false;
+  cairo_t* cr = cairo_create(image.get());
+  // As the canvas's own context draws (see Canvas).
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_GOOD);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  std::shared_ptr<PangoLayout> layout = std::move(label.layout);
+  if (layout)
+    pango_cairo_update_layout(cr, layout.get());
+  else
+    layout.reset(new_layout(cr, markup, style, scale), g_object_unref);
+  show_layout(cr, layout.get(), style, scale, -box.x0, -box.y0);
+  const bool drawn = cairo_status(cr) == CAIRO_STATUS_SUCCESS;
+  cairo_destroy(cr);
+  if (!drawn) return false;
+  cairo_surface_flush(image.get());
+  label.image = std::move(image);
+  label.x = box.x0, label.y = box.y0;
+  canvas.labels()->count_image(std::size_t(w) * h * 4);
+  return true;
+}
+
+/// Where a box of `size` goes so that `anchor` of it lies at `at`, in whole pixels.
+Point placed(const Point& at, const Point& size, Anchor anchor) {
   double fx = 0.5, fy = 0.5;  // fraction of the box left of / above the anchor
   switch (anchor) {
     case Anchor::center: break;
@@ -54,26 +129,47 @@ void draw_text(Canvas& canvas, const Point& at, const std::string& markup, const
     case Anchor::bottom_left: fx = 0, fy = 1; break;
     case Anchor::bottom_right: fx = 1, fy = 1; break;
   }
-  cairo_t* cr = canvas.cr();
-  const double x = std::round(at.x() - fx * size.x()), y = std::round(at.y() - fy * size.y());
-  cairo_move_to(cr, x, y);
-  if (style.halo) {
-    cairo_save(cr);
-    pango_cairo_layout_path(cr, layout.get());
-    cairo_set_source_rgba(cr, style.halo_color.r, style.halo_color.g, style.halo_color.b, style.halo_color.a);
-    cairo_set_line_width(cr, 5 * canvas.scale());
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    canvas.stroke();
-    cairo_restore(cr);
-    cairo_move_to(cr, x, y);
+  return {std::round(at.x() - fx * size.x()), std::round(at.y() - fy * size.y())};
+}
+}  // namespace
+
+void start_loading_fonts() { pango_cairo_font_map_get_default(); }
+
+Point text_size(Canvas& canvas, const std::string& markup, const TextStyle& style) {
+  if (LabelCache* cache = pasting_cache(canvas)) {
+    const PangoRectangle& logical = cached_label(*cache, canvas, markup, style).logical;
+    return {logical.width, logical.height};
   }
-  // Glyphs may reach beyond the logical box (italics, accents): note both boxes.
-  canvas.mark_drawn(x + std::min(ink.x, logical.x), y + std::min(ink.y, logical.y),
-                    x + std::max(ink.x + ink.width, logical.x + logical.width),
-                    y + std::max(ink.y + ink.height, logical.y + logical.height));
-  cairo_set_source_rgba(cr, style.color.r, style.color.g, style.color.b, style.color.a);
-  pango_cairo_show_layout(cr, layout.get());
-  cairo_new_path(cr);
+  PangoLayout* layout = new_layout(canvas.cr(), markup, style, canvas.scale());
+  PangoRectangle logical;
+  pango_layout_get_pixel_extents(layout, nullptr, &logical);
+  g_object_unref(layout);
+  return {logical.width, logical.height};
+}
+
+void draw_text(Canvas& canvas, const Point& at, const std::string& markup, const TextStyle& style, Anchor anchor) {
+  cairo_t* cr = canvas.cr();
+  const double scale = canvas.scale();
+  LabelCache* cache = pasting_cache(canvas);
+  LabelCache::Label* label = cache ? &cached_label(*cache, canvas, markup, style) : nullptr;
+  if (label && (label->image || draw_image(canvas, *label, markup, style))) {
+    const Point origin = placed(at, {label->logical.width, label->logical.height}, anchor);
+    const double x = origin.x() + label->x, y = origin.y() + label->y;
+    const int w = cairo_image_surface_get_width(label->image.get()), h = cairo_image_surface_get_height(label->image.get());
+    canvas.mark_drawn(x, y, x + w, y + h);
+    cairo_set_source_surface(cr, label->image.get(), x, y);
+    cairo_rectangle(cr, x, y, w, h);
+    cairo_fill(cr);
+    return;
+  }
+  // Drawn directly: a vector canvas (or no memory for an image).
+  std::shared_ptr<PangoLayout> layout(new_layout(cr, markup, style, scale), g_object_unref);
+  PangoRectangle ink, logical;
+  pango_layout_get_pixel_extents(layout.get(), &ink, &logical);
+  const Point origin = placed(at, {logical.width, logical.height}, anchor);
+  const LabelBox box = label_box(ink, logical, halo_reach(style, scale));
+  canvas.mark_drawn(origin.x() + box.x0, origin.y() + box.y0, origin.x() + box.x1, origin.y() + box.y1);
+  show_layout(cr, layout.get(), style, scale, origin.x(), origin.y());
 }
 
 Point label_beyond(const Point& tip, const Point& direction, const Point& size, double gap) {

@@ -56,12 +56,11 @@ std::array<Arrow, 2> BumpyRoadDiagram::force_arrows(std::span<const double> row)
 void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
   const double x = row[3];
   const render::Stroke ink{colors_.wire, 2.2};
-  // The road past both sides of the view (the scene clips it to the diagram's
+  // The road across the visible part (the scene clips it to the diagram's
   // area), a point per road sample or per few pixels, whichever is coarser.
-  const double step = std::max(road_->dx(), 3 / view.zoom());
-  std::vector<Point> road;
-  for (double s = x - 3 * half_width_; s <= x + 3 * half_width_; s += step) road.emplace_back(s, road_->height(s));
-  if (!ghost()) render::draw_ground_profile(canvas, view, road, 0.3 * vehicle_.R + (high_ - low_), ink);
+  if (!ghost())
+    render::draw_ground_profile(canvas, view, [this](double s) { return road_->height(s); },
+                                std::max(road_->dx(), 3 / view.zoom()), 0.3 * vehicle_.R + (high_ - low_), ink);
 
   const Point a = axle(row);
   const double bottom = body_bottom(row);

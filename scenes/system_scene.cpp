@@ -1,6 +1,7 @@
 #include "scenes/system_scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "render/caption.hpp"
 #include "render/text.hpp"
@@ -113,7 +114,9 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
     const double bottom =
         moving ? std::min(area.y + area.h, view_area_.y + view_area_.h + 16 * canvas.scale()) : area.y + area.h;
     const double right = bars_ ? bars_->area().x - 8 * canvas.scale() : area.x + area.w;
-    cairo_rectangle(canvas.cr(), area.x, area.y, right - area.x, bottom - area.y);
+    // At whole pixels: Cairo clips to a pixel-aligned rectangle without a mask.
+    const double x0 = std::round(area.x), y0 = std::round(area.y);
+    cairo_rectangle(canvas.cr(), x0, y0, std::round(right) - x0, std::round(bottom) - y0);
     cairo_clip(canvas.cr());
     diagram_->draw(canvas, view, row);
     cairo_restore(canvas.cr());
