@@ -8,6 +8,7 @@ namespace vibra::render {
 struct Color {
   double r = 0, g = 0, b = 0, a = 1;
   Color with_alpha(double alpha) const { return {r, g, b, alpha}; }
+  bool operator==(const Color&) const = default;
 };
 
 /// Parses "#rrggbb" or "#rrggbbaa"; throws std::invalid_argument otherwise.

@@ -1,5 +1,7 @@
 #pragma once
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -22,9 +24,15 @@ class Trail {
 
   /// Points must come in time order.
   void add(double t, const Point& p);
-  /// The path from `t - fade` to `t` as a polyline whose opacity falls from
-  /// 1 at t to 0 at `t - fade`; it ends at `head` (the body's position at t)
-  /// when given, else at the latest kept point before t.
+  /// The path over the last `fade` time units before `t`, fading in twenty
+  /// steps from the colour at 0.8 opacity to nothing; it ends at `head` (the
+  /// body's position at t) when given, else at the latest kept point before t.
+  ///
+  /// The steps are fixed in time: between two multiples of fade/20 every
+  /// older point keeps its opacity, so on an image canvas that older part is
+  /// drawn once into a layer and pasted, and only the newest stretch is
+  /// stroked each frame. A frame costs the same after a hundred orbits as
+  /// after one, and its pixels depend only on t, never on earlier frames.
   void draw(Canvas&, const WorldView&, double t, double fade, const Color&, double width,
             const std::optional<Point>& head = std::nullopt) const;
 
@@ -49,6 +57,18 @@ class Trail {
   mutable std::vector<Stamped> drawn_;
   mutable double drawn_zoom_ = 0;
   mutable size_t drawn_version_ = size_t(-1);
+
+  /// The older part of the trail as drawn for one set of fixed steps.
+  struct Layer {
+    std::uint64_t canvas = 0;
+    size_t version = 0;
+    double settled = 0, fade = 0, width = 0, zoom = 0;
+    Point origin = Point::Zero();  ///< where the view puts the world's origin
+    Color color;
+    std::shared_ptr<cairo_surface_t> image;  ///< null: nothing to draw
+    int x = 0, y = 0;                        ///< the image's top-left in the canvas
+  };
+  mutable Layer layer_;
 };
 
 }  // namespace vibra::render

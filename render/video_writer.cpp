@@ -17,6 +17,7 @@ extern "C" {
 #include <mutex>
 #include <optional>
 #include <stdexcept>
+#include <map>
 #include <thread>
 
 #include "render/av_error.hpp"
@@ -217,6 +218,8 @@ struct VideoWriter::Impl {
   AVStream* stream = nullptr;
   AVPacket* packet = nullptr;
   std::unique_ptr<Yuv420Converter> converter;
+  /// Per frame of the queue: which conversion its pixels hold (see Yuv420Converter::convert).
+  std::map<const AVFrame*, std::uint64_t> frame_holds;
   std::unique_ptr<YuvaConverter> alpha_converter;  ///< transparent VP9 and ProRes, beside the opaque path
   std::unique_ptr<GifPalette> palette;
   int width = 0, height = 0;              ///< of the frames passed to write()
@@ -283,7 +286,11 @@ void VideoWriter::Impl::check(int code, const std::string& what, bool output) co
 /// Runs on the caller's thread, beside the encoder's: conversion is the
 /// copy of the caller's pixels that is needed anyway.
 void VideoWriter::Impl::convert(const std::uint8_t* argb32, int stride, const Damage* changed, AVFrame* into) {
-  if (!av_frame_is_writable(into)) check(renew_frame_pixels(into), "preparing a frame", false);
+  std::uint64_t& holds = frame_holds[into];
+  if (!av_frame_is_writable(into)) {
+    check(renew_frame_pixels(into), "preparing a frame", false);
+    holds = 0;  // new pixels: nothing known of them
+  }
   if (palette) {
     for (int y = 0; y < height; ++y) {
       const auto* in = reinterpret_cast<const std::uint32_t*>(argb32 + std::ptrdiff_t(y) * stride);
@@ -299,7 +306,7 @@ void VideoWriter::Impl::convert(const std::uint8_t* argb32, int stride, const Da
     converter->convert(argb32, stride,
                        {{into->data[0], into->data[1], into->data[2]},
                         {into->linesize[0], into->linesize[1], into->linesize[2]}},
-                       changed);
+                       changed, &holds);
   }
   into->pts = next_pts++;
 }

@@ -31,7 +31,7 @@ void Y4mStream::write(const std::uint8_t* argb32, int stride, const Damage* chan
   std::uint8_t* u = y + std::size_t(width_) * height_;
   std::uint8_t* v = u + std::size_t((width_ + 1) / 2) * ((height_ + 1) / 2);
   const int chroma_width = (width_ + 1) / 2;
-  converter_.convert(argb32, stride, {{y, u, v}, {width_, chroma_width, chroma_width}}, changed);
+  converter_.convert(argb32, stride, {{y, u, v}, {width_, chroma_width, chroma_width}}, changed, &frame_holds_);
   if (frames_ == 0) write_standard_output(header_.data(), header_.size());
   write_standard_output(frame_.data(), frame_.size());
   ++frames_;

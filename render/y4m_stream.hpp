@@ -33,6 +33,7 @@ class Y4mStream {
   Yuv420Converter converter_;
   std::string header_;
   std::vector<std::uint8_t> frame_;  ///< "FRAME\n" and the planes, written at once
+  std::uint64_t frame_holds_ = 0;    ///< which conversion frame_ holds
   int width_, height_;
   long long frames_ = 0;
 };

@@ -41,33 +41,54 @@ Yuv420Converter::Yuv420Converter(int width, int height, int out_width, int out_h
   y_ = HugePageArray<std::uint8_t>(std::size_t(padded_width_) * padded_height_);
   u_ = HugePageArray<std::uint8_t>(y_.size() / 4);
   v_ = HugePageArray<std::uint8_t>(y_.size() / 4);
+  block_converted_.assign(std::size_t(padded_height_ / 2) * blocks_per_row(), 0);
 }
 
 long long Yuv420Converter::blocks() const {
   return (padded_height_ / 2LL) * ((width_ + kBlockWidth - 1) / kBlockWidth);
 }
 
-void Yuv420Converter::convert(const std::uint8_t* argb32, int stride, const Yuv420Planes& out,
-                              const Damage* changed) {
+void Yuv420Converter::convert(const std::uint8_t* argb32, int stride, const Yuv420Planes& out, const Damage* changed,
+                              std::uint64_t* out_holds) {
   converted_ = 0;
-  if (changed && !first_ && changed->empty()) return copy_out(out);
-  for (int pair = 0; pair < padded_height_ / 2; ++pair) {
-    const auto* top = reinterpret_cast<const std::uint32_t*>(argb32 + std::ptrdiff_t(2 * pair) * stride);
-    const int bottom_row = std::min(2 * pair + 1, height_ - 1);  // an odd height repeats the last row
-    const auto* bottom = reinterpret_cast<const std::uint32_t*>(argb32 + std::ptrdiff_t(bottom_row) * stride);
-    if (changed && !first_)
-      changed->spans(2 * pair, 2 * pair + 2, spans_);
-    else
-      spans_.assign(1, {0, width_});
-    int next_block = 0;  // spans may share a block: visit each once
-    for (const auto& [span_x0, span_x1] : spans_)
-      for (int block = std::max(next_block, span_x0 / kBlockWidth); block * kBlockWidth < span_x1; ++block) {
-        next_block = block + 1;
-        convert_if_changed(pair, block * kBlockWidth, top, bottom);
-      }
+  ++conversion_;
+  const int pairs = padded_height_ / 2;
+  if (first_ || !changed || changed->all()) {
+    spans_.assign(1, {0, width_});
+    for (int pair = 0; pair < pairs; ++pair) convert_spans(pair, argb32, stride);
+  } else if (!changed->empty()) {
+    // The set of rectangles a row pair meets changes only where one starts or
+    // ends: work out the columns once per stretch of pairs between those.
+    std::vector<int>& edges = edges_;
+    edges.clear();
+    for (const DamageRect& r : changed->rects()) edges.push_back(r.y0 / 2), edges.push_back((r.y1 + 1) / 2);
+    edges.push_back(pairs);
+    std::sort(edges.begin(), edges.end());
+    int from = 0;
+    for (const int to : edges) {
+      if (to <= from) continue;
+      changed->spans(2 * from, 2 * from + 2, spans_);
+      if (!spans_.empty())
+        for (int pair = from; pair < std::min(to, pairs); ++pair) convert_spans(pair, argb32, stride);
+      from = to;
+    }
   }
   first_ = false;
-  copy_out(out);
+  const std::uint64_t since = out_holds ? *out_holds : 0;
+  if (out_holds) *out_holds = conversion_;
+  copy_out(out, since);
+}
+
+void Yuv420Converter::convert_spans(int pair, const std::uint8_t* argb32, int stride) {
+  const auto* top = reinterpret_cast<const std::uint32_t*>(argb32 + std::ptrdiff_t(2 * pair) * stride);
+  const int bottom_row = std::min(2 * pair + 1, height_ - 1);  // an odd height repeats the last row
+  const auto* bottom = reinterpret_cast<const std::uint32_t*>(argb32 + std::ptrdiff_t(bottom_row) * stride);
+  int next_block = 0;  // spans may share a block: visit each once
+  for (const auto& [span_x0, span_x1] : spans_)
+    for (int block = std::max(next_block, span_x0 / kBlockWidth); block * kBlockWidth < span_x1; ++block) {
+      next_block = block + 1;
+      convert_if_changed(pair, block * kBlockWidth, top, bottom);
+    }
 }
 
 void Yuv420Converter::convert_if_changed(int pair, int x0, const std::uint32_t* top, const std::uint32_t* bottom) {
@@ -85,18 +106,33 @@ void Yuv420Converter::convert_if_changed(int pair, int x0, const std::uint32_t* 
     kept_bottom[x1] = kept_bottom[x1 - 1];
   }
   convert_block(pair, x0, x1 == width_ ? padded_width_ : x1);
+  block_converted_[std::size_t(pair) * blocks_per_row() + x0 / kBlockWidth] = conversion_;
   ++converted_;
 }
 
-void Yuv420Converter::copy_out(const Yuv420Planes& out) const {
-  for (int row = 0; row < out_height_; ++row)
-    std::memcpy(out.data[0] + std::ptrdiff_t(row) * out.linesize[0], y_.data() + std::size_t(row) * padded_width_,
-                out_width_);
-  const int chroma_width = (out_width_ + 1) / 2, chroma_height = (out_height_ + 1) / 2;
-  for (int row = 0; row < chroma_height; ++row) {
-    const std::size_t from = std::size_t(row) * (padded_width_ / 2);
-    std::memcpy(out.data[1] + std::ptrdiff_t(row) * out.linesize[1], u_.data() + from, chroma_width);
-    std::memcpy(out.data[2] + std::ptrdiff_t(row) * out.linesize[2], v_.data() + from, chroma_width);
+void Yuv420Converter::copy_out(const Yuv420Planes& out, std::uint64_t since) const {
+  const int per_row = blocks_per_row(), chroma_height = (out_height_ + 1) / 2;
+  for (int pair = 0; pair < padded_height_ / 2; ++pair) {
+    const std::uint64_t* converted = block_converted_.data() + std::size_t(pair) * per_row;
+    for (int block = 0; block < per_row;) {
+      if (converted[block] <= since) {
+        ++block;
+        continue;
+      }
+      int end = block + 1;  // a run of blocks to copy, in one go
+      while (end < per_row && converted[end] > since) ++end;
+      const int x0 = block * kBlockWidth, x1 = end == per_row ? out_width_ : end * kBlockWidth;
+      for (int row = 2 * pair; row < std::min(2 * pair + 2, out_height_); ++row)
+        std::memcpy(out.data[0] + std::ptrdiff_t(row) * out.linesize[0] + x0,
+                    y_.data() + std::size_t(row) * padded_width_ + x0, x1 - x0);
+      if (pair < chroma_height) {
+        const std::size_t from = std::size_t(pair) * (padded_width_ / 2) + x0 / 2;
+        const int bytes = (x1 + 1) / 2 - x0 / 2;
+        std::memcpy(out.data[1] + std::ptrdiff_t(pair) * out.linesize[1] + x0 / 2, u_.data() + from, bytes);
+        std::memcpy(out.data[2] + std::ptrdiff_t(pair) * out.linesize[2] + x0 / 2, v_.data() + from, bytes);
+      }
+      block = end;
+    }
   }
 }
 

@@ -33,7 +33,13 @@ class Yuv420Converter {
   /// Converts one frame (rows `stride` bytes apart) into `out`: luma
   /// out_width x out_height, chroma half of that rounded up. `changed`, if
   /// given, bounds where the frame differs from the last one.
-  void convert(const std::uint8_t* argb32, int stride, const Yuv420Planes& out, const Damage* changed = nullptr);
+  ///
+  /// `out_holds`, if given, says which conversion `out` already holds (a
+  /// number this converter gave it before, or 0 for unknown pixels) and is
+  /// set to this one's: an encoder's frames come round again, and only the
+  /// blocks converted since need copying into them.
+  void convert(const std::uint8_t* argb32, int stride, const Yuv420Planes& out, const Damage* changed = nullptr,
+               std::uint64_t* out_holds = nullptr);
 
   /// Blocks converted by the last convert(), of blocks(): for tests and tuning.
   long long converted_blocks() const { return converted_; }
@@ -45,15 +51,22 @@ class Yuv420Converter {
   /// Converts the block at row pair `pair`, columns from x0, if it changed.
   void convert_if_changed(int pair, int x0, const std::uint32_t* top, const std::uint32_t* bottom);
   void convert_block(int pair, int x0, int x1);
-  void copy_out(const Yuv420Planes& out) const;
+  /// Looks at the blocks of row pair `pair` that the spans touch.
+  void convert_spans(int pair, const std::uint8_t* argb32, int stride);
+  /// Copies the blocks converted after conversion `since` into `out`.
+  void copy_out(const Yuv420Planes& out, std::uint64_t since) const;
+  int blocks_per_row() const { return (width_ + kBlockWidth - 1) / kBlockWidth; }
 
   int width_, height_, out_width_, out_height_;
   int padded_width_, padded_height_;  ///< even
   bool first_ = true;
   long long converted_ = 0;
+  std::uint64_t conversion_ = 0;               ///< numbers the calls to convert(), from 1
+  std::vector<std::uint64_t> block_converted_;  ///< per block: the conversion that last changed it
   HugePageArray<std::uint32_t> previous_;  ///< the last frame, padded to even size (written whole first)
   HugePageArray<std::uint8_t> y_, u_, v_;  ///< its conversion, padded_width_ (/2) wide
   std::vector<std::pair<int, int>> spans_;  ///< scratch: the changed columns of a row pair
+  std::vector<int> edges_;                  ///< scratch: row pairs where a damage rectangle starts or ends
 };
 
 }  // namespace vibra::render

@@ -76,6 +76,21 @@ TEST_CASE("PNG segments are the one-pass render's frames, byte for byte, in one 
   }
 }
 
+TEST_CASE("PNG segments of scenes with trails and labels are the one-pass frames too", "[render][segment]") {
+  // The trail's older part is pasted from a layer and labels from their kept
+  // images: a frame's pixels must not depend on the frames drawn before it.
+  for (const std::string scene : {" orbit", " elastic_pendulum", " spring_dashpot"}) {
+    INFO(scene);
+    const std::string args = scene + kSmall;
+    ScratchDirectory whole, split;
+    REQUIRE(run_vibra("render" + args + " -o " + (whole / "f_%03d.png")).exit_code == 0);
+    render_segments(args, 3, split / "f_%03d.png");
+    const auto expected = files_of(whole.path), got = files_of(split.path);
+    REQUIRE(expected.size() >= 10);
+    CHECK(got == expected);
+  }
+}
+
 TEST_CASE("lossless segments joined decode to exactly the one-pass frames: H.264 in MP4, VP9 in WebM", "[render][segment][video]") {
   for (const std::string ext : {".mp4", ".webm"}) {
     INFO(ext);

@@ -3,7 +3,11 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
+#include "render/canvas.hpp"
+#include "render/color.hpp"
 #include "render/trail.hpp"
 
 using vibra::render::Point;
@@ -89,5 +93,60 @@ TEST_CASE("trail: memory stays within its budget over any number of steps", "[re
     const Trail trail = circle(steps, 100, 1024);
     CHECK(trail.points().size() <= 1024);
     CHECK(trail.drawn_points(200).size() <= trail.points().size());
+  }
+}
+
+namespace {
+/// The canvas's pixel at (x, y), as 0xAARRGGBB.
+std::uint32_t pixel_at(const vibra::render::Canvas& c, int x, int y) {
+  return reinterpret_cast<const std::uint32_t*>(c.data() + y * c.stride())[x];
+}
+
+/// A straight trail along y = 0 from x = 0 to 10 over 10 time units.
+Trail straight() {
+  Trail trail(1e-3);
+  for (int n = 0; n <= 1000; ++n) trail.add(n * 0.01, Point(n * 0.01, 0));
+  return trail;
+}
+}  // namespace
+
+TEST_CASE("trail: the fade darkens steadily toward the head, without beads where its steps meet",
+          "[render][trail]") {
+  using namespace vibra::render;
+  Canvas canvas = Canvas::image(600, 100);
+  canvas.clear(palette::paper);
+  const WorldView view(Eigen::AlignedBox2d(Point(0, -1), Point(10, 1)), {50, 0, 500, 100});
+  straight().draw(canvas, view, 10, 8, palette::ink, 2);
+  canvas.flush();
+  // Along the line's centre, from the tail end (x = 2) to the head (x = 10):
+  // never lighter than the pixel before it.
+  int previous = 256, steps = 0;
+  for (int x = int(view.to_pixel(Point(2.3, 0)).x()); x < int(view.to_pixel(Point(9.9, 0)).x()); ++x) {
+    const int green = int(pixel_at(canvas, x, 50) >> 8 & 0xff);
+    INFO("x = " << x);
+    REQUIRE(green <= previous);
+    steps += green < previous;
+    previous = green;
+  }
+  CHECK(steps >= 15);  // it fades in steps, not at once
+}
+
+TEST_CASE("trail: a frame's pixels depend only on its time, not on the frames drawn before", "[render][trail]") {
+  using namespace vibra::render;
+  const Trail trail = circle(20000, 4);
+  const WorldView view(Eigen::AlignedBox2d(Point(-1.2, -1.2), Point(1.2, 1.2)), {0, 0, 300, 300});
+  Canvas running = Canvas::image(300, 300);
+  for (double t = 2; t < 25; t += 0.37) {
+    running.clear(palette::paper);
+    trail.draw(running, view, t, 6, palette::blue, 1.6, Point(std::cos(t), std::sin(t)));
+    Canvas fresh = Canvas::image(300, 300);
+    fresh.clear(palette::paper);
+    circle(20000, 4).draw(fresh, view, t, 6, palette::blue, 1.6, Point(std::cos(t), std::sin(t)));
+    running.flush(), fresh.flush();
+    INFO("t = " << t);
+    bool same = true;
+    for (int y = 0; y < 300 && same; ++y)
+      same = std::memcmp(running.data() + y * running.stride(), fresh.data() + y * fresh.stride(), 4 * 300) == 0;
+    CHECK(same);
   }
 }

@@ -3,6 +3,7 @@ extern "C" {
 }
 
 #include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstdlib>
@@ -142,6 +143,53 @@ TEST_CASE("yuv420: with damage given, only the damaged blocks are looked at", "[
   converter.convert(image.bytes(), image.stride, out.planes(), &changed);
   CHECK(converter.converted_blocks() == 1);  // the blue pixel's block, found by comparing
   CHECK(out == convert_once(image, w, h));
+}
+
+TEST_CASE("yuv420: outputs that come round again get the blocks converted since they were last written",
+          "[yuv]") {
+  // An encoder's queue hands the converter its frames in turn; each must end
+  // up as a full conversion of the latest picture, odd sizes included.
+  for (const auto& [w, h, out_w, out_h] : {std::array{200, 90, 200, 90}, std::array{75, 41, 76, 42}, std::array{75, 41, 75, 41}}) {
+    INFO(w << "x" << h << " into " << out_w << "x" << out_h);
+    std::mt19937 random(11);
+    Image image(w, h);
+    Yuv420Converter converter(w, h, out_w, out_h);
+    std::vector<Yuv> outputs(3, Yuv(out_w, out_h));
+    std::vector<std::uint64_t> holds(outputs.size(), 0);
+    for (int frame = 0; frame < 12; ++frame) {
+      vibra::render::Damage changed(w, h);
+      for (int k = 0; k < 3; ++k) {  // a few small changes, each inside the damage given
+        const int x = int(random() % w), y = int(random() % h);
+        image.at(x, y) = argb(int(random() % 256), 40, 200);
+        changed.add(x, y, x + 1, y + 1, 0);
+      }
+      if (frame == 7) changed.add_all();
+      Yuv& out = outputs[frame % outputs.size()];
+      converter.convert(image.bytes(), image.stride, out.planes(), frame == 0 ? nullptr : &changed,
+                        &holds[frame % outputs.size()]);
+      CHECK(out == convert_once(image, out_w, out_h));
+    }
+  }
+}
+
+TEST_CASE("yuv420: an output that holds the last conversion is not copied into again", "[yuv]") {
+  const int w = 128, h = 64;
+  Image image(w, h);
+  Yuv420Converter converter(w, h, w, h);
+  Yuv out(w, h);
+  std::uint64_t holds = 0;
+  converter.convert(image.bytes(), image.stride, out.planes(), nullptr, &holds);
+  CHECK(holds > 0);
+  out.y[60 * w + 100] = 7;  // a mark where nothing will change
+  image.at(10, 10) = argb(255, 0, 0);
+  vibra::render::Damage changed(w, h);
+  changed.add(8, 8, 12, 12, 0);
+  converter.convert(image.bytes(), image.stride, out.planes(), &changed, &holds);
+  CHECK(int(out.y[10 * w + 10]) == 63);  // the changed block copied
+  CHECK(int(out.y[60 * w + 100]) == 7);  // the rest left as it was
+  std::uint64_t unknown = 0;  // an output of unknown pixels gets everything
+  converter.convert(image.bytes(), image.stride, out.planes(), &changed, &unknown);
+  CHECK(int(out.y[60 * w + 100]) == 235);
 }
 
 TEST_CASE("yuv420: an odd size is padded by repeating the last column and row", "[yuv]") {
