@@ -136,23 +136,40 @@ void Yuv420Converter::copy_out(const Yuv420Planes& out, std::uint64_t since) con
   }
 }
 
+namespace {
+// The conversion of a stretch of rows, in loops a compiler can vectorize
+// (no aliasing, one pixel or one 2x2 block per iteration); built for AVX2
+// beside the baseline, the faster chosen when the program starts.
+[[gnu::target_clones("avx2", "default")]] void luma_row(const std::uint32_t* __restrict in,
+                                                          std::uint8_t* __restrict out, int n) {
+  for (int x = 0; x < n; ++x) out[x] = luma(in[x]);
+}
+
+[[gnu::target_clones("avx2", "default")]] void chroma_row(const std::uint32_t* __restrict top,
+                                                            const std::uint32_t* __restrict bottom,
+                                                            std::uint8_t* __restrict u, std::uint8_t* __restrict v,
+                                                            int pairs) {
+  constexpr int kChromaRound = 1 << (kShift + 1), kChromaOffset = 128 << (kShift + 2);
+  for (int i = 0; i < pairs; ++i) {
+    const std::uint32_t a = top[2 * i], b = top[2 * i + 1], c = bottom[2 * i], d = bottom[2 * i + 1];
+    const int r = red(a) + red(b) + red(c) + red(d);
+    const int g = green(a) + green(b) + green(c) + green(d);
+    const int bl = blue(a) + blue(b) + blue(c) + blue(d);
+    u[i] = static_cast<std::uint8_t>((kUr * r + kUg * g + kUb * bl + kChromaOffset + kChromaRound) >> (kShift + 2));
+    v[i] = static_cast<std::uint8_t>((kVr * r + kVg * g + kVb * bl + kChromaOffset + kChromaRound) >> (kShift + 2));
+  }
+}
+}  // namespace
+
 void Yuv420Converter::convert_block(int pair, int x0, int x1) {
   const std::uint32_t* top = previous_.data() + std::size_t(2 * pair) * padded_width_;
   const std::uint32_t* bottom = top + padded_width_;
   std::uint8_t* y_top = y_.data() + std::size_t(2 * pair) * padded_width_;
   std::uint8_t* y_bottom = y_top + padded_width_;
-  std::uint8_t* u = u_.data() + std::size_t(pair) * (padded_width_ / 2);
-  std::uint8_t* v = v_.data() + std::size_t(pair) * (padded_width_ / 2);
-  constexpr int kChromaRound = 1 << (kShift + 1), kChromaOffset = 128 << (kShift + 2);
-  for (int x = x0; x < x1; x += 2) {
-    const std::uint32_t a = top[x], b = top[x + 1], c = bottom[x], d = bottom[x + 1];
-    y_top[x] = luma(a), y_top[x + 1] = luma(b), y_bottom[x] = luma(c), y_bottom[x + 1] = luma(d);
-    const int r = red(a) + red(b) + red(c) + red(d);
-    const int g = green(a) + green(b) + green(c) + green(d);
-    const int bl = blue(a) + blue(b) + blue(c) + blue(d);
-    u[x / 2] = static_cast<std::uint8_t>((kUr * r + kUg * g + kUb * bl + kChromaOffset + kChromaRound) >> (kShift + 2));
-    v[x / 2] = static_cast<std::uint8_t>((kVr * r + kVg * g + kVb * bl + kChromaOffset + kChromaRound) >> (kShift + 2));
-  }
+  luma_row(top + x0, y_top + x0, x1 - x0);
+  luma_row(bottom + x0, y_bottom + x0, x1 - x0);
+  chroma_row(top + x0, bottom + x0, u_.data() + std::size_t(pair) * (padded_width_ / 2) + x0 / 2,
+             v_.data() + std::size_t(pair) * (padded_width_ / 2) + x0 / 2, (x1 - x0) / 2);
 }
 
 }  // namespace vibra::render
