@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 
 namespace vibra::render {
@@ -58,13 +57,17 @@ LabelCache* pasting_cache(Canvas& canvas) {
   return whole_pixels ? cache : nullptr;
 }
 
-/// Everything that decides a label's pixels, as one string.
+/// Everything that decides a label's pixels, as one string: the numbers'
+/// bytes, the family, then the markup (a frame looks up every label: no
+/// formatting here).
 std::string label_key(const std::string& markup, const TextStyle& s, double scale) {
-  char numbers[320];
-  std::snprintf(numbers, sizeof numbers, "%a %a|%a %a %a %a|%d %a %a %a %a|%s|", s.size * scale, s.max_width, s.color.r,
-                s.color.g, s.color.b, s.color.a, int(s.halo), s.halo_color.r, s.halo_color.g, s.halo_color.b,
-                s.halo_color.a, s.family);
-  return numbers + markup;
+  const double numbers[] = {s.size * scale, s.max_width,     s.color.r,      s.color.g,      s.color.b,     s.color.a,
+                            double(s.halo), s.halo_color.r, s.halo_color.g, s.halo_color.b, s.halo_color.a};
+  std::string key(reinterpret_cast<const char*>(numbers), sizeof numbers);
+  key += s.family;
+  key += '\0';
+  key += markup;
+  return key;
 }
 
 LabelCache::Label& cached_label(LabelCache& cache, Canvas& canvas, const std::string& markup, const TextStyle& style) {

@@ -8,13 +8,25 @@ namespace vibra::scenes {
 
 void draw_readout(render::Canvas& canvas, const render::PixelRect& area, double t, const SceneStyle& style) {
   const double scale = canvas.scale();
-  char text[96];
-  if (style.period > 0)
-    std::snprintf(text, sizeof text, "<i>t</i> = %.2f   (%.2f periods)", t, t / style.period);
-  else
-    std::snprintf(text, sizeof text, "<i>t</i> = %.2f", t);
-  render::draw_text(canvas, {area.x + 16 * scale, area.y + 14 * scale}, text, {20, style.colors.wire},
-                    render::Anchor::top_left);
+  char time[32], periods[32] = "";
+  std::snprintf(time, sizeof time, "%.2f", t);
+  if (style.period > 0) std::snprintf(periods, sizeof periods, "%.2f", t / style.period);
+  // Set piece by piece, each piece a label kept from frame to frame and the
+  // numbers digit by digit, so a frame lays out no text. DejaVu Sans has
+  // figures of one width and no kerning between these characters: the pieces
+  // land where Pango sets the whole line.
+  const render::TextStyle text{20, style.colors.wire};
+  render::Point at(area.x + 16 * scale, area.y + 14 * scale);
+  auto piece = [&](const std::string& markup) {
+    render::draw_text(canvas, at, markup, text, render::Anchor::top_left);
+    at.x() += render::text_size(canvas, markup, text).x();
+  };
+  piece("<i>t</i> = ");
+  for (const char* c = time; *c; ++c) piece(std::string(1, *c));
+  if (!*periods) return;
+  piece("   (");
+  for (const char* c = periods; *c; ++c) piece(std::string(1, *c));
+  piece(" periods)");
 }
 
 }  // namespace vibra::scenes
