@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
 namespace vibra::render {
 
@@ -96,11 +95,13 @@ void draw_wheel(Canvas& canvas, const WorldView& view, const Point& center, doub
   draw_circle(canvas, view, center, radius, fill, stroke);
   Stroke spoke = stroke;
   spoke.width = 0.7 * stroke.width;
+  std::pair<Point, Point> spokes[3];  // one stroke for the three: the hub covers where they cross
   for (int i = 0; i < 3; ++i) {
     const double a = angle + i * M_PI / 3;
     const Point d(std::cos(a), std::sin(a));
-    draw_line(canvas, view, center - 0.82 * radius * d, center + 0.82 * radius * d, spoke);
+    spokes[i] = {view.to_pixel(center - 0.82 * radius * d), view.to_pixel(center + 0.82 * radius * d)};
   }
+  draw_pixel_segments(canvas, spokes, spoke);
   draw_circle(canvas, view, center, 0.16 * radius, stroke.color, stroke);
 }
 
@@ -148,83 +149,6 @@ void draw_hatched_surface(Canvas& canvas, const WorldView& view, const Point& a,
   thick.width = 1.5 * s.width;
   draw_pixel_line(canvas, pa, pb, thick);
   (void)across;
-}
-
-namespace {
-/// One period of a ground's fill: a tile `period` pixels square, the pale
-/// `fill` crossed by hatches rising to the right (the lines u + v = k period).
-/// Repeated, the hatches run on unbroken across tiles.
-std::shared_ptr<cairo_surface_t> hatch_tile(int period, const Color& fill, const Stroke& hatch, double scale) {
-  std::shared_ptr<cairo_surface_t> tile(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, period, period),
-                                        cairo_surface_destroy);
-  cairo_t* cr = cairo_create(tile.get());
-  cairo_set_antialias(cr, CAIRO_ANTIALIAS_GOOD);  // as the canvas draws
-  cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, fill.a);
-  cairo_paint(cr);
-  cairo_set_source_rgba(cr, hatch.color.r, hatch.color.g, hatch.color.b, hatch.color.a);
-  cairo_set_line_width(cr, hatch.width * scale);
-  for (int k = 0; k <= 2; ++k) {  // k = 0 and 2 reach the corners
-    cairo_move_to(cr, -2, k * period + 2);
-    cairo_line_to(cr, k * period + 2, -2);
-  }
-  cairo_stroke(cr);
-  cairo_destroy(cr);
-  cairo_surface_flush(tile.get());
-  return tile;
-}
-}  // namespace
-
-void draw_ground_profile(Canvas& canvas, const WorldView& view, const std::function<double(double)>& height, double step,
-                         double depth, const Stroke& s) {
-  cairo_t* cr = canvas.cr();
-  double clip_x0, clip_y0, clip_x1, clip_y1;
-  cairo_clip_extents(cr, &clip_x0, &clip_y0, &clip_x1, &clip_y1);
-  // The road's points at whole multiples of `step`, one beyond each side of
-  // the visible part.
-  const double zoom = view.zoom(), origin = view.to_pixel(Point(0, 0)).x();
-  const double reach = 2 * s.width * canvas.scale();
-  if (!(step > 0)) return;
-  const auto first = static_cast<long long>(std::floor((clip_x0 - reach - origin) / zoom / step));
-  const auto last = static_cast<long long>(std::ceil((clip_x1 + reach - origin) / zoom / step));
-  if (last - first > 1'000'000) return;
-  std::vector<Point> top;
-  top.reserve(size_t(last - first + 1));
-  for (long long i = first; i <= last; ++i) top.push_back(view.to_pixel(Point(i * step, height(i * step))));
-  if (top.size() < 2) return;
-  double low = top.front().y();  // the road's highest point, in pixel rows
-  for (const Point& p : top) low = std::min(low, p.y());
-  // The band ends below the visible part: deeper would not show.
-  const double drop = std::min(depth * zoom, std::max(0.0, clip_y1 + reach - low));
-
-  // The solid under the road: a pale band, hatched. The hatching is a tile
-  // repeated from a whole pixel near the world's origin, so it moves with the
-  // road; one fill paints it (stroking each hatch cut to the band would cost
-  // Cairo many times more).
-  Stroke hatch = s;
-  hatch.width = 0.5 * s.width;
-  hatch.color = s.color.with_alpha(0.35);
-  const int period = std::max(4, static_cast<int>(std::lround(14 * canvas.scale())));
-  const std::shared_ptr<cairo_surface_t> tile = hatch_tile(period, s.color.with_alpha(0.08), hatch, canvas.scale());
-  cairo_pattern_t* fill = cairo_pattern_create_for_surface(tile.get());
-  cairo_pattern_set_extend(fill, CAIRO_EXTEND_REPEAT);
-  cairo_pattern_set_filter(fill, CAIRO_FILTER_NEAREST);
-  cairo_matrix_t shift;
-  cairo_matrix_init_translate(&shift, -std::round(origin), 0);
-  cairo_pattern_set_matrix(fill, &shift);
-  cairo_new_path(cr);
-  cairo_move_to(cr, top.front().x(), top.front().y());
-  for (const Point& p : top) cairo_line_to(cr, p.x(), p.y());
-  for (auto p = top.rbegin(); p != top.rend(); ++p) cairo_line_to(cr, p->x(), p->y() + drop);
-  cairo_close_path(cr);
-  cairo_set_source(cr, fill);
-  canvas.fill();
-  cairo_pattern_destroy(fill);
-
-  Stroke line = s;
-  line.width = 1.4 * s.width;
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-  draw_pixel_polyline(canvas, top, line);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
 }
 
 }  // namespace vibra::render

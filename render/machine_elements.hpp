@@ -1,5 +1,4 @@
 #pragma once
-#include <functional>
 #include <span>
 #include <vector>
 
@@ -54,13 +53,5 @@ void draw_box(Canvas&, const WorldView&, const Point& low, const Point& high, co
 /// (outside = (0, -1)), a wall to the left (outside = (-1, 0)).
 void draw_hatched_surface(Canvas&, const WorldView&, const Point& a, const Point& b, const Point& outside,
                           const Stroke&);
-
-/// The ground under a road profile `height(x)` (world units) across the part
-/// of the view that is visible (the clip): the road's line through points
-/// `step` apart, and a band `depth` deep under it, hatched, so the road reads
-/// as solid. Points and hatches are fixed to the world, so when the view
-/// follows a vehicle the ground moves under it as a whole.
-void draw_ground_profile(Canvas&, const WorldView&, const std::function<double(double)>& height, double step,
-                         double depth, const Stroke&);
 
 }  // namespace vibra::render

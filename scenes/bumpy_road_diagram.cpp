@@ -4,6 +4,7 @@
 
 #include "core/models/model.hpp"
 #include "render/annotations.hpp"
+#include "render/ground_profile.hpp"
 #include "render/machine_elements.hpp"
 #include "scenes/diagram_registry.hpp"
 
@@ -40,6 +41,9 @@ void BumpyRoadDiagram::finish_recording(WorldBox& world) {
   high_ += std::max(0.4 * vehicle_.R, reach - 0.5 * body_height_ + 0.3 * vehicle_.R);
   world.extend(Point(-half_width_, low_));
   world.extend(Point(half_width_, high_));
+  // The ground reaches below the view: a pale band under the road, hatched.
+  ground_.emplace([road = road_](double s) { return road->height(s); }, road_->dx(), 0.3 * vehicle_.R + (high_ - low_),
+                  render::Stroke{colors_.wire, 2.2});
 }
 
 std::optional<WorldBox> BumpyRoadDiagram::view_at(std::span<const double> row) const {
@@ -56,11 +60,8 @@ std::array<Arrow, 2> BumpyRoadDiagram::force_arrows(std::span<const double> row)
 void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
   const double x = row[3];
   const render::Stroke ink{colors_.wire, 2.2};
-  // The road across the visible part (the scene clips it to the diagram's
-  // area), a point per road sample or per few pixels, whichever is coarser.
-  if (!ghost())
-    render::draw_ground_profile(canvas, view, [this](double s) { return road_->height(s); },
-                                std::max(road_->dx(), 3 / view.zoom()), 0.3 * vehicle_.R + (high_ - low_), ink);
+  // The road across the visible part (the scene clips it to the diagram's area).
+  if (!ghost()) ground_->draw(canvas, view);
 
   const Point a = axle(row);
   const double bottom = body_bottom(row);

@@ -1,8 +1,10 @@
 #pragma once
 #include <array>
 #include <memory>
+#include <optional>
 
 #include "core/road_profile.hpp"
+#include "render/ground_profile.hpp"
 #include "scenes/diagram.hpp"
 #include "scenes/force_scale.hpp"
 #include "scenes/scene_style.hpp"
@@ -38,6 +40,7 @@ class BumpyRoadDiagram final : public Diagram {
   Vehicle vehicle_;
   SceneColors colors_;
   ForceScale scale_;
+  std::optional<render::GroundProfile> ground_;  ///< once the run's heights are known
   double low_ = 1e300, high_ = -1e300;
   double half_width_ = 1, body_width_ = 1, body_height_ = 0.3;
 };

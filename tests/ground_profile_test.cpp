@@ -1,12 +1,13 @@
-// The road's ground (draw_ground_profile): a hatched band under the profile,
-// fixed to the world, so a view that follows a vehicle moves it as a whole.
+// The road's ground (GroundProfile): a hatched band under the profile, fixed
+// to the world, so a view that follows a vehicle moves it as a whole; pasted
+// from tiles on an image canvas, drawn as it is on a vector one.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 
 #include "render/canvas.hpp"
-#include "render/machine_elements.hpp"
+#include "render/ground_profile.hpp"
 
 using namespace vibra::render;
 
@@ -24,7 +25,7 @@ Canvas ground(double left) {
   Canvas canvas = Canvas::image(kWidth, kHeight);
   canvas.clear(palette::paper);
   const WorldView view(Eigen::AlignedBox2d(Point(left, -2), Point(left + 12, 2)), {0, 0, kWidth, kHeight});
-  draw_ground_profile(canvas, view, road, 0.05, 10, {palette::ink, 2});  // deeper than the view
+  GroundProfile(road, 0.05, 10, {palette::ink, 2}).draw(canvas, view);  // deeper than the view
   canvas.flush();
   return canvas;
 }
@@ -64,5 +65,25 @@ TEST_CASE("ground profile: nothing above the road, the band below it hatched at 
     const double period = 14 * c.scale(), depth = kHeight - (top + 5);
     CHECK(hatches >= int(depth / period) - 1);
     CHECK(hatches <= int(depth / period) + 2);
+  }
+}
+
+TEST_CASE("ground profile: tiles kept over a drive give each frame the pixels of a first drawing", "[render][road]") {
+  // A view following a vehicle at a speed that is not a whole number of
+  // pixels a frame: tiles are made, pasted, and dropped behind it.
+  const GroundProfile kept(road, 0.05, 10, {palette::ink, 2});
+  Canvas running = Canvas::image(kWidth, kHeight);
+  for (int frame = 0; frame < 40; ++frame) {
+    const double left = 0.3 + frame * 0.737;
+    const WorldView view(Eigen::AlignedBox2d(Point(left, -2), Point(left + 12, 2)), {0, 0, kWidth, kHeight});
+    running.clear(palette::paper);
+    kept.draw(running, view);
+    running.flush();
+    const Canvas fresh = ground(left);
+    INFO("frame " << frame);
+    bool same = true;
+    for (int y = 0; y < kHeight && same; ++y)
+      for (int x = 0; x < kWidth && same; ++x) same = pixel(running, x, y) == pixel(fresh, x, y);
+    CHECK(same);
   }
 }
