@@ -58,36 +58,22 @@ const std::string kSmall = " --size 320x180 --fps 10 --set periods=1 -q";  // 21
 
 TEST_CASE("PNG segments are the one-pass render's frames, byte for byte, in one directory", "[render][segment]") {
   // The whole-run plots grow frame by frame, and a moving window is fed by
-  // every solver step: both must be where the one-pass render has them.
-  for (const std::string layout : {" --layout fbd+plot", " --layout plot --window 0.3periods",
-                                   " --layout fbd --set alpha=0.3"}) {
-    INFO(layout);
-    const std::string args = kSmall + layout;
+  // every solver step: both must be where the one-pass render has them. A
+  // trail's older part is pasted from a layer and labels from kept images:
+  // a frame's pixels must not depend on the frames drawn before it either.
+  for (const std::string args : {" --layout fbd+plot", " --layout plot --window 0.3periods",
+                                 " --layout fbd --set alpha=0.3", " orbit", " elastic_pendulum", " spring_dashpot"}) {
+    INFO(args);
     ScratchDirectory whole, split;
-    REQUIRE(run_vibra("render" + args + " -o " + (whole / "f_%03d.png")).exit_code == 0);
-    render_segments(args, 3, split / "f_%03d.png");
+    REQUIRE(run_vibra("render" + args + kSmall + " -o " + (whole / "f_%03d.png")).exit_code == 0);
+    render_segments(args + kSmall, 3, split / "f_%03d.png");
     const auto expected = files_of(whole.path), got = files_of(split.path);
-    REQUIRE(expected.size() == 21);
+    REQUIRE(expected.size() >= 10);
     CHECK(got.size() == expected.size());
     for (const auto& [name, bytes] : expected) {
       INFO(name);
       CHECK((got.count(name) && got.at(name) == bytes));
     }
-  }
-}
-
-TEST_CASE("PNG segments of scenes with trails and labels are the one-pass frames too", "[render][segment]") {
-  // The trail's older part is pasted from a layer and labels from their kept
-  // images: a frame's pixels must not depend on the frames drawn before it.
-  for (const std::string scene : {" orbit", " elastic_pendulum", " spring_dashpot"}) {
-    INFO(scene);
-    const std::string args = scene + kSmall;
-    ScratchDirectory whole, split;
-    REQUIRE(run_vibra("render" + args + " -o " + (whole / "f_%03d.png")).exit_code == 0);
-    render_segments(args, 3, split / "f_%03d.png");
-    const auto expected = files_of(whole.path), got = files_of(split.path);
-    REQUIRE(expected.size() >= 10);
-    CHECK(got == expected);
   }
 }
 
