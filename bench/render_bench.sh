@@ -12,7 +12,8 @@
 # frames from raw YUV in memory with the same settings (the encoder's own
 # ceiling); the moving window against moving_window.py; the built-in scenes
 # spring_dashpot, bumpy_road, elastic_pendulum and orbit as MP4 against the
-# encoder's ceiling; the orbit's trail over 1e3 and 1e6 steps; a 4-run
+# encoder's ceiling (and the other built-in scenes at 720p); the orbit's
+# trail over 1e3 and 1e6 steps; a 4-run
 # comparison (--compare scheme=...) against one run of the same scene.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -139,6 +140,9 @@ for dims in 1280x720 1920x1080; do
 done
 scene_against_x264 elastic_pendulum 1280x720 --set periods=$periods
 scene_against_x264 orbit 1280x720 --set periods=$periods
+for scene in pendulum spring washing_machine sliding_box bouncing_ball rlc; do  # the rest, at 720p
+  scene_against_x264 $scene 1280x720 --set periods=$periods
+done
 }
 
 wanted trail && {
