@@ -10,6 +10,7 @@
 #include <string>
 
 #include "render/huge_pages.hpp"
+#include "render/label_cache.hpp"
 #include "render/output_error.hpp"
 
 namespace vibra::render {

@@ -9,9 +9,10 @@
 
 #include "render/color.hpp"
 #include "render/damage.hpp"
-#include "render/label_cache.hpp"
 
 namespace vibra::render {
+
+class LabelCache;
 
 using Point = Eigen::Vector2d;
 

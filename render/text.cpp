@@ -6,6 +6,8 @@
 #include <cmath>
 #include <memory>
 
+#include "render/label_cache.hpp"
+
 namespace vibra::render {
 
 namespace {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "render/canvas.hpp"
+#include "render/label_cache.hpp"
 #include "render/text.hpp"
 
 using namespace vibra::render;
