@@ -5,7 +5,6 @@
 #include <span>
 
 #include "render/output_error.hpp"
-#include "render/shapes.hpp"
 
 namespace vibra::render {
 
