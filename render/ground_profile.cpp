@@ -35,23 +35,20 @@ std::shared_ptr<cairo_surface_t> hatch_tile(int period, const Color& fill, const
 GroundProfile::GroundProfile(std::function<double(double)> height, double spacing, double depth, Stroke stroke)
     : height_(std::move(height)), spacing_(spacing), depth_(depth), stroke_(stroke) {}
 
-int GroundProfile::top_row(const Placement& at, double p0, double p1) const {
-  const double step = std::max(spacing_, 3 / at.zoom), reach = 2 * stroke_.width * at.scale;
-  double highest = at.bottom;
-  for (double i = std::floor((p0 - reach) / at.zoom / step); i <= std::ceil((p1 + reach) / at.zoom / step); ++i)
-    highest = std::min(highest, at.origin_row - at.zoom * height_(i * step));
-  return static_cast<int>(std::floor(highest - reach - 1));
-}
-
-void GroundProfile::paint(cairo_t* cr, const Placement& at, double p0, double p1, double dx, double dy) const {
-  // The road's points at whole multiples of the step, one beyond each side.
+std::vector<Point> GroundProfile::road_points(const Placement& at, double p0, double p1) const {
+  // At whole multiples of the step, one beyond each side.
   const double step = std::max(spacing_, 3 / at.zoom), reach = 2 * stroke_.width * at.scale;
   const double first = std::floor((p0 - reach) / at.zoom / step), last = std::ceil((p1 + reach) / at.zoom / step);
-  if (!(last - first < 1e6)) return;
-  std::vector<Point> top;
-  for (double i = first; i <= last; ++i)
-    top.emplace_back(i * step * at.zoom - dx, at.origin_row - at.zoom * height_(i * step) - dy);
+  std::vector<Point> points;
+  if (!(last - first < 1e6)) return points;
+  for (double i = first; i <= last; ++i) points.emplace_back(i * step * at.zoom, at.origin_row - at.zoom * height_(i * step));
+  return points;
+}
+
+void GroundProfile::paint(cairo_t* cr, const Placement& at, std::vector<Point> top, double dx, double dy) const {
   if (top.size() < 2) return;
+  for (Point& p : top) p -= Point(dx, dy);
+  const double reach = 2 * stroke_.width * at.scale;
   double highest = top.front().y();
   for (const Point& p : top) highest = std::min(highest, p.y());
   // The band ends below the visible part: deeper would not show.
@@ -102,7 +99,7 @@ void GroundProfile::draw(Canvas& canvas, const WorldView& view) const {
   const Placement at{canvas.id(), view.zoom(), origin.y(), std::ceil(clip_y1), canvas.scale()};
   if (cairo_surface_get_type(canvas.surface()) != CAIRO_SURFACE_TYPE_IMAGE) {  // a vector still: drawn as it is
     canvas.mark_drawn(clip_x0, clip_y0, clip_x1, clip_y1);
-    paint(cr, at, clip_x0 - column0, clip_x1 - column0, -column0, 0);
+    paint(cr, at, road_points(at, clip_x0 - column0, clip_x1 - column0), -column0, 0);
     return;
   }
   if (!(placement_ == at)) tiles_.clear(), placement_ = at;
@@ -114,12 +111,15 @@ void GroundProfile::draw(Canvas& canvas, const WorldView& view) const {
     const double p0 = double(k) * kTileWidth, p1 = p0 + kTileWidth;
     Tile& tile = tiles_[k];
     if (!tile.image) {
-      tile.top = top_row(at, p0, p1);
+      std::vector<Point> points = road_points(at, p0, p1);
+      double highest = at.bottom;
+      for (const Point& p : points) highest = std::min(highest, p.y());
+      tile.top = static_cast<int>(std::floor(highest - 2 * stroke_.width * at.scale - 1));
       const int rows = std::max(1, int(at.bottom) - tile.top);
       tile.image.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, kTileWidth, rows), cairo_surface_destroy);
       cairo_t* tile_cr = cairo_create(tile.image.get());
       cairo_set_antialias(tile_cr, CAIRO_ANTIALIAS_GOOD);  // as the canvas draws
-      paint(tile_cr, at, p0, p1, p0, tile.top);
+      paint(tile_cr, at, std::move(points), p0, tile.top);
       const bool drawn = cairo_status(tile_cr) == CAIRO_STATUS_SUCCESS;
       cairo_destroy(tile_cr);
       if (!drawn) throw OutputError("cannot draw the road: out of memory for its tiles: choose a smaller --size");

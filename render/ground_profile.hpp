@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <vector>
 
 #include "render/canvas.hpp"
 #include "render/shapes.hpp"
@@ -44,11 +45,12 @@ class GroundProfile {
     int top = 0;  ///< canvas row of the image's first row
   };
 
-  /// Draws the ground whose columns P (world x times zoom) lie in [p0, p1]
-  /// onto `cr`, where road column P and canvas row y land at (P - dx, y - dy).
-  void paint(cairo_t* cr, const Placement&, double p0, double p1, double dx, double dy) const;
-  /// The rows a tile over columns [p0, p1] needs, from its top.
-  int top_row(const Placement&, double p0, double p1) const;
+  /// The road's points over columns [p0, p1] (P = world x times zoom), in
+  /// road columns and canvas rows.
+  std::vector<Point> road_points(const Placement&, double p0, double p1) const;
+  /// Draws the ground through `top` (road_points) onto `cr`, where road
+  /// column P and canvas row y land at (P - dx, y - dy).
+  void paint(cairo_t* cr, const Placement&, std::vector<Point> top, double dx, double dy) const;
 
   std::function<double(double)> height_;
   double spacing_, depth_;

@@ -152,7 +152,7 @@ Point text_size(Canvas& canvas, const std::string& markup, const TextStyle& styl
   return {logical.width, logical.height};
 }
 
-void draw_text(Canvas& canvas, const Point& at, const std::string& markup, const TextStyle& style, Anchor anchor) {
+Point draw_text(Canvas& canvas, const Point& at, const std::string& markup, const TextStyle& style, Anchor anchor) {
   cairo_t* cr = canvas.cr();
   const double scale = canvas.scale();
   LabelCache* cache = pasting_cache(canvas);
@@ -165,7 +165,7 @@ void draw_text(Canvas& canvas, const Point& at, const std::string& markup, const
     cairo_set_source_surface(cr, label->image.get(), x, y);
     cairo_rectangle(cr, x, y, w, h);
     cairo_fill(cr);
-    return;
+    return {label->logical.width, label->logical.height};
   }
   // Drawn directly: a vector canvas (or no memory for an image).
   std::shared_ptr<PangoLayout> layout(new_layout(cr, markup, style, scale), g_object_unref);
@@ -175,6 +175,7 @@ void draw_text(Canvas& canvas, const Point& at, const std::string& markup, const
   const LabelBox box = label_box(ink, logical, halo_reach(style, scale));
   canvas.mark_drawn(origin.x() + box.x0, origin.y() + box.y0, origin.x() + box.x1, origin.y() + box.y1);
   show_layout(cr, layout.get(), style, scale, origin.x(), origin.y());
+  return {logical.width, logical.height};
 }
 
 Point label_beyond(const Point& tip, const Point& direction, const Point& size, double gap) {

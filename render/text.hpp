@@ -27,8 +27,8 @@ struct TextStyle {
 /// default font map is per thread: call it on the thread that draws.
 void start_loading_fonts();
 
-/// Draws Pango markup at pixel point `at`.
-void draw_text(Canvas&, const Point& at, const std::string& markup, const TextStyle&, Anchor = Anchor::center);
+/// Draws Pango markup at pixel point `at`; returns its size in pixels (as text_size).
+Point draw_text(Canvas&, const Point& at, const std::string& markup, const TextStyle&, Anchor = Anchor::center);
 /// The markup's size in pixels.
 Point text_size(Canvas&, const std::string& markup, const TextStyle&);
 

@@ -18,8 +18,7 @@ void draw_readout(render::Canvas& canvas, const render::PixelRect& area, double 
   const render::TextStyle text{20, style.colors.wire};
   render::Point at(area.x + 16 * scale, area.y + 14 * scale);
   auto piece = [&](const std::string& markup) {
-    render::draw_text(canvas, at, markup, text, render::Anchor::top_left);
-    at.x() += render::text_size(canvas, markup, text).x();
+    at.x() += render::draw_text(canvas, at, markup, text, render::Anchor::top_left).x();
   };
   piece("<i>t</i> = ");
   for (const char* c = time; *c; ++c) piece(std::string(1, *c));

@@ -46,6 +46,26 @@ Recorded record(const std::string& scene, const std::vector<std::pair<std::strin
   return r;
 }
 
+/// A built-in scene in layout fbd at w x h, its pre-pass over the run done.
+struct RecordedScene {
+  SceneConfig config;
+  std::unique_ptr<Scene> scene;
+  std::vector<std::vector<double>> rows;
+  bool follows;  ///< its view follows the body (the road): it runs its ground off the frame on purpose
+};
+
+RecordedScene record_scene(const std::string& name, int w, int h) {
+  RecordedScene r{load_scene(name), nullptr, {}, false};
+  r.config.width = w, r.config.height = h, r.config.layout = Layout::fbd;
+  const Parameters p = model_parameters_of(r.config);
+  auto run = find_model(r.config.model).build(p);
+  r.scene = make_scene(r.config, run->info(), "caption");
+  r.rows = vibra::test::rows(*run);
+  for (const auto& row : r.rows) r.scene->record(row);
+  r.follows = diagram_for(r.config).make({r.config, p, run->info()})->view_at(r.rows[0]).has_value();
+  return r;
+}
+
 template <class T>
 T& as(const Recorded& r) {
   auto* d = dynamic_cast<T*>(r.diagram.get());
@@ -267,18 +287,10 @@ TEST_CASE("orbit diagram: --window keeps the last orbits of the trail", "[scene]
 TEST_CASE("nothing is clipped: over the run no drawing touches the frame's edge, small or large", "[scene][diagram]") {
   for (const std::string& name : builtin_scene_names()) {
     for (auto [w, h] : {std::pair{640, 360}, std::pair{1920, 1080}}) {
-      SceneConfig config = load_scene(name);
-      config.width = w, config.height = h, config.layout = Layout::fbd;
-      const Parameters p = model_parameters_of(config);
-      auto run = find_model(config.model).build(p);
-      auto scene = make_scene(config, run->info(), "caption");
-      auto rows = vibra::test::rows(*run);
-      for (const auto& row : rows) scene->record(row);
+      const auto [config, scene, rows, follows] = record_scene(name, w, h);
       render::Canvas canvas = render::Canvas::image(w, h);
       canvas.track_damage();
       const size_t every = std::max<size_t>(1, rows.size() / 60);
-      // A view that follows the body runs its ground off the frame on purpose.
-      const bool follows = diagram_for(config).make({config, p, run->info()})->view_at(rows[0]).has_value();
       for (size_t i = 0; i < rows.size(); i += every) {
         canvas.begin_frame();
         scene->draw(canvas, rows[i]);
@@ -323,14 +335,8 @@ TEST_CASE("layout fbd centres every diagram: the pendulums' pivots on the centre
           "[scene][diagram]") {
   const int w = 1280, h = 720;
   for (const std::string& name : builtin_scene_names()) {
-    SceneConfig config = load_scene(name);
-    config.width = w, config.height = h, config.layout = Layout::fbd;
-    const Parameters p = model_parameters_of(config);
-    auto run = find_model(config.model).build(p);
-    auto scene = make_scene(config, run->info(), "caption");
-    auto rows = vibra::test::rows(*run);
-    for (const auto& row : rows) scene->record(row);
-    if (diagram_for(config).make({config, p, run->info()})->view_at(rows[0])) continue;  // follows its body
+    const auto [config, scene, rows, follows] = record_scene(name, w, h);
+    if (follows) continue;
     render::Canvas canvas = render::Canvas::image(w, h);
     if (config.model == "pendulum" || config.model == "elastic-pendulum") {
       // A pendulum hangs from the frame's centre line, whichever side it
