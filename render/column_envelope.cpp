@@ -13,6 +13,12 @@ int ColumnEnvelope::column_of(double x) const {
   return std::clamp(static_cast<int>(std::floor(f * columns())), 0, columns() - 1);
 }
 
+int ColumnEnvelope::used_before(int column) const {
+  for (int c = std::min(column, columns()) - 1; c >= 0; --c)
+    if (cells_[c].used) return c;
+  return -1;
+}
+
 void ColumnEnvelope::add(double x, double y) {
   if (!std::isfinite(y)) return;
   Cell& k = cells_[column_of(x)];

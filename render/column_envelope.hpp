@@ -23,6 +23,10 @@ class ColumnEnvelope {
   double x1() const { return x1_; }
   /// Column of x, clamped to the range.
   int column_of(double x) const;
+  /// The last column before `column` that holds a value, or -1: where a curve
+  /// drawn up to `column` in pieces must restart so that its pieces join
+  /// across the empty columns between coarse samples.
+  int used_before(int column) const;
 
   /// A column's two extremes in the order they occurred (the smallest first
   /// when it came no later than the largest); nullopt for an empty column.

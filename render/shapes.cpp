@@ -13,7 +13,7 @@ void apply(Canvas& canvas, const Stroke& s) {
   cairo_set_line_width(cr, width);
   if (s.dashed) {
     const double dash[] = {4 * width, 3 * width};
-    cairo_set_dash(cr, dash, 2, 0);
+    cairo_set_dash(cr, dash, 2, s.dash_offset);
   } else {
     cairo_set_dash(cr, nullptr, 0, 0);
   }

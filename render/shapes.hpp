@@ -11,6 +11,9 @@ struct Stroke {
   Color color = palette::ink;
   double width = 2;
   bool dashed = false;
+  /// Where in the dash pattern the path starts (pixels): a piece of a longer
+  /// path keeps the phase the whole path has there.
+  double dash_offset = 0;
 };
 
 // Shapes in world units through a WorldView. No physics here.

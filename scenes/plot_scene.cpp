@@ -59,8 +59,8 @@ void PlotScene::draw_static(render::Canvas& canvas) {
 }
 
 StaticLayer::Grow PlotScene::progress_to(double t) {
-  return [this, t](render::Canvas& layer, bool from_start) {
-    for (auto& panel : panels_) panel.draw_progress(layer, t, from_start);
+  return [this, t](LayerGrowth& growth) {
+    for (auto& panel : panels_) panel.draw_progress(growth, t);
   };
 }
 

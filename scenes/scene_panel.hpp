@@ -2,6 +2,7 @@
 #include <span>
 
 #include "render/canvas.hpp"
+#include "scenes/static_layer.hpp"
 
 namespace vibra::scenes {
 
@@ -25,10 +26,8 @@ class ScenePanel {
   /// What never changes per frame, drawn once under every frame.
   virtual void draw_static(render::Canvas&, bool time_labels) const = 0;
   /// Extends what the layer under the frames keeps up to time t (from t = 0
-  /// when `from_start`); nothing for a panel without such a layer.
-  virtual void draw_progress(render::Canvas& layer, double t, bool from_start) {
-    (void)layer, (void)t, (void)from_start;
-  }
+  /// when the layer is new); nothing for a panel without such a layer.
+  virtual void draw_progress(LayerGrowth& growth, double t) { (void)growth, (void)t; }
   /// The dynamic part at time t; `row` is the solution at t.
   virtual void draw(render::Canvas&, double t, std::span<const double> row, bool time_labels) const = 0;
 };

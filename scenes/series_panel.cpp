@@ -91,31 +91,78 @@ void SeriesPanel::draw_axes(render::Canvas& canvas, bool time_labels) const {
   }
 }
 
+const std::vector<render::GrowingPolyline>& SeriesPanel::whole_curves() const {
+  if (!whole_curves_.empty() || mode_ != WindowMode::whole_run) return whole_curves_;
+  const int columns = whole_.empty() ? panel_.columns() : whole_[0].columns();
+  const double column_width = t_end_ / columns;
+  for (size_t i = 0; i < series_.size(); ++i) {
+    std::vector<render::Point> points;
+    std::vector<int> ends(columns);
+    if (series_[i].of_time) {
+      // At every half column, on one grid for the whole run: the centre of
+      // column c is sample 2c + 1, where the envelopes put their points.
+      for (int k = 0; k <= 2 * columns; ++k) {
+        const double x = std::min(t_end_, k * column_width / 2), y = series_[i].of_time(x);
+        if (std::isfinite(y)) points.push_back(panel_.to_pixel(x, y));
+        if (k % 2 == 1 || k == 2 * columns) ends[std::min(k / 2, columns - 1)] = int(points.size());
+      }
+    } else {
+      const render::ColumnEnvelope& envelope = whole_[i];
+      for (int c = 0; c < columns; ++c) {
+        const auto column = envelope.polyline(c, c, [&](int c, double y) {
+          const double x = envelope.x0() + (c + 0.5) * column_width;
+          return render::Point(panel_.to_pixel(x, y).x(), panel_.to_pixel(envelope.x0(), y).y());
+        });
+        points.insert(points.end(), column.begin(), column.end());
+        ends[c] = int(points.size());
+      }
+    }
+    whole_curves_.emplace_back(std::move(points), std::move(ends));
+  }
+  return whole_curves_;
+}
+
 void SeriesPanel::draw_static(render::Canvas& canvas, bool time_labels) const {
   if (mode_ != WindowMode::whole_run) return;
   draw_axes(canvas, time_labels);
-  for (size_t i = 0; i < series_.size(); ++i) {
-    const render::Stroke faint{series_[i].color.with_alpha(0.22), 2, series_[i].dashed};
-    if (series_[i].of_time)
-      panel_.draw_function(canvas, series_[i].of_time, 0, t_end_, faint);
-    else
-      panel_.draw_envelope(canvas, whole_[i], t_end_, faint);
-  }
+  const render::PixelRect& area = panel_.area();
+  cairo_save(canvas.cr());
+  cairo_rectangle(canvas.cr(), area.x, area.y, area.w, area.h);
+  cairo_clip(canvas.cr());
+  for (size_t i = 0; i < series_.size(); ++i)
+    whole_curves()[i].draw_through(canvas, panel_.columns(), {series_[i].color.with_alpha(0.22), 2, series_[i].dashed});
+  cairo_restore(canvas.cr());
 }
 
-void SeriesPanel::draw_progress(render::Canvas& layer, double t, bool from_start) {
+void SeriesPanel::draw_progress(LayerGrowth& growth, double t) {
   if (mode_ != WindowMode::whole_run || whole_.empty()) return;
   const int to = whole_[0].column_of(t);
-  // One column back, so the new piece joins the old one without a gap.
-  const int from = from_start ? 0 : std::max(0, progress_column_ - 1);
-  const double column_width = t_end_ / whole_[0].columns();
-  for (size_t i = 0; i < series_.size(); ++i) {
-    const render::Stroke stroke{series_[i].color, 2.4, series_[i].dashed};
-    if (series_[i].of_time)  // to the same column centre as the envelopes
-      panel_.draw_function(layer, series_[i].of_time, from * column_width, (to + 0.5) * column_width, stroke);
-    else
-      panel_.draw_envelope_columns(layer, whole_[i], from, to, stroke);
+  // The whole run's columns are known from the pre-pass, so a column once
+  // drawn is complete: frames that stay in it (slow motion) add nothing.
+  if (!growth.from_start && to <= progress_column_) return;
+  const render::PixelRect& area = panel_.area();
+  render::Canvas& layer = growth.layer;
+  const double reach = render::GrowingPolyline::reach(2.4 * layer.scale());
+  double last_x = 1e300;
+  for (size_t i = 0; i < series_.size(); ++i)
+    if (const auto x = whole_curves()[i].last_x(to)) last_x = std::min(last_x, *x);
+  cairo_save(layer.cr());
+  cairo_rectangle(layer.cr(), area.x, area.y, area.w, area.h);
+  cairo_clip(layer.cr());
+  if (growth.from_start) {
+    settled_x_ = std::floor(area.x);
+    for (size_t i = 0; i < series_.size(); ++i)
+      whole_curves()[i].draw_through(layer, to, {series_[i].color, 2.4, series_[i].dashed});
+  } else {
+    // The strip from where the curves were last final to past their new end
+    // is drawn again, as the still would draw it.
+    const double right = std::ceil(panel_.to_pixel((to + 1.0) * t_end_ / whole_[0].columns(), 0).x() + reach);
+    growth.reset({settled_x_, std::floor(area.y), right - settled_x_, std::ceil(area.y + area.h) - std::floor(area.y)});
+    for (size_t i = 0; i < series_.size(); ++i)
+      whole_curves()[i].draw_piece(layer, settled_x_, to, {series_[i].color, 2.4, series_[i].dashed});
   }
+  cairo_restore(layer.cr());
+  if (last_x < 1e300) settled_x_ = std::max(settled_x_, std::floor(last_x - reach));
   progress_column_ = to;
 }
 

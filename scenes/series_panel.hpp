@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "render/column_envelope.hpp"
+#include "render/growing_polyline.hpp"
 #include "render/plot_panel.hpp"
 #include "render/rolling_envelope.hpp"
 #include "scenes/scene_panel.hpp"
@@ -64,9 +65,10 @@ class SeriesPanel final : public ScenePanel {
   bool has_static_axes() const { return mode_ == WindowMode::whole_run; }
   /// Axes and faint whole-run curves (whole_run only).
   void draw_static(render::Canvas&, bool time_labels) const override;
-  /// whole_run: extends the curves drawn on `layer` up to time t (from t = 0
-  /// when `from_start`). The layer keeps them, so each frame adds a column or two.
-  void draw_progress(render::Canvas& layer, double t, bool from_start) override;
+  /// whole_run: extends the curves drawn on the layer up to time t (from
+  /// t = 0 when the layer is new). The layer keeps them, so each frame adds a
+  /// column or two, and comes out as the still at t draws them.
+  void draw_progress(LayerGrowth& growth, double t) override;
   /// The dynamic part at time t: the cursor, and for window modes the axes
   /// and curves too (they move). `row` is the solution at t.
   void draw(render::Canvas&, double t, std::span<const double> row, bool time_labels) const override;
@@ -76,6 +78,8 @@ class SeriesPanel final : public ScenePanel {
  private:
   std::pair<double, double> window_at(double t) const;
   void draw_axes(render::Canvas&, bool time_labels) const;
+  /// whole_run: each curve over [0, T] in pixels, made once the ranges are fixed.
+  const std::vector<render::GrowingPolyline>& whole_curves() const;
 
   mutable render::PlotPanel panel_;
   std::string y_label_;
@@ -89,7 +93,9 @@ class SeriesPanel final : public ScenePanel {
   double least_span_ = 0;
   std::string empty_note_;
   bool first_curve_seen_ = false;
+  mutable std::vector<render::GrowingPolyline> whole_curves_;
   int progress_column_ = 0;  ///< whole_run: curves are drawn on the layer up to here
+  double settled_x_ = 0;     ///< whole_run: left of this pixel, the layer's curves are final
 };
 
 }  // namespace vibra::scenes

@@ -143,8 +143,8 @@ render::Point SystemScene::legend_corner(double scale) const {
 }
 
 StaticLayer::Grow SystemScene::progress_to(double t) {
-  return [this, t](render::Canvas& layer, bool from_start) {
-    for (auto& panel : panels_) panel->draw_progress(layer, t, from_start);
+  return [this, t](LayerGrowth& growth) {
+    for (auto& panel : panels_) panel->draw_progress(growth, t);
   };
 }
 
