@@ -51,8 +51,13 @@ TEST_CASE("the exact solution is drawn smooth over the whole run", "[plot]") {
   for (int n = 0; n * dt <= T * (1 + 1e-12); ++n) panel.record(std::vector<double>{n * dt, f(n * dt)});
   panel.finish_recording();
   panel.draw_static(canvas, false);
-  panel.draw_progress(canvas, T / 2, true);
-  panel.draw_progress(canvas, T, false);  // in two pieces, as frames draw it
+  render::Canvas pristine = render::Canvas::image(800, 400);  // the layer's static drawing, for its resets
+  pristine.clear(render::Color{1, 1, 1});
+  panel.draw_static(pristine, false);
+  pristine.flush();
+  scenes::LayerGrowth first(canvas, true, &pristine), second(canvas, false, &pristine);
+  panel.draw_progress(first, T / 2);
+  panel.draw_progress(second, T);  // in two pieces, as frames draw it
   canvas.flush();
   check_follows_function(canvas, panel.plot(), f, T);
 }

@@ -1,0 +1,121 @@
+// Frame = still: frame k of a render is the picture `--at t_k` draws, for
+// every built-in scene and a grid of frame rates, speeds (slow motion to
+// 100x), time steps (fine to coarse), comparisons, layouts, panels, energy
+// bars and moving windows. Frames and stills go through the real command;
+// their pixels are compared by PSNR. What may differ is anti-aliasing where
+// a frame's layer drew a curve in pieces (docs/render.md).
+#include <cairo.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_support.hpp"
+
+using vibra::test::run_vibra;
+using vibra::test::ScratchDirectory;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Peak signal-to-noise ratio of two PNG files' colour channels, in dB
+/// (infinite when identical); -1 when they cannot be read or differ in size.
+double psnr(const std::string& a, const std::string& b) {
+  cairo_surface_t* x = cairo_image_surface_create_from_png(a.c_str());
+  cairo_surface_t* y = cairo_image_surface_create_from_png(b.c_str());
+  double result = -1;
+  if (cairo_surface_status(x) == CAIRO_STATUS_SUCCESS && cairo_surface_status(y) == CAIRO_STATUS_SUCCESS &&
+      cairo_image_surface_get_width(x) == cairo_image_surface_get_width(y) &&
+      cairo_image_surface_get_height(x) == cairo_image_surface_get_height(y)) {
+    const int w = cairo_image_surface_get_width(x), h = cairo_image_surface_get_height(x);
+    double sum = 0;
+    for (int r = 0; r < h; ++r) {
+      const auto* p = cairo_image_surface_get_data(x) + r * cairo_image_surface_get_stride(x);
+      const auto* q = cairo_image_surface_get_data(y) + r * cairo_image_surface_get_stride(y);
+      for (int i = 0; i < 4 * w; ++i)
+        if (i % 4 != 3) sum += double(p[i] - q[i]) * (p[i] - q[i]);
+    }
+    const double mse = sum / (3.0 * w * h);
+    result = mse == 0 ? INFINITY : 10 * std::log10(255.0 * 255.0 / mse);
+  }
+  cairo_surface_destroy(x);
+  cairo_surface_destroy(y);
+  return result;
+}
+
+std::string exact(double t) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", t);
+  return text;
+}
+
+struct Case {
+  std::string args;           ///< scene and settings, without --fps/--speed/-o
+  double fps, speed;          ///< speed 0: one frame per solver step of `step`
+  std::vector<long long> ks;  ///< frames to compare (negative: from the end)
+  double step = 0;            ///< the solver's dt, for one frame per step
+};
+
+/// Renders the frames, then a still at each chosen frame's time, and holds
+/// each pair to 45 dB.
+void check_frames_are_stills(const Case& c) {
+  ScratchDirectory dir;
+  const std::string timing = c.speed > 0 ? " --fps " + exact(c.fps) + " --speed " + exact(c.speed) : "";
+  const std::string base = c.args + timing + " -q";
+  INFO("vibra render " << base);
+  const auto frames = run_vibra("render " + base + " -o " + (dir / "f_%05d.png"));
+  REQUIRE(frames.exit_code == 0);
+  long long count = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.path)) ++count;
+  REQUIRE(count >= 2);
+  for (long long k : c.ks) {
+    if (k < 0) k += count;
+    REQUIRE(k < count);
+    // The frame clock's own arithmetic: k times the frame interval.
+    const double t = c.speed > 0 ? double(k) * (c.speed / c.fps) : double(k) * c.step;
+    const auto still = run_vibra("render " + base + " --at " + exact(t) + " -o " + (dir / "still.png"));
+    REQUIRE(still.exit_code == 0);
+    char frame[32];
+    std::snprintf(frame, sizeof frame, "f_%05lld.png", k);
+    const double db = psnr(dir / frame, dir / "still.png");
+    INFO("frame " << k << " at t = " << t << ": " << db << " dB");
+    CHECK(db >= 45);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("every built-in scene's frames are its stills, in slow motion and fast", "[frame-truth]") {
+  for (const char* scene : {"pendulum", "spring", "spring_dashpot", "washing_machine", "sliding_box", "bumpy_road",
+                            "bouncing_ball", "rlc", "elastic_pendulum", "orbit"}) {
+    const std::string s = std::string(scene) + " --size 320x180";
+    SECTION(std::string(scene) + ": 0.25x at 10 fps, frames far shorter than a step") {
+      check_frames_are_stills({s + " --set T=3", 10, 0.25, {3, 17, -1}});
+    }
+    SECTION(std::string(scene) + ": 1x at 30 fps") { check_frames_are_stills({s + " --set T=6", 30, 1, {5, 61, -1}}); }
+  }
+}
+
+TEST_CASE("frames are stills across time steps, speeds, layouts and comparisons", "[frame-truth]") {
+  const std::vector<Case> cases = {
+      {"spring --size 320x180 --set T=8 --set dt=0.1", 60, 1, {7, 50, -1}},        // coarse dt, high fps
+      {"spring --size 320x180 --set T=8 --set dt=0.001", 10, 2, {3, 5, -1}},       // thousands of steps a frame
+      {"spring --size 320x180 --set T=40", 10, 100, {1, 2, -1}},                   // 100x
+      {"pendulum --size 320x180 --set T=2", 60, 0.1, {7, 601, -1}},                // 0.1x
+      {"pendulum_book --size 320x180 --set periods=1", 0, 0, {3, 17, -1}, 2 * M_PI / 40},  // a frame per step
+      {"spring --size 320x180 --set T=4 --compare dt=0.2,0.1,0.05", 10, 0.25, {3, 8, -1}},
+      {"spring --size 640x360 --set T=4 --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 "
+       "--panels u,phase",
+       30, 1, {7, 50, -1}},
+      {"pendulum --size 320x180 --set T=8 --window 2", 30, 1, {7, 50, -1}},
+      {"pendulum --size 320x180 --set T=8 --window 2 --window-mode jumps", 30, 1, {7, 70, -1}},
+      {"spring_dashpot --size 640x360 --set T=8 --energy-bars --panels u,phase,energy", 30, 1, {7, 50, -1}},
+      {"spring --size 320x180 --set T=2 --layout plot", 60, 0.1, {7, 50, -1}},
+      {"spring --size 320x180 --set T=2 --layout grid --compare dt=0.2,0.1", 60, 0.1, {7, 50, -1}},
+  };
+  for (const Case& c : cases)
+    SECTION(c.args + " at " + exact(c.fps) + " fps, speed " + exact(c.speed)) { check_frames_are_stills(c); }
+}
