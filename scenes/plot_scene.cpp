@@ -42,6 +42,21 @@ void PlotScene::observe(std::span<const double> row) {
   for (auto& panel : panels_) panel.observe(row);
 }
 
+void PlotScene::record_between(std::span<const double> row) {
+  for (auto& panel : panels_) panel.record(row);
+}
+
+void PlotScene::observe_between(std::span<const double> row) {
+  for (auto& panel : panels_) panel.observe(row);
+}
+
+double PlotScene::sample_interval() const {
+  double finest = 0;
+  for (const auto& panel : panels_)
+    if (const double t = panel.time_per_column(); t > 0) finest = finest > 0 ? std::min(finest, t) : t;
+  return finest / 2;
+}
+
 void PlotScene::prepare() {
   if (prepared_) return;
   for (auto& panel : panels_) panel.finish_recording();

@@ -22,6 +22,9 @@ class PlotScene final : public Scene {
 
   void record(std::span<const double> row) override;
   void observe(std::span<const double> row) override;
+  void record_between(std::span<const double> row) override;
+  void observe_between(std::span<const double> row) override;
+  double sample_interval() const override;
   void draw(render::Canvas&, std::span<const double> row) override;
   void skip(const render::Canvas&, std::span<const double> row) override;
 

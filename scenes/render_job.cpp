@@ -22,6 +22,7 @@
 #include "render/text.hpp"
 #include "render/video_concat.hpp"
 #include "scenes/frame_clock.hpp"
+#include "scenes/history_feed.hpp"
 #include "scenes/comparison_labels.hpp"
 #include "scenes/comparison_page_plots.hpp"
 #include "scenes/page_plot_collector.hpp"
@@ -276,32 +277,20 @@ void run_render(const RenderRequest& r) {
     else page_plots.emplace(pre_pass->info(), page_panel_names(pre_pass->info()), r.scene.name);
     csv.emplace(csv_path, pre_pass->info().columns, r.csv_every);
   }
-  std::vector<double> row(pre_pass->width());
-  do {
-    pre_pass->row(row);
-    scene->record(row);
+  HistoryFeed(*pre_pass, *scene, scene->sample_interval()).record_all([&](std::span<const double> row) {
     if (comparison_plots) comparison_plots->observe(*runs, row);
     if (page_plots) page_plots->observe(row);
     if (page) csv->write(pre_pass->index(), pre_pass->done(), row);
-    if ((pre_pass->index() & 0xfff) == 0) render::throw_if_stop_requested();
-  } while (pre_pass->advance());
+  });
   pre_pass.reset();
   runs = nullptr;  // it was the pre-pass
 
-  // The render pass: every solver step feeds the scene (moving plots), and
-  // frames between steps interpolate the solution (cubic Hermite).
+  // The render pass: the scene sees the history up to each frame's time
+  // (moving plots, trails), and frames between steps interpolate the
+  // solution (cubic Hermite).
   std::unique_ptr<Trajectory> trajectory = build_scene_runs(r.scene);
-  std::vector<double> step_row(trajectory->width());
-  trajectory->row(step_row);
-  scene->observe(step_row);
-  auto row_at = [&](double t) {
-    while (trajectory->t() < t && trajectory->advance()) {
-      trajectory->row(step_row);
-      scene->observe(step_row);
-    }
-    trajectory->row_at(t, row);
-    return std::span<const double>(row);
-  };
+  HistoryFeed history(*trajectory, *scene, scene->sample_interval());
+  auto row_at = [&](double t) { return history.row_at(t); };
   if (still) return write_still(r, *scene, row_at(*r.at));
 
   std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name}, {"comment", plain_text(caption)}};

@@ -16,6 +16,13 @@ class Scene {
   virtual ~Scene() = default;
   virtual void record(std::span<const double> row) = 0;
   virtual void observe(std::span<const double> row) = 0;
+  /// Rows interpolated between coarse steps (see HistoryFeed): for curves
+  /// and bounds only, never for sums over steps (work, dissipation).
+  virtual void record_between(std::span<const double> row) { (void)row; }
+  virtual void observe_between(std::span<const double> row) { (void)row; }
+  /// The time between rows that the scene's curves resolve (a pixel
+  /// column's worth, halved); 0 when solver steps are enough.
+  virtual double sample_interval() const { return 0; }
   virtual void draw(render::Canvas&, std::span<const double> row) = 0;
   /// A frame not drawn: keeps up what drawing it would have changed for the
   /// frames after it (the whole-run curves drawn so far), without drawing on

@@ -18,6 +18,8 @@ class ScenePanel {
   virtual void record(std::span<const double> row) = 0;
   /// Live, for every solver step up to the frame being drawn.
   virtual void observe(std::span<const double> row) = 0;
+  /// Simulated time per pixel column of its curves; 0 when not against time.
+  virtual double time_per_column() const { return 0; }
   /// After the pre-pass: fixes the ranges.
   virtual void finish_recording() = 0;
   /// Whether the horizontal axis is time (shared by the stacked time panels:

@@ -54,6 +54,7 @@ class SeriesPanel final : public ScenePanel {
   void observe(std::span<const double> row) override;
   /// Fixes the y range after the pre-pass.
   void finish_recording() override;
+  double time_per_column() const override { return window_ / std::max(1, panel_.columns()); }
   /// The y range spans at least this much about the curves' middle (before
   /// finish_recording), so a nearly flat curve is not blown up to fill it.
   void set_least_span(double span) { least_span_ = span; }

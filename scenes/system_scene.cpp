@@ -66,6 +66,22 @@ void SystemScene::observe(std::span<const double> row) {
   if (bars_) bars_->observe(row);
 }
 
+void SystemScene::record_between(std::span<const double> row) {
+  diagram_->record(row, world_);  // the frames show these states too
+  for (auto& panel : panels_) panel->record(row);
+}
+
+void SystemScene::observe_between(std::span<const double> row) {
+  for (auto& panel : panels_) panel->observe(row);
+}
+
+double SystemScene::sample_interval() const {
+  double finest = 0;
+  for (const auto& panel : panels_)
+    if (const double t = panel->time_per_column(); t > 0) finest = finest > 0 ? std::min(finest, t) : t;
+  return finest / 2;
+}
+
 void SystemScene::prepare() {
   if (view_) return;
   if (!style_.caption.empty()) {

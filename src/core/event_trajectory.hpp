@@ -35,7 +35,7 @@ struct EventLaw {
 
 /// The Trajectory of an EventLaw on the mesh t_n = n dt. Each step that
 /// crosses an event is cut there: the crossing is located inside the step on
-/// the cubic Hermite interpolant (exact for free fall, 4th order otherwise),
+/// the Hermite interpolant (exact for free fall, 6th order otherwise),
 /// the law changes, and the scheme restarts from the event for the rest of
 /// the step. A naive sign() in the force would chatter about the event and
 /// errs by O(dt) at mesh points; this does neither. Frames between steps are

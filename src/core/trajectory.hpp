@@ -59,7 +59,7 @@ class Trajectory {
   /// The columns at the current sample.
   virtual void row(std::span<double> out) const = 0;
   /// The columns at time t between the previous and the current sample,
-  /// by cubic Hermite interpolation of u and v (4th order, like the best schemes).
+  /// by quintic Hermite interpolation (core/hermite.hpp).
   virtual void row_at(double t, std::span<double> out) const = 0;
 
  protected:
