@@ -9,7 +9,6 @@
 #include "cli/commands.hpp"
 #include "cli/segment_option.hpp"
 #include "core/error.hpp"
-#include "render/standard_output.hpp"
 #include "scenes/diagram_registry.hpp"
 #include "scenes/render_job.hpp"
 #include "scenes/scene_config.hpp"
@@ -101,11 +100,7 @@ void run(const RenderOptions& o) {
   request.video = o.video;
   if (!o.segment.empty()) request.segment = parse_segment_option(o.segment, [](const char* name) { return std::getenv(name); });
   request.skip_existing = o.skip_existing;
-  try {
-    scenes::run_render(request);
-  } catch (const render::StreamClosed&) {
-    // -o - and the reader has gone (a closed player, `| head -c`): a pipeline's normal end.
-  }
+  scenes::run_render(request);  // -o -: a failed write ends it with StandardOutputFailed, for main to handle
 }
 }  // namespace
 
