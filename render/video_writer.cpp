@@ -210,9 +210,10 @@ struct VideoWriter::Impl {
   bool streaming;      ///< to standard output, through open_standard_output_io
   std::string target;  ///< for messages
   std::optional<TemporaryFile> file;  ///< a file, not a stream: removed last, after it is closed
-  /// Streaming: a write met EPIPE (set by check() on either thread; write()
-  /// and finish() turn the failure into StreamClosed).
-  mutable std::atomic<bool> reader_gone = false;
+  /// Streaming: a write to standard output failed, and was recorded there
+  /// (set by check() on either thread; write() and finish() turn the failure
+  /// into StandardOutputFailed, for main's check at exit to report).
+  mutable std::atomic<bool> output_failed = false;
   AVFormatContext* format = nullptr;
   AVCodecContext* codec = nullptr;
   AVStream* stream = nullptr;
@@ -264,14 +265,12 @@ VideoWriter::Impl::~Impl() {
 
 void VideoWriter::Impl::check(int code, const std::string& what, bool output) const {
   if (code >= 0) return;
-  if (streaming && code == AVERROR(EPIPE)) {
-    reader_gone = true;
-    throw OutputError("the reader of standard output has gone");
+  if (streaming && standard_output_error() != 0) {
+    output_failed = true;
+    throw OutputError("standard output failed");
   }
   std::string fix;
-  if ((code == AVERROR(ENOSPC) || code == AVERROR(EDQUOT)) && streaming)
-    fix = "free some disk space where standard output goes";
-  else if (code == AVERROR(ENOSPC) || code == AVERROR(EDQUOT))
+  if (code == AVERROR(ENOSPC) || code == AVERROR(EDQUOT))
     fix = "free some disk space or choose another directory";
   else if (code == AVERROR(EFBIG))
     fix = "the file size limit was reached: raise it (ulimit -f) or lower the quality";
@@ -544,7 +543,7 @@ void VideoWriter::write(const std::uint8_t* argb32, int stride, const Damage* ch
   {
     std::unique_lock lock(m.mutex);
     m.changed.wait(lock, [&] { return m.queue.size() < m.capacity || !m.failure.empty(); });
-    if (m.reader_gone) throw StreamClosed{};
+    if (m.output_failed) throw StandardOutputFailed{};
     if (!m.failure.empty()) throw OutputError(m.failure);
     frame = m.free_frames.back();  // never empty: see frames
     m.free_frames.pop_back();
@@ -584,7 +583,7 @@ void VideoWriter::finish() {
       m.file->commit();
     }
   } catch (const OutputError&) {
-    if (m.reader_gone) throw StreamClosed{};
+    if (m.output_failed) throw StandardOutputFailed{};
     throw;
   }
   finished_ = true;

@@ -38,8 +38,8 @@ struct VideoOptions {
 /// drawing and converting the next frame overlap encoding this one. The file
 /// is written under a temporary name and renamed by finish(): a failed or
 /// abandoned writer leaves nothing at the final path. The path "-" streams
-/// to standard output (VideoOptions::format names the container); a reader
-/// that goes away ends the writer with StreamClosed (standard_output.hpp).
+/// to standard output (VideoOptions::format names the container); a failed
+/// write there ends the writer with StandardOutputFailed (standard_output.hpp).
 class VideoWriter {
  public:
   /// Throws OutputError for an unknown extension or codec, a missing encoder,

@@ -15,8 +15,8 @@ namespace vibra::render {
 /// (Yuv420Converter: BT.709, limited range, only what changed), tagged
 /// C420jpeg (chroma centred in each 2x2 block) and XCOLORRANGE=LIMITED.
 ///
-/// Every write is checked: a gone reader throws StreamClosed, any other
-/// failure OutputError (standard_output.hpp).
+/// Every write is checked: a failed one throws StandardOutputFailed
+/// (standard_output.hpp).
 class Y4mStream {
  public:
   /// Frames of width x height (1..8192) at `fps` frames per second.

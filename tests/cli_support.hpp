@@ -87,6 +87,44 @@ inline pid_t spawn_vibra(const std::vector<std::string>& args, const std::string
   return pid;
 }
 
+/// Runs `vibra ARGS` with its stdout into a pipe, reads `keep` bytes and
+/// closes the pipe, as `| head -c KEEP` does; returns vibra's own exit code
+/// and stderr (`out` holds the bytes read).
+inline CommandResult read_then_close(const std::vector<std::string>& args, std::size_t keep) {
+  static int counter = 0;
+  const std::string err_path = (std::filesystem::temp_directory_path() /
+                                ("vibra_pipe_err_" + std::to_string(::getpid()) + "_" + std::to_string(counter++)))
+                                   .string();
+  int fds[2];
+  REQUIRE(::pipe(fds) == 0);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::close(fds[0]);
+    ::dup2(fds[1], 1);
+    const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(err, 2);
+    exec_vibra(args);
+  }
+  ::close(fds[1]);
+  CommandResult result;
+  result.out.resize(keep);
+  std::size_t got = 0;
+  while (got < keep) {
+    const ssize_t n = ::read(fds[0], result.out.data() + got, keep - got);
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  result.out.resize(got);
+  CHECK(got == keep);
+  ::close(fds[0]);  // the reader goes away mid-stream
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  result.err = read_file(err_path);
+  std::filesystem::remove(err_path);
+  return result;
+}
+
 /// A fresh empty directory under /tmp, removed by the destructor.
 struct ScratchDirectory {
   std::filesystem::path path;

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <thread>
+#include <utility>
 
 #include "cli_support.hpp"
 
@@ -108,4 +109,14 @@ TEST_CASE("stills: PNG, SVG and PDF at a chosen time", "[render]") {
   CHECK(read_file(dir / "s.png").substr(1, 3) == "PNG");
   CHECK(read_file(dir / "s.svg").substr(0, 5) == "<?xml");
   CHECK(read_file(dir / "s.pdf").substr(0, 4) == "%PDF");
+}
+
+TEST_CASE("stills: --at takes an expression, as --set values do", "[render][cli]") {
+  ScratchDirectory dir;
+  for (const auto& [at, t] : {std::pair{"pi/2", "1.5708"}, std::pair{"2*pi", "6.28319"}}) {
+    INFO("--at " << at);
+    const auto r = run_vibra(std::string("render --size 320x180 --at '") + at + "' -o " + (dir / "s.png"));
+    CHECK(r.exit_code == 0);
+    CHECK(r.err == "vibra: wrote " + (dir / "s.png") + " (t = " + t + ")\n");
+  }
 }

@@ -1,12 +1,8 @@
 // -o -: the video on standard output, raw (y4m) or encoded (NUT, Matroska),
 // read back from the pipe; a reader that goes away ends the run quietly; a
 // full disk behind standard output is a one-line error.
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
+#include <algorithm>
 #include <catch2/catch.hpp>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -17,46 +13,6 @@ using vibra::test::ScratchDirectory;
 
 namespace {
 const std::string kShort = "render --size 320x180 --set periods=0.5 -q -o - ";  // 31 frames at 30 fps
-
-struct Ended {
-  int exit_code = -1;
-  std::string err;
-};
-
-/// Runs vibra with its stdout into a pipe, reads `keep` bytes and closes the
-/// pipe, as `| head -c KEEP` does; returns vibra's own exit code and stderr.
-Ended read_then_close(const std::vector<std::string>& args, std::size_t keep) {
-  ScratchDirectory logs;
-  int fds[2];
-  REQUIRE(::pipe(fds) == 0);
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::close(fds[0]);
-    ::dup2(fds[1], 1);
-    const int err = ::open((logs / "err").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(err, 2);
-    vibra::test::exec_vibra(args);
-  }
-  ::close(fds[1]);
-  std::vector<char> buffer(keep);
-  std::size_t got = 0;
-  while (got < keep) {
-    const ssize_t n = ::read(fds[0], buffer.data() + got, keep - got);
-    if (n <= 0) break;
-    got += static_cast<std::size_t>(n);
-  }
-  CHECK(got == keep);
-  ::close(fds[0]);  // the reader goes away mid-stream
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  Ended ended;
-  ended.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  std::FILE* f = std::fopen((logs / "err").c_str(), "rb");
-  char line[4096];
-  while (f && std::fgets(line, sizeof line, f)) ended.err += line;
-  if (f) std::fclose(f);
-  return ended;
-}
 
 std::vector<std::string> words(const std::string& text) {
   std::vector<std::string> out;
@@ -112,7 +68,7 @@ TEST_CASE("standard output in NUT or Matroska: H.264 that a pipe reader decodes"
 TEST_CASE("a reader that closes the pipe ends the stream quietly", "[stream][render]") {
   for (const char* format : {"y4m", "nut", "matroska"}) {
     INFO(format);
-    const Ended ended = read_then_close({"render", "--size", "320x180", "--set", "periods=200", "-q", "-o", "-", "--format", format}, 1000);
+    const auto ended = vibra::test::read_then_close({"render", "--size", "320x180", "--set", "periods=200", "-q", "-o", "-", "--format", format}, 1000);
     CHECK(ended.exit_code == 0);
     CHECK(ended.err.empty());
   }

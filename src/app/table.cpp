@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace vibra::app {
 
@@ -27,44 +28,47 @@ std::string csv_text(const Table::Cell& cell) {
 }
 }  // namespace
 
-void Table::print_aligned(std::FILE* out) const {
+std::string Table::aligned() const {
+  std::string out;
   std::vector<size_t> widths;
   for (const auto& c : columns_) widths.push_back(c.size());
   for (const auto& row : rows_)
     for (size_t i = 0; i < row.size() && i < widths.size(); ++i) widths[i] = std::max(widths[i], aligned_text(row[i]).size());
-  auto print_line = [&](const std::vector<std::string>& cells, const std::vector<bool>& left) {
+  auto add_line = [&](const std::vector<std::string>& cells, const std::vector<bool>& left) {
     std::string line;
     for (size_t i = 0; i < cells.size(); ++i) {
       const std::string pad(widths[i] - cells[i].size(), ' ');
       line += (i ? "  " : "") + (left[i] ? cells[i] + pad : pad + cells[i]);
     }
     while (!line.empty() && line.back() == ' ') line.pop_back();
-    std::fprintf(out, "%s\n", line.c_str());
+    out += line + '\n';
   };
   // Text columns align left, numbers right; headers follow their column.
   std::vector<bool> left(columns_.size(), false);
   if (!rows_.empty())
     for (size_t i = 0; i < columns_.size() && i < rows_[0].size(); ++i) left[i] = std::holds_alternative<std::string>(rows_[0][i]);
-  print_line(columns_, left);
+  add_line(columns_, left);
   for (const auto& row : rows_) {
     std::vector<std::string> cells;
     for (const auto& cell : row) cells.push_back(aligned_text(cell));
-    print_line(cells, left);
+    add_line(cells, left);
   }
+  return out;
 }
 
-void Table::print_csv(std::FILE* out) const {
-  auto print_line = [&](const std::vector<std::string>& cells) {
-    std::string line;
-    for (size_t i = 0; i < cells.size(); ++i) line += (i ? "," : "") + cells[i];
-    std::fprintf(out, "%s\n", line.c_str());
+std::string Table::csv() const {
+  std::string out;
+  auto add_line = [&](const std::vector<std::string>& cells) {
+    for (size_t i = 0; i < cells.size(); ++i) out += (i ? "," : "") + cells[i];
+    out += '\n';
   };
-  print_line(columns_);
+  add_line(columns_);
   for (const auto& row : rows_) {
     std::vector<std::string> cells;
     for (const auto& cell : row) cells.push_back(csv_text(cell));
-    print_line(cells);
+    add_line(cells);
   }
+  return out;
 }
 
 }  // namespace vibra::app

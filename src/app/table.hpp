@@ -1,5 +1,4 @@
 #pragma once
-#include <cstdio>
 #include <string>
 #include <variant>
 #include <vector>
@@ -19,8 +18,9 @@ class Table {
   const std::vector<std::string>& columns() const { return columns_; }
   const Cell& cell(size_t row, size_t column) const { return rows_[row][column]; }
 
-  void print_aligned(std::FILE*) const;
-  void print_csv(std::FILE*) const;
+  /// The table as lines, each ending in a newline.
+  std::string aligned() const;
+  std::string csv() const;
 
  private:
   std::vector<std::string> columns_;

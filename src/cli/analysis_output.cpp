@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "cli/wrote_message.hpp"
+#include "render/standard_output.hpp"
 
 namespace vibra::cli {
 
@@ -16,23 +17,22 @@ void add_output_options(CLI::App& cmd, AnalysisOutput& o) {
 void check_output(const AnalysisOutput& o) { app::check_figure_output(o.figure, o.size); }
 
 void show(const AnalysisOutput& o, const app::ExperimentResult& result) {
+  std::string text;
   for (size_t i = 0; i < result.tables.size(); ++i) {
-    if (i) std::printf("\n");
+    if (i) text += '\n';
     const app::TitledTable& t = result.tables[i];
     if (o.csv) {
-      t.table.print_csv(stdout);
+      text += t.table.csv();
     } else {
-      if (!t.heading.empty()) std::printf("%s\n", t.heading.c_str());
-      t.table.print_aligned(stdout);
+      if (!t.heading.empty()) text += t.heading + '\n';
+      text += t.table.aligned();
     }
   }
   // The conclusion goes under the table, or with --csv on stderr so that the
   // CSV stays a table (and then not with --quiet).
-  if (!result.conclusion.empty() && !(o.csv && o.quiet)) {
-    std::FILE* stream = o.csv ? stderr : stdout;
-    std::fprintf(stream, "%s%s\n", o.csv ? "vibra: " : "", result.conclusion.c_str());
-  }
-  std::fflush(stdout);
+  if (!result.conclusion.empty() && !o.csv) text += result.conclusion + '\n';
+  render::print_standard_output(text);  // a failure stops here, before the figure
+  if (!result.conclusion.empty() && o.csv && !o.quiet) std::fprintf(stderr, "vibra: %s\n", result.conclusion.c_str());
   app::write_figure(result, o.figure, o.size);
   if (!o.figure.empty()) say_wrote(o.quiet, o.figure);
 }

@@ -26,6 +26,7 @@ void check_output(const AnalysisOutput&);
 
 /// Prints the experiment's tables on stdout (aligned under their headings, or
 /// as CSV; a blank line between tables) and writes its figure when -o was given.
+/// A failed write to stdout stops it before the figure (StandardOutputFailed).
 void show(const AnalysisOutput&, const app::ExperimentResult&);
 
 }  // namespace vibra::cli

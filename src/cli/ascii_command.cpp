@@ -4,17 +4,18 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <memory>
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "app/ascii_plot.hpp"
 #include "cli/commands.hpp"
 #include "core/error.hpp"
+#include "render/standard_output.hpp"
 #include "render/stop_signal.hpp"
 
 namespace vibra::cli {
@@ -79,10 +80,9 @@ void run(const AsciiOptions& o) {
   const bool terminal = isatty(STDOUT_FILENO) == 1;
   std::vector<char> out(1 << 16);
   size_t used = 0;
-  auto flush = [&] {
-    const bool ok = std::fwrite(out.data(), 1, used, stdout) == used && std::fflush(stdout) == 0;
-    used = 0;
-    return ok;  // false: the reader is gone (| head), so stop quietly
+  auto flush = [&] {  // a failed write (the reader gone, a full disk) ends the run: StandardOutputFailed
+    const size_t size = std::exchange(used, 0);
+    render::print_standard_output({out.data(), size});
   };
 
   if (!plot.legend().empty()) {
@@ -93,19 +93,22 @@ void run(const AsciiOptions& o) {
   const auto pause = std::chrono::duration<double>(o.rate > 0 ? 1 / o.rate : 0);
   do {
     if (render::stop_requested()) {  // keep the complete lines already made
-      flush();
+      try {
+        flush();
+      } catch (const render::StandardOutputFailed&) {  // recorded; the interrupt is the one line to say
+      }
       throw render::Interrupted{render::stop_signal(), "every line written is complete"};
     }
     const std::string_view line = plot.line();
     if (used + line.size() + 1 > out.size()) {
-      if (!flush()) return;
+      flush();
       if (line.size() + 1 > out.size()) out.resize(line.size() + 1);
     }
     std::memcpy(out.data() + used, line.data(), line.size());
     used += line.size();
     out[used++] = '\n';
     if (terminal || o.rate > 0) {
-      if (!flush()) return;
+      flush();
       if (o.rate > 0) std::this_thread::sleep_for(pause);
     }
   } while (plot.advance());

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "render/standard_output.hpp"
+
 namespace vibra::cli {
 
 std::string models_help() {
@@ -38,6 +40,10 @@ std::string model_keys_help(const ModelDefinition& model) {
     out += line;
   }
   return out;
+}
+
+void print_model_help(const std::string& usage, const std::string& model) {
+  render::print_standard_output(usage + (model.empty() ? models_help() : model_keys_help(find_model(model))));
 }
 
 }  // namespace vibra::cli

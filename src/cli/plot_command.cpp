@@ -1,4 +1,3 @@
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -107,7 +106,7 @@ void write_figure_page(const PlotOptions& o) {
 
 void run_plot(const PlotOptions& o) {
   if (o.help || o.model.empty()) {
-    std::printf("%s%s\n%s", kUsage, kExamples, o.model.empty() ? models_help().c_str() : model_keys_help(find_model(o.model)).c_str());
+    print_model_help(std::string(kUsage) + kExamples + "\n", o.model);
     if (!o.help) throw UsageError("vibra plot needs a MODEL, e.g. vibra plot pendulum -o pendulum.png");
     return;
   }

@@ -9,7 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/segment_option.hpp"
 #include "core/error.hpp"
-#include "render/standard_output.hpp"
+#include "core/expression.hpp"
 #include "scenes/diagram_registry.hpp"
 #include "scenes/render_job.hpp"
 #include "scenes/scene_config.hpp"
@@ -29,7 +29,7 @@ struct RenderOptions {
   std::string compare;
   std::string panels;
   bool energy_bars = false;
-  std::optional<double> at;
+  std::optional<std::string> at;  ///< a time: a number or an expression, as --set values take
   std::string segment;
   bool skip_existing = false;
   bool quiet = false;
@@ -70,6 +70,15 @@ std::string scene_keys_help() {
   return out;
 }
 
+/// --at's time, read as --set values are: 3.2, pi/2, 2*pi.
+double still_time(const std::string& text) {
+  try {
+    return evaluate_constant("--at", text);
+  } catch (const UsageError&) {
+    throw UsageError("--at " + text + " is not a time: give a number or an expression, e.g. --at 3.2 or --at pi/2");
+  }
+}
+
 void run(const RenderOptions& o) {
   scenes::RenderRequest request;
   request.scene = scenes::load_scene(o.scene);
@@ -93,7 +102,7 @@ void run(const RenderOptions& o) {
   if (o.energy_bars) request.scene.energy_bars = true;
   if (o.frame_per_step) request.scene.frame_per_step = true;
   request.output = o.output.empty() ? request.scene.name + ".mp4" : o.output;
-  request.at = o.at;
+  if (o.at) request.at = still_time(*o.at);
   request.frames_player = o.frames_player;
   request.csv_every = o.every;
   request.command_line = command_line();
@@ -101,11 +110,7 @@ void run(const RenderOptions& o) {
   request.video = o.video;
   if (!o.segment.empty()) request.segment = parse_segment_option(o.segment, [](const char* name) { return std::getenv(name); });
   request.skip_existing = o.skip_existing;
-  try {
-    scenes::run_render(request);
-  } catch (const render::StreamClosed&) {
-    // -o - and the reader has gone (a closed player, `| head -c`): a pipeline's normal end.
-  }
+  scenes::run_render(request);  // -o -: a failed write ends it with StandardOutputFailed, for main to handle
 }
 }  // namespace
 
@@ -137,7 +142,7 @@ void add_render_command(CLI::App& app) {
                 "Kinetic, potential and dissipated energy as bars beside the diagram, on one scale over the run");
   cmd->add_flag("--frames-player", o->frames_player, "With -o PAGE.html: PNG frames and a page that steps through them");
   cmd->add_option("--every", o->every, "With -o PAGE.html: the CSV beside the page keeps every K-th step (and the last)");
-  cmd->add_option("--at", o->at, "Render one still at this time");
+  cmd->add_option("--at", o->at, "Render one still at this time (a number or an expression, e.g. 3.2 or pi/2)");
   cmd->add_option("--codec", o->video.codec, "Video codec: h264, vp9, vp8, theora, gif (default from the extension)");
   cmd->add_option("--quality", o->video.quality,
                   "draft, medium, high, or lossless (H.264 or VP9: decodes to exactly the frames drawn)")

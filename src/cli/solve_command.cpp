@@ -9,6 +9,7 @@
 #include "core/csv_writer.hpp"
 #include "core/error.hpp"
 #include "render/output_error.hpp"
+#include "render/standard_output.hpp"
 #include "render/stop_signal.hpp"
 #include "render/temporary_file.hpp"
 
@@ -27,8 +28,7 @@ struct SolveOptions {
 
 void run_solve(const SolveOptions& o) {
   if (o.help || o.model.empty()) {
-    std::printf("Usage: vibra solve MODEL [--set KEY=VALUE]... [--output FILE] [--every K] [--energy]\n\n%s",
-                o.model.empty() ? models_help().c_str() : model_keys_help(find_model(o.model)).c_str());
+    print_model_help("Usage: vibra solve MODEL [--set KEY=VALUE]... [--output FILE] [--every K] [--energy]\n\n", o.model);
     if (!o.help) throw UsageError("vibra solve needs a MODEL, e.g. vibra solve pendulum");
     return;
   }
@@ -71,7 +71,7 @@ void run_solve(const SolveOptions& o) {
       if ((trajectory->index() & 0xffff) == 0) render::throw_if_stop_requested();
     } while (!csv.failed() && trajectory->advance());
     if (!csv.flush()) {
-      if (!file) return;  // stdout closed by the reader (e.g. `| head`): end quietly
+      if (!file) render::standard_output_failed(csv.error());
       throw render::OutputError("writing '" + o.output + "' failed (disk full?): free space or choose another path");
     }
     if (file) {

@@ -1,5 +1,6 @@
 #include "core/csv_writer.hpp"
 
+#include <cerrno>
 #include <charconv>
 #include <cstring>
 
@@ -34,14 +35,21 @@ void CsvWriter::write(std::span<const double> row) {
 }
 
 void CsvWriter::drain() {
-  if (used_ && !failed_ && std::fwrite(buffer_.data(), 1, used_, out_) != used_) failed_ = true;
+  errno = 0;
+  if (used_ && !failed_ && std::fwrite(buffer_.data(), 1, used_, out_) != used_) fail();
   used_ = 0;
 }
 
 bool CsvWriter::flush() {
   drain();
-  if (!failed_ && std::fflush(out_) != 0) failed_ = true;
+  errno = 0;
+  if (!failed_ && std::fflush(out_) != 0) fail();
   return !failed_;
+}
+
+void CsvWriter::fail() {
+  failed_ = true;
+  error_ = errno != 0 ? errno : EIO;
 }
 
 }  // namespace vibra

@@ -18,13 +18,17 @@ class CsvWriter {
   bool flush();
   /// A write has failed: stop producing rows.
   bool failed() const { return failed_; }
+  /// The errno of the failed write, or 0.
+  int error() const { return error_; }
 
  private:
   void drain();
+  void fail();  ///< after a failed stdio call: keeps its errno
   std::FILE* out_;
   std::vector<char> buffer_;
   size_t used_ = 0;
   bool failed_ = false;
+  int error_ = 0;
 };
 
 }  // namespace vibra
