@@ -5,7 +5,8 @@
 namespace vibra::render {
 
 Color palette::series(size_t k) {
-  const Color colors[] = {blue, vermillion, green, purple, orange, sky, ink, yellow};
+  // Sky blue comes late: faded, it is the default blue faded.
+  const Color colors[] = {blue, vermillion, green, purple, orange, ink, sky, yellow};
   return colors[k % 8];
 }
 

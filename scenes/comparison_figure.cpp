@@ -54,7 +54,7 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
   if (!std::isfinite(T)) throw UsageError("a plot needs a finite end time: give T or periods");
   long long steps = 0;
   for (size_t m = 0; m < comparison.size(); ++m) steps = std::max(steps, comparison.trajectory(m).info().mesh.steps);
-  comparison.set_escape_limit_from_bounds();
+  comparison.set_view_limits();
   // Comparing schemes or time steps: one problem, one exact solution. Comparing
   // a model key: each member has its own, dashed in its colour.
   const bool shared_exact = comparison.same_problem();
@@ -103,10 +103,11 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
     if ((++samples & 0xffff) == 0) render::throw_if_stop_requested();
   });
 
-  // Where a member blew up: a dot at its last point and a note in the legend.
+  // Where a member left the view or blew up: a dot at its last point and a note in the legend.
   for (size_t m = 0; m < comparison.size(); ++m) {
     if (!comparison.blew_up(m)) continue;
-    for (render::Series* s : labelled[m]) s->set_label(s->label() + blow_up_note(comparison.blow_up_time(m)));
+    for (render::Series* s : labelled[m])
+      s->set_label(s->label() + ": " + early_end_note(comparison.early_end(m), comparison.blow_up_time(m)));
     for (const Feed& f : feeds)
       if (f.member == m && !last[m].empty())
         figure.add_points(f.panel, "", {render::palette::series(m), 0, false, true})

@@ -14,14 +14,14 @@ std::string member_markup(const Comparison& c, size_t m) {
 }
 
 render::Color member_color(const render::Color& first, size_t i) {
-  using namespace render::palette;
-  const render::Color others[] = {orange, sky, green, purple, vermillion, ink, yellow};
-  return i == 0 ? first : others[(i - 1) % 7];
+  // The figures' order (palette::series), whose hues are far apart first:
+  // no member's faded future looks like another's curve.
+  return i == 0 ? first : render::palette::series(i);
 }
 
-std::string blow_up_note(double t) {
+std::string early_end_note(EarlyEnd end, double t) {
   char text[64];
-  std::snprintf(text, sizeof text, ": blew up at <i>t</i> = %.3g", t);
+  std::snprintf(text, sizeof text, "%s at <i>t</i> = %.3g", end == EarlyEnd::blew_up ? "blew up" : "left the view", t);
   return text;
 }
 

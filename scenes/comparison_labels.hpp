@@ -20,8 +20,9 @@ std::string member_markup(const Comparison&, size_t member);
 /// purple, then vermillion (the first force's arrow), ink and yellow.
 render::Color member_color(const render::Color& first, size_t i);
 
-/// ": blew up at t = 12.3", appended to a member's legend entry.
-std::string blow_up_note(double t);
+/// "left the view at t = 12.3" (still finite, past its view limit) or
+/// "blew up at t = 12.3" (non-finite), for a member's legend entry.
+std::string early_end_note(EarlyEnd, double t);
 
 /// One line for a comparison: the model, what its members share (scheme, dt,
 /// the settings given) and the key compared.

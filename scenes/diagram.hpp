@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/comparison.hpp"
 #include "render/canvas.hpp"
 #include "scenes/series_panel.hpp"
 #include "scenes/scene_style.hpp"
@@ -21,14 +22,16 @@ struct Arrow {
   Point from, to;
 };
 
-/// A run's entry in a legend: its name and colour, and how to tell from a
-/// row that it blew up.
+/// A run's entry in a legend: its name and colour, how to tell from a row
+/// that it ended early, and why.
 struct LegendEntry {
   std::string label;  ///< Pango markup
   render::Color color;
   bool dashed = false;  ///< drawn as a dashed line (an exact solution)
-  /// The run's main quantity in a row: NaN once it blew up (empty: never does).
+  /// The run's main quantity in a row: NaN once it ended (empty: never does).
   std::function<double(std::span<const double> row)> probe = {};
+  /// Why it ended, asked when its rows first turn NaN (empty: it blew up).
+  std::function<EarlyEnd()> early_end = {};
 };
 
 /// Widens `world` to be symmetric about the vertical line at `x`, so that a

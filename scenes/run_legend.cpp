@@ -6,6 +6,7 @@
 
 #include "render/shapes.hpp"
 #include "render/text.hpp"
+#include "scenes/comparison_labels.hpp"
 
 namespace vibra::scenes {
 
@@ -13,27 +14,25 @@ namespace {
 constexpr double kLabelSize = 16, kNoteSize = 13;
 constexpr double kSwatch = 26, kGap = 8, kRow = 24, kNoteRow = 18;
 
-std::string note_text(double t) {
-  char text[64];
-  std::snprintf(text, sizeof text, "blew up at <i>t</i> = %.3g", t);
-  return text;
-}
+std::string note_text(EarlyEnd end, double t) { return early_end_note(end, t); }
 }  // namespace
 
 RunLegend::RunLegend(std::vector<LegendEntry> entries, int height)
-    : entries_(std::move(entries)), blow_up_times_(entries_.size(), INFINITY) {
+    : entries_(std::move(entries)), blow_up_times_(entries_.size(), INFINITY), ends_(entries_.size(), EarlyEnd::none) {
   if (entries_.empty()) return;
   render::Canvas measure = render::Canvas::image(8, height);
   const double scale = measure.scale();
-  double widest = render::text_size(measure, note_text(1e-300), {kNoteSize}).x();
+  double widest = render::text_size(measure, note_text(EarlyEnd::left_view, 1e-300), {kNoteSize}).x();
   for (const auto& e : entries_) widest = std::max(widest, render::text_size(measure, e.label, {kLabelSize}).x());
   width_ = widest + (kSwatch + kGap + 12) * scale;
 }
 
 void RunLegend::record(std::span<const double> row) {
   for (size_t i = 0; i < entries_.size(); ++i)
-    if (entries_[i].probe && !std::isfinite(entries_[i].probe(row)))
-      blow_up_times_[i] = std::min(blow_up_times_[i], row[0]);
+    if (ends_[i] == EarlyEnd::none && entries_[i].probe && !std::isfinite(entries_[i].probe(row))) {
+      blow_up_times_[i] = row[0];
+      ends_[i] = entries_[i].early_end ? entries_[i].early_end() : EarlyEnd::blew_up;
+    }
 }
 
 double RunLegend::row_top(size_t i, double scale) const {
@@ -61,7 +60,7 @@ void RunLegend::draw(render::Canvas& canvas, const render::Point& corner, double
     const LegendEntry& e = entries_[i];
     if (!(t >= blow_up_times_[i])) continue;
     const double y = corner.y() + row_top(i, scale) + (kRow + 0.5 * kNoteRow) * scale;
-    render::draw_text(canvas, {left, y}, note_text(blow_up_times_[i]), {kNoteSize, e.color}, render::Anchor::left);
+    render::draw_text(canvas, {left, y}, note_text(ends_[i], blow_up_times_[i]), {kNoteSize, e.color}, render::Anchor::left);
   }
 }
 

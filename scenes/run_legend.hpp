@@ -8,8 +8,8 @@ namespace vibra::scenes {
 
 /// The legend of a comparison's runs: a column of its own at the right of
 /// the diagram's area, so it never covers the drawing or a curve. Each run's
-/// line and name; under a run that blew up, "blew up at t = ..." appears
-/// once the frame's time reaches it.
+/// line and name; under a run that ended early, "left the view at t = ..."
+/// or "blew up at t = ..." appears once the frame's time reaches it.
 class RunLegend {
  public:
   /// Measures the entries at the frame height `height` (720p sizes, scaled).
@@ -20,8 +20,10 @@ class RunLegend {
   double width() const { return width_; }
   /// Pre-pass over the run's rows: when each run blows up.
   void record(std::span<const double> row);
-  /// The time run i blew up, or infinity.
+  /// The time run i ended early, or infinity.
   double blow_up_time(size_t i) const { return blow_up_times_.at(i); }
+  /// Why run i ended early.
+  EarlyEnd early_end(size_t i) const { return ends_.at(i); }
 
   /// The lines and names, in the column whose top right corner is `corner`.
   void draw_static(render::Canvas&, const render::Point& corner) const;
@@ -34,6 +36,7 @@ class RunLegend {
 
   std::vector<LegendEntry> entries_;
   std::vector<double> blow_up_times_;
+  std::vector<EarlyEnd> ends_;
   double width_ = 0;
 };
 

@@ -110,7 +110,8 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
   for (size_t i = 0; i < comparison.size(); ++i) {
     columns.push_back(MemberColumns::of(runs, i));
     legend.push_back({member_markup(comparison, i), member_color(config.colors.bob, i), false,
-                      columns[i].reading([](std::span<const double> row) { return row[1]; })});
+                      columns[i].reading([](std::span<const double> row) { return row[1]; }),
+                      [ends = runs.early_ends(), i] { return (*ends)[i]; }});
   }
   const TrajectoryInfo& first = comparison.trajectory(0).info();
   auto exact_of = [&](size_t i) -> const std::function<double(double)>& { return comparison.trajectory(i).info().exact; };

@@ -13,6 +13,7 @@
 #include "cli_support.hpp"
 #include "core/comparison_trajectory.hpp"
 #include "render/canvas.hpp"
+#include "scenes/comparison_labels.hpp"
 #include "scenes/pendulum_geometry.hpp"
 #include "scenes/run_legend.hpp"
 #include "scenes/scene_config.hpp"
@@ -96,26 +97,59 @@ TEST_CASE("a member that blows up reads NaN from then on while the others run to
     const bool gone = row[0] >= runs.blow_up_time(0);
     CHECK(std::isnan(row[runs.offset(0)]) == gone);
     CHECK(std::isfinite(row[runs.offset(1)]));
-    if (!gone) CHECK(std::abs(row[runs.offset(0)]) <= runs.comparison().escape_limit());
+    if (!gone) CHECK(std::abs(row[runs.offset(0)]) <= runs.comparison().escape_limit(0));
   } while (runs.advance());
   CHECK(runs.blow_up_time(0) < 6);  // Forward Euler's amplitude grows by 27% a step here
+  CHECK((*runs.early_ends())[0] == EarlyEnd::left_view);  // still finite: it left the view
+  CHECK((*runs.early_ends())[1] == EarlyEnd::none);
   CHECK(std::isinf(runs.blow_up_time(1)));
   CHECK(last_t == Approx(6).epsilon(1e-12));
 }
 
-TEST_CASE("the legend learns when each run blew up from the rows", "[comparison]") {
-  scenes::RunLegend legend({{"a", render::palette::blue, false, [](std::span<const double> r) { return r[1]; }},
+TEST_CASE("the legend learns when each run ended from the rows, and why", "[comparison]") {
+  EarlyEnd why_a = EarlyEnd::none;
+  scenes::RunLegend legend({{"a", render::palette::blue, false, [](std::span<const double> r) { return r[1]; },
+                             [&] { return why_a; }},
                             {"b", render::palette::orange, false, [](std::span<const double> r) { return r[2]; }},
                             {"exact", render::palette::ink, true}},
                            360);
   CHECK(legend.width() > 0);
   for (double t : {0.0, 1.0, 2.0, 3.0}) {
+    if (t == 2) why_a = EarlyEnd::left_view;  // as the trajectory learns it, before its rows turn NaN
     const double row[] = {t, t < 2 ? 1.0 : NAN, 1.0};
     legend.record(row);
   }
   CHECK(legend.blow_up_time(0) == 2);
+  CHECK(legend.early_end(0) == EarlyEnd::left_view);
   CHECK(std::isinf(legend.blow_up_time(1)));
   CHECK(std::isinf(legend.blow_up_time(2)));
+  CHECK(scenes::early_end_note(EarlyEnd::left_view, 2) == "left the view at <i>t</i> = 2");
+  CHECK(scenes::early_end_note(EarlyEnd::blew_up, 2) == "blew up at <i>t</i> = 2");
+}
+
+TEST_CASE("a run that stays bounded stays in view; one that grows leaves it; one that overflows blew up", "[comparison]") {
+  // Euler-Cromer at a dt near its stability limit swings to |u| = 2.3 from
+  // u(0) = 1 and decays: bounded, so the view holds it.
+  const Parameters wide = settings("vibration", {"m=4", "damping=quadratic", "b=0.2", "s=2*u",
+                                                 "dt=0.9*2/sqrt(0.5)", "periods=6"});
+  ComparisonTrajectory bounded(find_model("vibration"), wide, parse_comparison("scheme=centered,euler-cromer"));
+  while (bounded.advance()) {
+  }
+  CHECK(std::isinf(bounded.blow_up_time(0)));
+  CHECK(std::isinf(bounded.blow_up_time(1)));
+  // Forward Euler gains energy every step: past 4 times its first swing it leaves, still finite.
+  Comparison growing(find_model("undamped"), settings("undamped", {"steps_per_period=8", "periods=40"}),
+                     parse_comparison("scheme=forward-euler,rk4"));
+  growing.set_view_limits();
+  growing.advance_to(growing.end_time());
+  CHECK(growing.early_end(0) == EarlyEnd::left_view);
+  CHECK(growing.early_end(1) == EarlyEnd::none);
+  // Without a view limit, it runs until its values overflow: that is a blow-up.
+  Comparison overflowing(find_model("undamped"), settings("undamped", {"steps_per_period=8", "periods=4000"}),
+                         parse_comparison("scheme=forward-euler,rk4"));
+  overflowing.advance_to(overflowing.end_time());
+  CHECK(overflowing.early_end(0) == EarlyEnd::blew_up);
+  CHECK(overflowing.early_end(1) == EarlyEnd::none);
 }
 
 TEST_CASE("each member's ghost is drawn at its own state", "[comparison]") {

@@ -45,7 +45,7 @@ constexpr const char* kExamples =
     "elastic-pendulum and two-body, the main quantity otherwise.\n"
     "\n--compare KEY=V1,V2,... runs the model once per value (up to 8) of one key: scheme, dt,\n"
     "steps_per_period or a model key. Every panel draws one curve per run, the exact solution dashed where\n"
-    "known; a run that leaves the view is marked 'blew up at t = ...'. Default panels: the main quantity and\n"
+    "known; a run that grows without bound is marked 'left the view at t = ...', one that overflows 'blew up at t = ...'. Default panels: the main quantity and\n"
     "phase (path for elastic-pendulum and two-body).\n"
     "\nExamples:\n"
     "  vibra plot pendulum -o pendulum.png                       # theta, S and D against t\n"

@@ -57,7 +57,7 @@ std::vector<Parameters> comparison_members(const Parameters& base, const Compari
 }
 
 Comparison::Comparison(const ModelDefinition& model, const Parameters& base, ComparisonRequest request)
-    : request_(std::move(request)) {
+    : model_(&model), request_(std::move(request)) {
   for (Parameters& p : comparison_members(base, request_)) {
     auto trajectory = model.build(p);
     row_.resize(std::max(row_.size(), trajectory->width()));
@@ -75,15 +75,64 @@ double Comparison::end_time() const {
   return T;
 }
 
-void Comparison::set_escape_limit_from_bounds() {
+namespace {
+/// How a run's main quantity grows: its largest |u| over the first and the
+/// last quarter of the run and over all of it, from a run of its own.
+struct Swing {
+  double first = 0, last = 0, all = 0;
+  bool overflowed = false;
+  /// How much larger its swings end than they start.
+  double growth() const { return first > 0 ? last / first : last > 0 ? INFINITY : 1; }
+};
+
+Swing swing_of(const ModelDefinition& model, const Parameters& p) {
+  std::unique_ptr<Trajectory> run = model.build(p);
+  const double T = run->info().mesh.T;
+  std::vector<double> row(run->width());
+  Swing s;
+  try {
+    do {
+      run->row(row);
+      const double u = std::abs(row[1]);
+      if (!std::isfinite(u)) return s.overflowed = true, s;
+      s.all = std::max(s.all, u);
+      if (row[0] <= T / 4) s.first = std::max(s.first, u);
+      if (row[0] >= 3 * T / 4) s.last = std::max(s.last, u);
+    } while (run->advance());
+  } catch (const SolutionError&) {
+    s.overflowed = true;
+  }
+  return s;
+}
+}  // namespace
+
+void Comparison::set_view_limits() {
   double bound = 0;
   for (const Member& m : members_) bound = std::max(bound, m.trajectory->info().amplitude_bound);
-  if (bound > 0) set_escape_limit(2 * bound);
+  if (!std::isfinite(end_time())) {  // no whole run to look at: twice what energy allows
+    set_escape_limit(bound > 0 ? 2 * bound : INFINITY);
+    return;
+  }
+  std::vector<Swing> swings;
+  double calmest = INFINITY;
+  for (const Member& m : members_) {
+    swings.push_back(swing_of(*model_, m.parameters));
+    if (!swings.back().overflowed) calmest = std::min(calmest, swings.back().growth());
+  }
+  // Growing without bound: overflowing, or swings ending well over twice as
+  // wide as they start and growing more than twice as fast as the calmest run.
+  auto unbounded = [&](const Swing& s) { return s.overflowed || (s.growth() > 2 && s.growth() > 2 * calmest); };
+  double held = bound;
+  for (const Swing& s : swings)
+    if (!unbounded(s)) held = std::max(held, s.all);
+  for (size_t i = 0; i < members_.size(); ++i)
+    members_[i].view_limit = unbounded(swings[i]) && held > 0 ? 2 * held : INFINITY;
 }
 
 bool Comparison::escaped(Member& m, std::span<const double> row) {
-  if (!leaves_view(row)) return false;
-  m.blew_up = true, m.blow_up_time = row[0];
+  if (std::abs(row[1]) <= m.view_limit) return false;
+  m.early_end = std::isfinite(row[1]) ? EarlyEnd::left_view : EarlyEnd::blew_up;
+  m.blow_up_time = row[0];
   return true;
 }
 
@@ -98,11 +147,11 @@ void Comparison::advance_to(double t, const Observer& observer) {
       if (observer) observer(i, row);
       if (escaped(m, row)) continue;
     }
-    while (!m.blew_up && run.t() < t && !run.done()) {
+    while (m.early_end == EarlyEnd::none && run.t() < t && !run.done()) {
       try {
         run.advance();
       } catch (const SolutionError&) {  // non-finite: this member stops, the others go on
-        m.blew_up = true, m.blow_up_time = run.t() + run.info().mesh.dt;
+        m.early_end = EarlyEnd::blew_up, m.blow_up_time = run.t() + run.info().mesh.dt;
         break;
       }
       run.row(row);

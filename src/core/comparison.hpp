@@ -33,16 +33,23 @@ ComparisonRequest parse_comparison(std::string_view text);
 /// already set in `base`, or a value is invalid for it.
 std::vector<Parameters> comparison_members(const Parameters& base, const ComparisonRequest&);
 
+/// How a member's run ended before its end time: it left the view (its main
+/// quantity passed its view limit, still finite) or blew up (a value turned
+/// non-finite or overflowed).
+enum class EarlyEnd { none, left_view, blew_up };
+
 /// The runs of a comparison, advanced in lock step on one time axis: each
 /// member keeps its own scheme and dt, and any time t can be read from all of
-/// them. A member whose solution turns non-finite, or whose main quantity
-/// leaves the escape limit, "blows up": it stops there, and the others go on.
+/// them. A member whose main quantity passes its view limit "leaves the
+/// view", one whose solution turns non-finite "blows up": either stops there,
+/// and the others go on.
 /// Static figures read every sample (advance_to with an observer); animations
 /// advance to each frame's time and read every member with row_at.
 class Comparison {
  public:
   /// Builds every member (throws UsageError as the model does for bad settings).
   Comparison(const ModelDefinition&, const Parameters& base, ComparisonRequest);
+  Comparison(Comparison&&) = default;
 
   size_t size() const { return members_.size(); }
   const ComparisonRequest& request() const { return request_; }
@@ -58,19 +65,32 @@ class Comparison {
   /// (ComparisonTrajectory); do not mix with advance_to.
   Trajectory& trajectory(size_t i) { return *members_.at(i).trajectory; }
 
-  /// A member blows up when |main quantity| exceeds `limit` (default: never;
-  /// only non-finite values stop it).
-  void set_escape_limit(double limit) { escape_limit_ = limit; }
-  double escape_limit() const { return escape_limit_; }
-  /// Whether a member's row has left the view: its main quantity is beyond
-  /// the escape limit or not finite.
-  bool leaves_view(std::span<const double> row) const { return !(std::abs(row[1]) <= escape_limit_); }
-  /// The limit every picture of a comparison uses: twice the largest
-  /// amplitude the members can reach (from their energy), so that a scheme
-  /// that gains energy is seen doing it before it leaves the view; no limit
-  /// when no member knows its bound.
-  void set_escape_limit_from_bounds();
-  bool blew_up(size_t i) const { return members_.at(i).blew_up; }
+  /// Every member leaves the view when |main quantity| exceeds `limit`
+  /// (default: never; only non-finite values stop it).
+  void set_escape_limit(double limit) {
+    for (Member& m : members_) m.view_limit = limit;
+  }
+  /// Member i's view limit.
+  double escape_limit(size_t i) const { return members_.at(i).view_limit; }
+  /// Whether member i's row is outside the view: its main quantity is beyond
+  /// the member's view limit (or not finite).
+  bool leaves_view(size_t i, std::span<const double> row) const {
+    return !(std::abs(row[1]) <= members_.at(i).view_limit);
+  }
+  /// The limits every picture of a comparison uses: a view holds every run
+  /// that stays bounded and lets go only of unbounded growth. Each member is
+  /// run once beforehand: one that overflows, or whose swings end more than
+  /// twice as wide as they start and grow more than twice as fast as the
+  /// calmest member's, grows without bound and leaves the view at twice the
+  /// largest |u| of the others (or of what energy allows); every other member
+  /// has no limit. So Forward Euler is seen gaining energy before it leaves,
+  /// while a run that swings wide but stays bounded, or a resonance that every
+  /// member shares, stays in view.
+  void set_view_limits();
+  /// Whether member i ended early, and why.
+  EarlyEnd early_end(size_t i) const { return members_.at(i).early_end; }
+  bool blew_up(size_t i) const { return members_.at(i).early_end != EarlyEnd::none; }
+  /// When member i left the view or blew up.
   double blow_up_time(size_t i) const { return members_.at(i).blow_up_time; }
   /// Where the last member ends (members may differ in T).
   double end_time() const;
@@ -90,15 +110,16 @@ class Comparison {
     Parameters parameters;
     std::unique_ptr<Trajectory> trajectory;
     bool reported_start = false;
-    bool blew_up = false;
+    EarlyEnd early_end = EarlyEnd::none;
     double blow_up_time = 0;
+    double view_limit = INFINITY;
   };
   bool escaped(Member&, std::span<const double> row);
 
+  const ModelDefinition* model_;
   ComparisonRequest request_;
   std::vector<Member> members_;
   std::vector<double> row_;
-  double escape_limit_ = INFINITY;
 };
 
 }  // namespace vibra

@@ -17,8 +17,11 @@ std::string member_column(const std::string& column, const Comparison& c, size_t
 
 ComparisonTrajectory::ComparisonTrajectory(const ModelDefinition& model, const Parameters& base,
                                            ComparisonRequest request)
-    : Trajectory({}), comparison_(model, base, std::move(request)), members_(comparison_.size()) {
-  comparison_.set_escape_limit_from_bounds();
+    : Trajectory({}),
+      comparison_(model, base, std::move(request)),
+      members_(comparison_.size()),
+      early_ends_(std::make_shared<std::vector<EarlyEnd>>(comparison_.size(), EarlyEnd::none)) {
+  comparison_.set_view_limits();
   const TrajectoryInfo& first = comparison_.trajectory(0).info();
   TrajectoryInfo info;
   info.columns = {"t"};
@@ -50,7 +53,9 @@ void ComparisonTrajectory::check_escape(size_t i) {
   Trajectory& run = comparison_.trajectory(i);
   const std::span<double> row(scratch_.data(), run.width());
   run.row(row);
-  if (comparison_.leaves_view(row)) members_[i].blow_up_time = run.t();
+  if (!comparison_.leaves_view(i, row)) return;
+  members_[i].blow_up_time = run.t();
+  (*early_ends_)[i] = std::isfinite(row[1]) ? EarlyEnd::left_view : EarlyEnd::blew_up;
 }
 
 bool ComparisonTrajectory::done() const {
@@ -73,6 +78,7 @@ bool ComparisonTrajectory::advance() {
         }
       } catch (const SolutionError&) {  // non-finite: this member stops, the others go on
         m.blow_up_time = run.t() + run.info().mesh.dt;
+        (*early_ends_)[i] = EarlyEnd::blew_up;
         continue;
       }
       check_escape(i);

@@ -27,8 +27,11 @@ class ComparisonTrajectory final : public Trajectory {
   bool at_sample(size_t i) const {
     return t_ < members_.at(i).blow_up_time && comparison_.trajectory(i).t() == t_;
   }
-  /// Member i's blow-up time, or infinity.
+  /// When member i left the view or blew up, or infinity.
   double blow_up_time(size_t i) const { return members_.at(i).blow_up_time; }
+  /// How each member ended early, so far (shared: it outlives this pass, for
+  /// a legend that reads it while drawing).
+  std::shared_ptr<const std::vector<EarlyEnd>> early_ends() const { return early_ends_; }
 
   double t() const override { return t_; }
   long long index() const override { return index_; }
@@ -48,6 +51,7 @@ class ComparisonTrajectory final : public Trajectory {
   Comparison comparison_;
   std::vector<size_t> offsets_;
   std::vector<MemberState> members_;
+  std::shared_ptr<std::vector<EarlyEnd>> early_ends_;
   mutable std::vector<double> scratch_;
   double t_ = 0;
   long long index_ = 0;
