@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <span>
 #include <string>
 
@@ -7,38 +8,54 @@
 
 namespace vibra::scenes {
 
-/// The work an external force has done since t = 0, integrated over the
-/// solver steps by the trapezoidal rule from its power F·v, and read between
-/// two steps by linear interpolation. A row earlier than the last one fed
-/// starts a new pass over the run.
+/// The work an external force has done since t = 0, from its power F·v at
+/// the solver steps, streamed in constant memory. Each step is integrated
+/// exactly for the cubic through its power and the three samples before it
+/// (4th order over the run, like the best schemes, so that a conservative
+/// scheme's energy balance holds to its own accuracy rather than to the
+/// trapezoidal rule's 2nd order); the first three steps are integrated again
+/// with the cubic through the first four samples once the fourth arrives.
+/// A row earlier than the last one fed starts a new pass over the run.
 class ForcingWork {
  public:
   void add(double t, double power);
-  double at(double t) const;
+  /// The work up to the newest sample.
+  double total() const { return W_; }
+  /// The work up to t at or after the newest sample, whose power there is
+  /// `power` (a frame between steps).
+  double at(double t, double power) const;
 
  private:
-  bool started_ = false;
-  double t0_ = 0, W0_ = 0;          ///< the step before the newest
-  double t1_ = 0, p1_ = 0, W1_ = 0;  ///< the newest step
+  /// The integral from the newest sample to t of the polynomial through the
+  /// kept samples and (t, power).
+  double beyond_newest(double t, double power) const;
+
+  int kept_ = 0;
+  double ts_[4] = {}, ps_[4] = {};  ///< the newest samples, newest last
+  bool opening_ = true;             ///< fewer than four samples yet: all are kept from the first
+  double W_ = 0;
 };
 
 /// Where the energy is: kinetic, potential and dissipated (what drag,
-/// friction, dashpots and impacts took out: E(0) + W − E, W the work of an
-/// external force), at one row.
+/// friction, dashpots and impacts took out: E(0) + W − E), and the work W an
+/// external force has done, at one row: kinetic + potential + dissipated =
+/// E(0) + W.
 struct EnergyBudget {
-  double kinetic = 0, potential = 0, dissipated = 0;
+  double kinetic = 0, potential = 0, dissipated = 0, work = 0;
 };
 
-/// Three vertical bars beside a diagram: kinetic, potential and dissipated
-/// energy on one scale fixed over the run by the pre-pass, with the model's
-/// energy unit.
+/// Vertical bars beside a diagram: kinetic, potential and dissipated energy,
+/// and with a driving force the work it has done, on one scale fixed over
+/// the run by the pre-pass, with the model's energy unit.
 class EnergyBars {
  public:
   /// Throws UsageError for a model without a mechanical energy.
   explicit EnergyBars(const TrajectoryInfo&);
 
-  /// The room the bars take beside a diagram, in pixels at this scale.
-  static double width(double scale) { return 150 * scale; }
+  /// The room the bars take beside a diagram, in pixels at this scale: a
+  /// fourth bar (the work of a driving force) widens it, so that the labels
+  /// under the bars keep apart.
+  double width(double scale) const { return (bars() == 4 ? 200 : 150) * scale; }
 
   /// Pre-pass over every solver row: the scale.
   void record(std::span<const double> row);
@@ -55,9 +72,11 @@ class EnergyBars {
   const render::PixelRect& area() const { return area_; }
   /// The bars at this row inside area(); nothing drawn outside it.
   void draw(render::Canvas&, std::span<const double> row) const;
-  /// The pixel rows each bar (kinetic, potential, dissipated) spans at this row.
+  /// How many bars: 3, or 4 with the work of a driving force.
+  int bars() const { return power_ ? 4 : 3; }
+  /// The pixel rows each bar (kinetic, potential, dissipated, work) spans at this row.
   struct BarPixels {
-    double top[3], bottom[3];
+    double top[4], bottom[4];
   };
   BarPixels bar_pixels(std::span<const double> row) const;
   /// The rectangle the bars stand in (area() without title and labels).
@@ -65,6 +84,8 @@ class EnergyBars {
 
  private:
   EnergyBudget budget(std::span<const double> row, const ForcingWork& work) const;
+  /// The budget's values in bar order.
+  static std::array<double, 4> values(const EnergyBudget& b) { return {b.kinetic, b.potential, b.dissipated, b.work}; }
   double pixel_y(const render::PixelRect& bars, double value) const;
 
   EnergyFunction energy_;

@@ -23,7 +23,7 @@ SystemScene::SystemScene(int width, int height, const TrajectoryInfo& info, Scen
   } else {
     // Energy bars widen the diagram's area by most of their strip, so the
     // diagram keeps its size and the panels give up the room.
-    const double bars = bars_ ? EnergyBars::width(scale) : 0;
+    const double bars = bars_ ? bars_->width(scale) : 0;
     const double diagram_width = std::min((bars_ ? 0.54 : 0.46) * width, 1.0 * height + bars);
     diagram_area_ = {0, 0, diagram_width, double(height)};
     if (specs.empty())
@@ -45,7 +45,7 @@ SystemScene::SystemScene(int width, int height, const TrajectoryInfo& info, Scen
   if (bars_) {
     // The bars take a strip at the diagram's right; the arrows' labels keep
     // their margin beside the narrower view.
-    const double strip = EnergyBars::width(scale);
+    const double strip = bars_->width(scale);
     view_area_.w -= strip;
     bars_->place({view_area_.x + view_area_.w + side, diagram_area_.y + 12 * scale, strip - 16 * scale,
                   view_area_.y + view_area_.h + 40 * scale - diagram_area_.y - 12 * scale},
@@ -89,7 +89,9 @@ void SystemScene::prepare() {
     // shrinks) to stay inside the diagram's part; the diagram makes room.
     render::Canvas measure = render::Canvas::image(1, height_);
     const double scale = measure.scale();
-    caption_ = render::fit_caption(measure, style_.caption, diagram_area_.w - 32 * scale,
+    // Beside energy bars, the caption stops short of their labels.
+    const double room = (bars_ ? bars_->area().x - 8 * scale - diagram_area_.x : diagram_area_.w) - 32 * scale;
+    caption_ = render::fit_caption(measure, style_.caption, room,
                                    {15, style_.colors.wire.with_alpha(0.75)}, 3);
     view_area_.h -= caption_->height() - caption_->line_height;
   }

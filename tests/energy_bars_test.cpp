@@ -50,11 +50,12 @@ TEST_CASE("dissipated stays 0 without damping, forced or not", "[energy-bars]") 
     std::vector<std::string> settings;
     double tolerance;  ///< of max energy: the scheme's error in E, and the work's quadrature
   };
-  // RK4 loses energy as (w dt)^4: 1e-7 at 400 steps a period. The work's
-  // trapezoidal rule is second order: 1e-5 here (its order is tested below).
+  // RK4 loses energy as (w dt)^4: 1e-7 at 400 steps a period, and the
+  // work's quadrature is 4th order too (its order is tested below).
   for (const Case& c : {Case{"undamped", {"scheme=rk4", "steps_per_period=400", "periods=5"}, 1e-7},
-                        Case{"vibration", {"b=0", "F=0.5*cos(0.7*t)", "scheme=rk4", "steps_per_period=400", "periods=5"}, 3e-5},
-                        Case{"resonance", {"beta=0", "scheme=rk4", "steps_per_period=400", "periods=5"}, 3e-5}}) {
+                        Case{"vibration", {"b=0", "F=0.5*cos(0.7*t)", "scheme=rk4", "steps_per_period=400", "periods=5"}, 1e-7},
+                        Case{"resonance", {"beta=0", "scheme=rk4", "steps_per_period=400", "periods=5"}, 1e-7},
+                        Case{"vibration", {"b=0", "F=sin(3*t)", "k=4", "scheme=rk4", "steps_per_period=2000", "periods=2"}, 1e-9}}) {
     INFO(c.model);
     auto run = test::trajectory(c.model, c.settings);
     REQUIRE(!run->info().damped);
@@ -64,7 +65,9 @@ TEST_CASE("dissipated stays 0 without damping, forced or not", "[energy-bars]") 
       fed.bars.observe(row);
       const auto b = fed.bars.at(row);
       largest_E = std::max(largest_E, std::abs(b.kinetic + b.potential));
-      worst = std::max(worst, std::abs(b.dissipated));
+      // The first three steps' work is 3rd order until the fourth sample
+      // lets the cubic through the opening integrate them again.
+      if (&row >= &fed.rows[3]) worst = std::max(worst, std::abs(b.dissipated));
       moved = std::max(moved, std::abs(b.kinetic + b.potential - run->info().energy(fed.rows[0]).total()));
     }
     CHECK(worst < c.tolerance * largest_E);
@@ -72,7 +75,7 @@ TEST_CASE("dissipated stays 0 without damping, forced or not", "[energy-bars]") 
   }
 }
 
-TEST_CASE("the forcing's work converges at second order in dt (trapezoidal rule)", "[energy-bars]") {
+TEST_CASE("the forcing's work converges at fourth order in dt", "[energy-bars]") {
   auto dissipated_at_end = [](int steps) {
     auto run = test::trajectory("vibration", {"b=0", "F=cos(0.7*t)", "scheme=rk4", "steps_per_period=" + std::to_string(steps),
                                               "periods=3"});
@@ -81,8 +84,47 @@ TEST_CASE("the forcing's work converges at second order in dt (trapezoidal rule)
     return std::abs(fed.bars.at(fed.rows.back()).dissipated);
   };
   const double coarse = dissipated_at_end(40), fine = dissipated_at_end(80);
-  CHECK(coarse > 1e-6);
-  CHECK(coarse / fine == Approx(4).epsilon(0.15));
+  CHECK(coarse > 1e-9);
+  CHECK(std::log2(coarse / fine) >= 3.7);  // RK4's energy error and the quadrature's are both 4th order
+}
+
+TEST_CASE("the work is exact for a cubic power, between samples too", "[energy-bars]") {
+  // P(t) = t^3 - 2t: W(t) = t^4/4 - t^2, on an uneven mesh, read between samples.
+  scenes::ForcingWork work;
+  auto P = [](double t) { return t * t * t - 2 * t; };
+  auto W = [](double t) { return t * t * t * t / 4 - t * t; };
+  // Exact once four points pin the cubic: the total from the fourth sample
+  // on, a read between samples from the third on (with its own point).
+  double t = 0;
+  int n = 0;
+  for (double h : {0.1, 0.3, 0.05, 0.2, 0.25, 0.1, 0.15}) {
+    work.add(t, P(t));
+    ++n;
+    if (n >= 4) CHECK(work.total() == Approx(W(t)).margin(1e-13));
+    const double mid = t + 0.4 * h;
+    if (n >= 3) CHECK(work.at(mid, P(mid)) == Approx(W(mid)).margin(1e-13));
+    t += h;
+  }
+}
+
+TEST_CASE("with a driving force a fourth bar shows its work, and the bars balance at every frame", "[energy-bars]") {
+  auto run = test::trajectory("vibration", {"b=0.1", "F=0.4*sin(3*t)", "k=4", "steps_per_period=40", "periods=3"});
+  FedBars fed(*run);
+  CHECK(fed.bars.bars() == 4);
+  auto frames = test::trajectory("vibration", {"b=0.1", "F=0.4*sin(3*t)", "k=4", "steps_per_period=40", "periods=3"});
+  const double E0 = run->info().energy(fed.rows[0]).total();
+  std::vector<double> row(frames->width());
+  frames->row(row);
+  fed.bars.observe(row);
+  while (frames->advance()) {
+    frames->row_at(frames->t() - 0.37 * frames->info().mesh.dt, row);  // a frame after the last step observed
+    const auto b = fed.bars.at(row);
+    CHECK(b.kinetic + b.potential + b.dissipated == Approx(E0 + b.work).margin(1e-12));
+    frames->row(row);
+    fed.bars.observe(row);
+  }
+  auto unforced = test::trajectory("vibration", {"b=0.1"});
+  CHECK(FedBars(*unforced).bars.bars() == 3);
 }
 
 TEST_CASE("bars never leave their area, between steps included", "[energy-bars]") {
@@ -104,7 +146,7 @@ TEST_CASE("bars never leave their area, between steps included", "[energy-bars]"
       fed.bars.observe(row);
       between->row_at(between->t() - 0.37 * between->info().mesh.dt, row);  // a frame between two steps
       const auto px = fed.bars.bar_pixels(row);
-      for (int i = 0; i < 3; ++i) {
+      for (int i = 0; i < fed.bars.bars(); ++i) {
         CHECK(px.top[i] >= inner.y);
         CHECK(px.bottom[i] <= inner.y + inner.h);
         CHECK(px.top[i] <= px.bottom[i]);
