@@ -155,15 +155,15 @@ void PlotPanel::draw_cursor(Canvas& canvas, double x, double y, const Color& c) 
   canvas.fill();
 }
 
-void PlotPanel::draw_legend(Canvas& canvas, const std::vector<std::pair<std::string, Color>>& entries) const {
+void PlotPanel::draw_legend(Canvas& canvas, const std::vector<LegendItem>& entries) const {
   double x = area_.x + area_.w - 8 * scale_;
   const TextStyle style{kTickFont, palette::ink};
   for (auto it = entries.rbegin(); it != entries.rend(); ++it) {
-    const Point size = text_size(canvas, it->first, style);
-    draw_text(canvas, {x, area_.y + 6 * scale_}, it->first, style, Anchor::top_right);
+    const Point size = text_size(canvas, it->label, style);
+    draw_text(canvas, {x, area_.y + 6 * scale_}, it->label, style, Anchor::top_right);
     x -= size.x() + 6 * scale_;
     const double y = area_.y + 6 * scale_ + size.y() / 2;
-    draw_pixel_line(canvas, {x - 22 * scale_, y}, {x, y}, {it->second, 2.5});
+    draw_pixel_line(canvas, {x - 22 * scale_, y}, {x, y}, {it->color, 2.5, it->dashed});
     x -= 22 * scale_ + 14 * scale_;
   }
 }

@@ -42,8 +42,14 @@ class PlotPanel {
   void draw_function(Canvas&, const std::function<double(double)>& f, double from_x, double to_x, const Stroke&) const;
   /// A vertical cursor line at x with a dot at (x, y).
   void draw_cursor(Canvas&, double x, double y, const Color&) const;
-  /// Legend entries (markup, colour) in the panel's top-right corner.
-  void draw_legend(Canvas&, const std::vector<std::pair<std::string, Color>>& entries) const;
+  /// A legend entry: its markup, and its line as the curve is drawn.
+  struct LegendItem {
+    std::string label;
+    Color color;
+    bool dashed = false;
+  };
+  /// Legend entries in the panel's top-right corner.
+  void draw_legend(Canvas&, const std::vector<LegendItem>& entries) const;
 
  private:
   PixelRect outer_, area_;

@@ -10,7 +10,12 @@ std::string key_markup(const std::string& key) { return key == "dt" ? "Δ<i>t</i
 
 std::string member_markup(const Comparison& c, size_t m) {
   const std::string& key = c.request().key;
-  return key == "scheme" ? c.value(m) : key_markup(key) + " = " + markup_escaped(c.value(m));
+  if (key == "scheme") return c.value(m);
+  std::string value = markup_escaped(c.value(m));
+  // An angle in degrees says so: "Theta = 120°" (one in radians ends in rad).
+  for (const KeySpec& spec : c.parameters(m).specs())
+    if (spec.name == key && spec.kind == ValueKind::angle && value.find("rad") == std::string::npos) value += "°";
+  return key_markup(key) + " = " + value;
 }
 
 render::Color member_color(const render::Color& first, size_t i) {

@@ -50,9 +50,9 @@ void PhasePanel::finish_recording() {
 
 void PhasePanel::draw_static(render::Canvas& canvas, bool) const {
   panel_.draw_axes(canvas, y_label_, x_label_);
-  std::vector<std::pair<std::string, render::Color>> legend;
+  std::vector<render::PlotPanel::LegendItem> legend;
   for (const auto& c : curves_)
-    if (!c.label.empty()) legend.emplace_back(c.label, c.color);
+    if (!c.label.empty()) legend.push_back({c.label, c.color});
   if (legend.size() > 1) panel_.draw_legend(canvas, legend);
 }
 

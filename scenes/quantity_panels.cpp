@@ -38,14 +38,16 @@ SeriesSpec period_curve(const TrajectoryInfo& info, render::Color color, const s
   return {label, color, [track](std::span<const double> r) { return track->at(r); }};
 }
 
-/// The period the measured ones are held against: the exact one where known,
-/// else the small-oscillation period (labelled so).
+/// The period the measured ones are held against, named by its formula: the
+/// exact one where known (2π/ω, the pendulum's 4K(sin Θ/2)), else the
+/// small-oscillation period.
 std::optional<SeriesSpec> period_reference(const TrajectoryInfo& info, render::Color color) {
   const bool exact = info.exact_period > 0;
   const double P = exact ? info.exact_period : info.mesh.period;
   if (!(P > 0)) return std::nullopt;
-  return SeriesSpec{exact ? "exact period" : "small-oscillation period", color, [P](std::span<const double>) { return P; },
-                    true};
+  const std::string name = exact ? (info.exact_period_label.empty() ? "exact period" : info.exact_period_label)
+                                 : info.small_period_label;
+  return SeriesSpec{name, color, [P](std::span<const double>) { return P; }, true};
 }
 }  // namespace
 

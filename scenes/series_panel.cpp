@@ -80,9 +80,9 @@ std::pair<double, double> SeriesPanel::window_at(double t) const {
 
 void SeriesPanel::draw_axes(render::Canvas& canvas, bool time_labels) const {
   panel_.draw_axes(canvas, y_label_, time_labels ? "<i>t</i>" : "");
-  std::vector<std::pair<std::string, render::Color>> legend;
+  std::vector<render::PlotPanel::LegendItem> legend;
   for (const auto& s : series_)
-    if (!s.label.empty()) legend.emplace_back(s.label, s.color);
+    if (!s.label.empty()) legend.push_back({s.label, s.color, s.dashed});
   if (legend.size() > 1) panel_.draw_legend(canvas, legend);
   if (!first_curve_seen_ && !empty_note_.empty()) {
     render::TextStyle style{15, render::palette::ink.with_alpha(0.8)};
@@ -129,7 +129,8 @@ void SeriesPanel::draw_static(render::Canvas& canvas, bool time_labels) const {
   cairo_save(canvas.cr());
   cairo_rectangle(canvas.cr(), area.x, area.y, area.w, area.h);
   cairo_clip(canvas.cr());
-  for (size_t i = 0; i < series_.size(); ++i)
+  // Backwards: the first curve (the measured one) on top of the references.
+  for (size_t i = series_.size(); i-- > 0;)
     whole_curves()[i].draw_through(canvas, panel_.columns(), {series_[i].color.with_alpha(0.22), 2, series_[i].dashed});
   cairo_restore(canvas.cr());
 }
@@ -151,14 +152,16 @@ void SeriesPanel::draw_progress(LayerGrowth& growth, double t) {
   cairo_clip(layer.cr());
   if (growth.from_start) {
     settled_x_ = std::floor(area.x);
-    for (size_t i = 0; i < series_.size(); ++i)
+    // Backwards: the first curve (the measured one) on top of the references.
+    for (size_t i = series_.size(); i-- > 0;)
       whole_curves()[i].draw_through(layer, to, {series_[i].color, 2.4, series_[i].dashed});
   } else {
     // The strip from where the curves were last final to past their new end
     // is drawn again, as the still would draw it.
     const double right = std::ceil(panel_.to_pixel((to + 1.0) * t_end_ / whole_[0].columns(), 0).x() + reach);
     growth.reset({settled_x_, std::floor(area.y), right - settled_x_, std::ceil(area.y + area.h) - std::floor(area.y)});
-    for (size_t i = 0; i < series_.size(); ++i)
+    // Backwards: the first curve (the measured one) on top of the references.
+    for (size_t i = series_.size(); i-- > 0;)
       whole_curves()[i].draw_piece(layer, settled_x_, to, {series_[i].color, 2.4, series_[i].dashed});
   }
   cairo_restore(layer.cr());
@@ -182,7 +185,8 @@ void SeriesPanel::draw(render::Canvas& canvas, double t, std::span<const double>
   cairo_clip(canvas.cr());
   // jumps shows only completed windows; the others draw up to t.
   const double last_x = mode_ == WindowMode::jumps ? x1 : t;
-  for (size_t i = 0; i < series_.size(); ++i) {
+  // Backwards: the first curve (the measured one) on top of the references.
+  for (size_t i = series_.size(); i-- > 0;) {
     if (series_[i].of_time) {
       panel_.draw_function(canvas, series_[i].of_time, x0, last_x, {series_[i].color, 2.4, series_[i].dashed});
       continue;

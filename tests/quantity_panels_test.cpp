@@ -73,7 +73,7 @@ TEST_CASE("the period panel steps at each crossing and holds the exact period da
   const TrajectoryInfo& info = run->info();
   auto spec = quantity_panel("period", info, kBlue, "", kRed);
   REQUIRE(spec.references.size() == 1);
-  CHECK(spec.references[0].label == "exact period");
+  CHECK(spec.references[0].label == "4<i>K</i>(sin <i>Θ</i>/2)");  // named by its formula
   CHECK(spec.references[0].value({}) == info.exact_period);
   CHECK(spec.least_span > 0);
   const auto rows = test::rows(*run);
@@ -98,7 +98,11 @@ TEST_CASE("the period panel steps at each crossing and holds the exact period da
   }
   // Without an exact period the small-oscillation one stands in, and says so.
   auto damped = quantity_panel("period", test::trajectory("pendulum", {"alpha=0.3"})->info(), kBlue, "", kRed);
-  CHECK(damped.references.at(0).label == "small-oscillation period");
+  CHECK(damped.references.at(0).label == "2π, small angles");
+  auto spring = quantity_panel("period", test::trajectory("undamped", {})->info(), kBlue, "", kRed);
+  CHECK(spring.references.at(0).label == "2π/<i>ω</i>");
+  auto damped_spring = quantity_panel("period", test::trajectory("vibration", {"b=0.1"})->info(), kBlue, "", kRed);
+  CHECK(damped_spring.references.at(0).label == "2π/ω");
 }
 
 TEST_CASE("an unknown panel is refused with the closest name, on the command line too", "[panels]") {

@@ -26,6 +26,7 @@ ComparisonTrajectory::ComparisonTrajectory(const ModelDefinition& model, const P
   TrajectoryInfo info;
   info.columns = {"t"};
   info.mesh = first.mesh;
+  info.small_period_label = first.small_period_label;
   size_t widest = 0;
   for (size_t i = 0; i < comparison_.size(); ++i) {
     const TrajectoryInfo& member = comparison_.trajectory(i).info();
@@ -43,6 +44,7 @@ ComparisonTrajectory::ComparisonTrajectory(const ModelDefinition& model, const P
     info.exact = first.exact;
     info.exact_label = first.exact_label;
     info.exact_period = first.exact_period;
+    info.exact_period_label = first.exact_period_label;
   }
   info_ = std::move(info);
   scratch_.resize(widest);

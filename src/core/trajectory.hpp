@@ -25,6 +25,9 @@ struct TrajectoryInfo {
   /// 4 K(sin(Theta/2)), not its small-angle 2 pi), 0 otherwise. The
   /// small-oscillation period is mesh.period.
   double exact_period = 0;
+  std::string exact_period_label;  ///< how that period is known, as a formula: "2π/ω", "4K(sin Θ/2)"
+  /// The small-oscillation period (mesh.period) as a formula, e.g. "2π/ω".
+  std::string small_period_label = "2π/ω";
   /// True when drag, friction or a dashpot takes energy out of the system.
   bool damped = false;
   /// Kinetic and potential energy from a row, with the scheme's own velocity

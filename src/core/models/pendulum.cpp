@@ -36,7 +36,9 @@ std::unique_ptr<Trajectory> pendulum_trajectory(const Parameters& p, const std::
     info.exact = [=](double t) { return Theta * std::cos(t) + Omega * std::sin(t); };
     info.exact_label = "small-angle";
     if (info.amplitude_bound > 0) info.exact_period = pendulum_period(info.amplitude_bound);
+    info.exact_period_label = "4<i>K</i>(sin <i>Θ</i>/2)";
   }
+  info.small_period_label = "2π, small angles";
   info.damped = alpha > 0;
   info.energy = [](std::span<const double> row) {
     const double theta = row[1], omega = row[2], half_sine = std::sin(0.5 * theta);

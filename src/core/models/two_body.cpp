@@ -39,6 +39,7 @@ ModelDefinition two_body_model() {
     info.amplitude_bound = a > 0 ? 2 * a : 0;
     // x crosses zero upward once per orbit around the star at the origin.
     info.exact_period = info.mesh.period;
+    info.exact_period_label = "Kepler's 2π<i>a</i><sup>3/2</sup>";
     info.energy = [](std::span<const double> row) {
       return EnergyParts{0.5 * (row[3] * row[3] + row[4] * row[4]), -1 / std::hypot(row[1], row[2])};
     };

@@ -27,6 +27,7 @@ ModelDefinition undamped_model() {
     info.exact = [=](double t) { return I * std::cos(w * t) + V / w * std::sin(w * t); };
     info.exact_label = "exact";
     info.exact_period = 2 * M_PI / w;
+    info.exact_period_label = "2π/<i>ω</i>";
     info.energy = [w](std::span<const double> row) {
       return EnergyParts{0.5 * row[2] * row[2], 0.5 * w * w * row[1] * row[1]};
     };
