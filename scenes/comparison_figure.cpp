@@ -21,12 +21,14 @@ struct Feed {
   int panel;
   render::Series* series;
   int x_column, y_column;
+  double x_factor = 1, y_factor = 1;  ///< display_factor of each column
 };
 
 /// The exact solution over [0, T]: finer than the mesh (its envelope keeps every peak) and 4 samples per pixel column.
 void add_exact_curve(render::Series& series, const TrajectoryInfo& info, double T, long long steps, int width) {
   const long long samples = std::max(4LL * width, steps);
-  for (long long i = 0; i <= samples; ++i) series.add(T * i / samples, info.exact(T * i / samples));
+  const double f = display_factor(info.columns[1]);
+  for (long long i = 0; i <= samples; ++i) series.add(T * i / samples, f * info.exact(T * i / samples));
 }
 
 /// The exact solution in the phase plane, its velocity by a centered
@@ -36,7 +38,8 @@ void add_exact_phase(render::Series& series, const TrajectoryInfo& info, double 
   const double span = period > 0 ? std::min(T, period) : T, h = 1e-5 * span;
   for (int i = 0; i <= 2000; ++i) {
     const double t = span * i / 2000;
-    series.add(info.exact(t), (info.exact(t + h) - info.exact(t - h)) / (2 * h));
+    series.add(display_factor(info.columns[1]) * info.exact(t),
+               display_factor(info.columns[velocity_column(info)]) * (info.exact(t + h) - info.exact(t - h)) / (2 * h));
   }
 }
 }  // namespace
@@ -75,7 +78,7 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
       const render::SeriesStyle style{render::palette::series(m), 2.2};
       render::Series& s = time_panel ? figure.add_curve(p, legend ? member_markup(comparison, m) : "", style, 0, T)
                                      : figure.add_path(p, legend ? member_markup(comparison, m) : "", style);
-      feeds.push_back({m, p, &s, x, y});
+      feeds.push_back({m, p, &s, x, y, display_factor(first.columns[x]), display_factor(first.columns[y])});
       if (legend) labelled[m].push_back(&s);
     }
     const bool main_quantity = name == first.columns[1] || name == "phase";
@@ -98,7 +101,7 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
   long long samples = 0;
   comparison.advance_to(T, [&](size_t member, std::span<const double> row) {
     for (const Feed& f : feeds)
-      if (f.member == member) f.series->add(row[f.x_column], row[f.y_column]);
+      if (f.member == member) f.series->add(f.x_factor * row[f.x_column], f.y_factor * row[f.y_column]);
     last[member].assign(row.begin(), row.end());
     if ((++samples & 0xffff) == 0) render::throw_if_stop_requested();
   });
@@ -111,7 +114,7 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
     for (const Feed& f : feeds)
       if (f.member == m && !last[m].empty())
         figure.add_points(f.panel, "", {render::palette::series(m), 0, false, true})
-            .add(last[m][f.x_column], last[m][f.y_column]);
+            .add(f.x_factor * last[m][f.x_column], f.y_factor * last[m][f.y_column]);
   }
   return figure;
 }

@@ -11,15 +11,13 @@ namespace vibra::scenes {
 namespace {
 /// A column's name as plain text for the page (uPlot draws no markup).
 std::string page_label(const std::string& column) {
-  if (column == "theta") return "θ (degrees)";
+  if (column == "theta") return "θ (°)";
   if (column == "omega") return "ω (rad per time unit)";
   if (column == "S") return "S / mg, wire force";
   if (column == "D") return "D / mg, air drag";
   return column;
 }
 
-/// Angles are read in degrees on a page, as in the scenes.
-double page_factor(const std::string& column) { return column == "theta" ? 180 / M_PI : 1; }
 }  // namespace
 
 std::vector<std::string> page_panel_names(const TrajectoryInfo& info) {
@@ -40,7 +38,7 @@ PagePlotCollector::PagePlotCollector(const TrajectoryInfo& info, const std::vect
       throw UsageError("panel '" + name + "' is not against t, and a page plots against t: drop it, or draw it in "
                        "-o FILE.png, FILE.svg or FILE.pdf");
     const int column = column_index(info, name);
-    const double factor = page_factor(name);
+    const double factor = display_factor(name);
     render::PagePanel panel{page_label(name), {}};
     feeds_.push_back({panels_.size(), 0, [column, factor](std::span<const double> row) { return factor * row[column]; }});
     panel.series.push_back(

@@ -1,3 +1,4 @@
+#include "scenes/plot_panels.hpp"
 #include "scenes/pendulum_diagram.hpp"
 
 #include <cmath>
@@ -31,7 +32,7 @@ PendulumDiagram::PendulumDiagram(PendulumDiagramOptions options, SceneColors col
 std::vector<PanelSpec> PendulumDiagram::panels() const {
   auto column = [](int i, double factor) { return [i, factor](std::span<const double> row) { return factor * row[i]; }; };
   // theta is shown in degrees, the forces in units of m g.
-  return {{"<i>θ</i> (degrees)", {{"", colors_.bob, column(1, 180 / M_PI)}}},
+  return {{quantity_markup("theta"), {{"", colors_.bob, column(1, display_factor("theta"))}}},
           {"<i>S</i> / <i>mg</i>  wire force", {{"", colors_.wire_force, column(3, 1)}}},
           {"<i>D</i> / <i>mg</i>  air drag", {{"", colors_.drag, column(4, 1)}}}};
 }

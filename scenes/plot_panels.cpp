@@ -18,8 +18,10 @@ int column_index(const TrajectoryInfo& info, const std::string& name) {
   return it == c.end() ? -1 : static_cast<int>(it - c.begin());
 }
 
+double display_factor(const std::string& column) { return column == "theta" ? 180 / M_PI : 1; }
+
 std::string quantity_markup(const std::string& column) {
-  if (column == "theta") return "<i>θ</i> (rad)";
+  if (column == "theta") return "<i>θ</i> (°)";
   if (column == "omega") return "<i>ω</i> (rad per time unit)";
   if (column == "S") return "<i>S</i> / <i>mg</i>, wire force";
   if (column == "D") return "<i>D</i> / <i>mg</i>, air drag";

@@ -13,6 +13,11 @@ namespace vibra::scenes {
 /// Index of the column `name`, or -1.
 int column_index(const TrajectoryInfo&, const std::string& name);
 
+/// How a column is read on screen, in panels, figures and pages alike:
+/// angles in degrees (θ, marked °); every other column as computed. CSV
+/// keeps the computed values (radians).
+double display_factor(const std::string& column);
+
 /// A column's name as the reader knows it: Greek letters, italics, subscripts (Pango markup).
 std::string quantity_markup(const std::string& column);
 

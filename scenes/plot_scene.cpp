@@ -1,5 +1,7 @@
 #include "scenes/plot_scene.hpp"
 
+#include "scenes/plot_panels.hpp"
+
 #include <algorithm>
 
 #include "render/caption.hpp"
@@ -9,12 +11,14 @@ namespace vibra::scenes {
 
 PanelSpec main_quantity_panel(const SceneStyle& style, const std::string& quantity, std::function<double(double)> exact,
                               const std::string& exact_label) {
-  PanelSpec panel{"<i>" + quantity + "</i>",
-                  {{"<i>" + quantity + "</i> numerical", style.colors.bob,
-                    [](std::span<const double> row) { return row[1]; }}}};
+  const double f = display_factor(quantity);
+  const std::string symbol = quantity == "theta" ? "<i>θ</i>" : "<i>" + quantity + "</i>";
+  PanelSpec panel{quantity_markup(quantity),
+                  {{symbol + " numerical", style.colors.bob, [f](std::span<const double> row) { return f * row[1]; }}}};
   if (exact)
-    panel.series.push_back({"<i>" + quantity + "</i> " + exact_label, style.colors.gravity,
-                            [exact](std::span<const double> row) { return exact(row[0]); }, true, exact});
+    panel.series.push_back({symbol + " " + exact_label, style.colors.gravity,
+                            [exact, f](std::span<const double> row) { return f * exact(row[0]); }, true,
+                            [exact, f](double t) { return f * exact(t); }});
   return panel;
 }
 

@@ -18,8 +18,8 @@ std::string symbol_markup(const std::string& column) {
   return quantity_markup(column);
 }
 
-SeriesSpec column_curve(int column, render::Color color, const std::string& label) {
-  return {label, color, [column](std::span<const double> r) { return r[column]; }};
+SeriesSpec column_curve(int column, double factor, render::Color color, const std::string& label) {
+  return {label, color, [column, factor](std::span<const double> r) { return factor * r[column]; }};
 }
 
 /// (E - E(0))/|E(0)| with E(0) from the first row fed, as `vibra solve
@@ -63,13 +63,15 @@ QuantityPanelSpec quantity_panel(const std::string& name, const TrajectoryInfo& 
   if (std::find(valid.begin(), valid.end(), name) == valid.end()) reject_unknown_panel(name, valid);
   const std::string& main = info.columns[1];
   const std::string u = symbol_markup(main);
+  const double f = display_factor(main);
   QuantityPanelSpec spec;
   if (name == "phase") {
     const int v = velocity_column(info);
     spec.label = quantity_markup(info.columns[v]);
     spec.x_label = quantity_markup(main);
-    spec.phase.push_back({curve_label, color, [](std::span<const double> r) { return r[1]; },
-                          [v](std::span<const double> r) { return r[v]; }});
+    const double fv = display_factor(info.columns[v]);
+    spec.phase.push_back({curve_label, color, [f](std::span<const double> r) { return f * r[1]; },
+                          [v, fv](std::span<const double> r) { return fv * r[v]; }});
   } else if (name == "energy") {
     if (!info.energy)
       throw UsageError("this model has no mechanical energy to plot: drop 'energy' from --panels");
@@ -81,7 +83,8 @@ QuantityPanelSpec quantity_panel(const std::string& name, const TrajectoryInfo& 
       throw UsageError(std::string("this run has no exact solution to take the error from: drop 'error' from --panels (") +
                        kRunsWithExactSolution + ")");
     spec.label = u + " − " + u + "<sub>" + info.exact_label + "</sub>  error";
-    spec.curves.push_back({curve_label, color, [exact = info.exact](std::span<const double> r) { return r[1] - exact(r[0]); }});
+    spec.curves.push_back(
+        {curve_label, color, [exact = info.exact, f](std::span<const double> r) { return f * (r[1] - exact(r[0])); }});
   } else if (name == "period") {
     spec.label = "period of " + u + ", measured";
     spec.curves.push_back(period_curve(info, color, curve_label.empty() ? "measured" : curve_label));
@@ -95,11 +98,12 @@ QuantityPanelSpec quantity_panel(const std::string& name, const TrajectoryInfo& 
     const int column = column_index(info, name);
     spec.label = quantity_markup(name);
     const bool with_exact = column == 1 && info.exact;
-    spec.curves.push_back(column_curve(column, color, curve_label.empty() && with_exact ? "numerical" : curve_label));
+    const double fc = display_factor(name);
+    spec.curves.push_back(column_curve(column, fc, color, curve_label.empty() && with_exact ? "numerical" : curve_label));
     if (with_exact)
       spec.references.push_back({info.exact_label, reference_color,
-                                 [exact = info.exact](std::span<const double> r) { return exact(r[0]); }, true,
-                                 info.exact});
+                                 [exact = info.exact, fc](std::span<const double> r) { return fc * exact(r[0]); }, true,
+                                 [exact = info.exact, fc](double t) { return fc * exact(t); }});
   }
   return spec;
 }

@@ -26,11 +26,12 @@ SceneStyle style_of(const SceneConfig& config, const TrajectoryInfo& info, const
 }
 
 /// A member's main quantity, or its exact solution, read from a comparison's row.
-SeriesSpec main_series(const MemberColumns& columns, render::Color color) {
-  return {"", color, columns.reading([](std::span<const double> row) { return row[1]; })};
+SeriesSpec main_series(const MemberColumns& columns, double factor, render::Color color) {
+  return {"", color, columns.reading([factor](std::span<const double> row) { return factor * row[1]; })};
 }
-SeriesSpec exact_series(const std::function<double(double)>& exact, render::Color color) {
-  return {"", color.with_alpha(0.8), [exact](std::span<const double> row) { return exact(row[0]); }, true, exact};
+SeriesSpec exact_series(const std::function<double(double)>& exact, double factor, render::Color color) {
+  return {"", color.with_alpha(0.8), [exact, factor](std::span<const double> row) { return factor * exact(row[0]); },
+          true, [exact, factor](double t) { return factor * exact(t); }};
 }
 void check_panel_options(const SceneConfig& config) {
   if (!config.panels.empty() && config.layout != Layout::fbd_plot)
@@ -117,13 +118,14 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
   auto exact_of = [&](size_t i) -> const std::function<double(double)>& { return comparison.trajectory(i).info().exact; };
   const bool shared_exact = comparison.same_problem();
   const std::string quantity = quantity_markup(first.columns[1]);
+  const double factor = display_factor(first.columns[1]);
 
   if (config.layout == Layout::plot) {
     PanelSpec panel{quantity, {}};
-    for (size_t i = 0; i < columns.size(); ++i) panel.series.push_back(main_series(columns[i], legend[i].color));
+    for (size_t i = 0; i < columns.size(); ++i) panel.series.push_back(main_series(columns[i], factor, legend[i].color));
     for (size_t i = 0; i < columns.size(); ++i)
       if (exact_of(i) && (!shared_exact || i == 0))
-        panel.series.push_back(exact_series(exact_of(i), shared_exact ? render::palette::ink : legend[i].color));
+        panel.series.push_back(exact_series(exact_of(i), factor, shared_exact ? render::palette::ink : legend[i].color));
     if (first.exact)
       legend.push_back({first.exact_label + (shared_exact ? "" : " (dashed)"),
                         shared_exact ? render::palette::ink : render::palette::faint, true});
@@ -134,8 +136,8 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
     // Each member in a panel of its own, named on its axis: no legend needed.
     std::vector<PanelSpec> panels;
     for (size_t i = 0; i < columns.size(); ++i) {
-      PanelSpec panel{quantity + "  " + legend[i].label, {main_series(columns[i], legend[i].color)}};
-      if (exact_of(i)) panel.series.push_back(exact_series(exact_of(i), render::palette::ink));
+      PanelSpec panel{quantity + "  " + legend[i].label, {main_series(columns[i], factor, legend[i].color)}};
+      if (exact_of(i)) panel.series.push_back(exact_series(exact_of(i), factor, render::palette::ink));
       panels.push_back(std::move(panel));
     }
     return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style, std::move(panels));

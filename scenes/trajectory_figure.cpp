@@ -15,6 +15,7 @@ using render::palette::blue;
 struct Feed {
   render::Series* series;
   int x_column, y_column;
+  double x_factor = 1, y_factor = 1;  ///< display_factor of each column
 };
 }  // namespace
 
@@ -36,30 +37,33 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
       const int y = name == "path" ? column_index(info, "y") : velocity_column(info);
       const int p = figure.add_panel({quantity_markup(info.columns[y]), quantity_markup(info.columns[x]),
                                       render::AxisScale::linear, render::AxisScale::linear, name == "path"});
-      feeds.push_back({&figure.add_path(p, "", {blue, 2}), x, y});
-      starts.push_back({&figure.add_points(p, "start", {render::palette::vermillion, 0, false, true}), x, y});
+      const double fx = display_factor(info.columns[x]), fy = display_factor(info.columns[y]);
+      feeds.push_back({&figure.add_path(p, "", {blue, 2}), x, y, fx, fy});
+      starts.push_back({&figure.add_points(p, "start", {render::palette::vermillion, 0, false, true}), x, y, fx, fy});
       continue;
     }
     const int column = column_index(info, name);
     const int p = figure.add_panel({quantity_markup(name), "<i>t</i>", render::AxisScale::linear,
                                     render::AxisScale::linear, false, std::make_pair(0.0, T)});
     const bool overlay = with_exact && name == main;
-    feeds.push_back({&figure.add_curve(p, overlay ? "numerical" : "", {time_panel_color(time_panels++), 2.2}, 0, T), 0, column});
+    const double f = display_factor(name);
+    feeds.push_back(
+        {&figure.add_curve(p, overlay ? "numerical" : "", {time_panel_color(time_panels++), 2.2}, 0, T), 0, column, 1, f});
     if (overlay) {
       // The exact solution is a function: sample it at least as finely as the
       // mesh (so its envelope holds every peak) and at least 4 times per pixel column.
       render::Series& exact = figure.add_curve(p, info.exact_label, {render::palette::vermillion, 2, true}, 0, T);
       const long long samples = std::max(4LL * width, info.mesh.steps);
-      for (long long i = 0; i <= samples; ++i) exact.add(T * i / samples, info.exact(T * i / samples));
+      for (long long i = 0; i <= samples; ++i) exact.add(T * i / samples, f * info.exact(T * i / samples));
     }
   }
 
   std::vector<double> row(trajectory.width());
   trajectory.row(row);
-  for (const Feed& f : starts) f.series->add(row[f.x_column], row[f.y_column]);
+  for (const Feed& f : starts) f.series->add(f.x_factor * row[f.x_column], f.y_factor * row[f.y_column]);
   do {
     trajectory.row(row);
-    for (const Feed& f : feeds) f.series->add(row[f.x_column], row[f.y_column]);
+    for (const Feed& f : feeds) f.series->add(f.x_factor * row[f.x_column], f.y_factor * row[f.y_column]);
     if ((trajectory.index() & 0xffff) == 0) render::throw_if_stop_requested();
   } while (trajectory.advance());
   return figure;

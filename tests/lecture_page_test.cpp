@@ -55,7 +55,7 @@ TEST_CASE("a lecture page: video sources, plots' data, each fact once, the comma
                                    "&#39;" + page.string() + "&#39;"));  // shell-quoted, then HTML-escaped
 
   // The plots: the scene's three panels, uPlot and the page script inline, nothing from the network.
-  CHECK_THAT(html, Catch::Contains("\"label\":\"θ (degrees)\"") && Catch::Contains("\"label\":\"S / mg, wire force\"") &&
+  CHECK_THAT(html, Catch::Contains("\"label\":\"θ (°)\"") && Catch::Contains("\"label\":\"S / mg, wire force\"") &&
                        Catch::Contains("\"label\":\"D / mg, air drag\""));
   CHECK_THAT(html, Catch::Contains("\"clock\":{\"fps\":30,\"frames\":31,"));
   CHECK_THAT(html, Catch::Contains("https://github.com/leeoniya/uPlot (v1.6.32)") && Catch::Contains("vibraPage"));

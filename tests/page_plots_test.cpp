@@ -162,7 +162,7 @@ TEST_CASE("runs compared on one page: a curve per run in each panel, a legend ke
     scenes::merge_page_panels(page, collector.take_panels());
   }
   REQUIRE(page.size() == 3);
-  CHECK(page[0].label == "θ (degrees)");
+  CHECK(page[0].label == "θ (°)");
   for (const auto& panel : page) {
     REQUIRE(panel.series.size() == 2);
     CHECK(panel.series[0].key == "rk4");
