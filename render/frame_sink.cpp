@@ -122,8 +122,8 @@ void check_output_settings(const std::string& output, bool stream, const VideoSe
   if (stream) {
     require_stream_format(settings.format);
     if (settings.transparent)
-      throw OutputError("--transparent cannot go to a stream (" + output +
-                        "): write .webm, .mov or PNG frames such as frames/tmp_%04d.png");
+      throw OutputError("--transparent cannot go to " + (output == "-" ? std::string("standard output") : "a stream (" + output + ")") +
+                        ": write .webm, .mov or PNG frames such as frames/tmp_%04d.png");
     return;
   }
   if (!settings.format.empty())

@@ -125,14 +125,13 @@ void check_companion_folder(const fs::path& folder, const std::string& stem, boo
                               "away, or add --force to replace it");
 }
 
-/// A segment's file may be overwritten when vibra wrote it for this segment
-/// of the output (its tag says so), or with --force.
+/// A segment's file may be overwritten when vibra wrote it (it carries a
+/// segment tag: a restart, or another split of the same output), or with --force.
 void check_segment_file(const RenderRequest& r, const fs::path& file, const render::FrameSegment& segment) {
   render::resolve_output_file(file);
   std::error_code ec;
   if (r.force || !fs::exists(file, ec)) return;
-  const auto tag = render::read_segment_tag(file);
-  if (!tag || tag->index != segment.index || tag->count != segment.count)
+  if (!render::read_segment_tag(file))
     throw render::OutputError("'" + file.string() + "' exists and was not written by vibra for segment " +
                               std::to_string(segment.index) + "/" + std::to_string(segment.count) + " of " + r.output +
                               ": move it away, or add --force to overwrite it");
