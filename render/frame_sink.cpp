@@ -5,7 +5,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "render/created_directory.hpp"
+#include "render/output_path.hpp"
+#include "render/standard_output.hpp"
 #include "render/output_error.hpp"
 #include "render/png_sequence.hpp"
 #include "render/video_writer.hpp"
@@ -31,7 +32,9 @@ class VideoSink final : public FrameSink {
   void finish() override { writer_.finish(); }
   std::vector<std::string> notes() const override { return writer_.notes(); }
   std::string description() const override {
-    const std::string where = path_ == VideoWriter::kStandardOutput ? "standard output" : path_;
+    OutputTarget target;
+    target.named = path_, target.file = writer_.file();
+    const std::string where = path_ == VideoWriter::kStandardOutput ? standard_output_name() : target.shown();
     return where + " (" + std::to_string(writer_.frames_written()) + " frames)";
   }
 
@@ -43,13 +46,9 @@ class VideoSink final : public FrameSink {
 class PngSink final : public FrameSink {
  public:
   PngSink(FramePattern pattern, int width, int height, int threads, long long first)
-      : pattern_(pattern), first_(first), directory_(pattern.directory),
-        writer_(std::move(pattern), width, height, threads, first) {}
+      : pattern_(pattern), first_(first), writer_(std::move(pattern), width, height, threads, first) {}
   void write(const std::uint8_t* bgra, int stride, const Damage*) override { writer_.write(bgra, stride); }
-  void finish() override {
-    writer_.finish();
-    directory_.keep();
-  }
+  void finish() override { writer_.finish(); }
   std::string description() const override {
     return std::to_string(writer_.frames_written()) + " frames " + pattern_.name(first_).string() + " ... " +
            pattern_.name(first_ + std::max(0LL, writer_.frames_written() - 1)).string();
@@ -58,7 +57,6 @@ class PngSink final : public FrameSink {
  private:
   FramePattern pattern_;
   long long first_;
-  CreatedDirectory directory_;  ///< before the writer: removed after its frames
   PngSequenceWriter writer_;
 };
 class Y4mSink final : public FrameSink {
@@ -67,7 +65,7 @@ class Y4mSink final : public FrameSink {
   void write(const std::uint8_t* bgra, int stride, const Damage* changed) override { stream_.write(bgra, stride, changed); }
   void finish() override {}  // every frame went out whole when written
   std::string description() const override {
-    return "standard output (" + std::to_string(stream_.frames_written()) + " frames, y4m)";
+    return standard_output_name() + " (" + std::to_string(stream_.frames_written()) + " frames, y4m)";
   }
 
  private:
@@ -115,21 +113,21 @@ bool is_frame_pattern(const std::string& output) {
 
 void require_stream_format(const std::string& format) {
   if (format != "y4m" && format != "nut" && format != "matroska")
-    throw OutputError((format.empty() ? std::string("-o - streams the video to standard output")
+    throw OutputError((format.empty() ? std::string("a video goes to a stream (-o -, a pipe or a device) in a stream format")
                                       : "--format " + format + " is not a stream format") +
                       ": add --format y4m (raw frames), nut or matroska (H.264)");
 }
 
-void check_output_settings(const std::string& output, const VideoSettings& settings) {
-  if (output == VideoWriter::kStandardOutput) {
+void check_output_settings(const std::string& output, bool stream, const VideoSettings& settings) {
+  if (stream) {
     require_stream_format(settings.format);
     if (settings.transparent)
-      throw OutputError("--transparent cannot go to standard output: write .webm, .mov or PNG frames such as "
-                        "frames/tmp_%04d.png");
+      throw OutputError("--transparent cannot go to " + (output == "-" ? std::string("standard output") : "a stream (" + output + ")") +
+                        ": write .webm, .mov or PNG frames such as frames/tmp_%04d.png");
     return;
   }
   if (!settings.format.empty())
-    throw OutputError("--format is for -o - (standard output): a file's extension chooses its format");
+    throw OutputError("--format is for a stream (-o -, a pipe or a device): a file's extension chooses its format");
   if (settings.transparent && is_video_path(output)) {
     const std::string problem = VideoWriter::alpha_problem(output, settings.codec);
     if (!problem.empty()) throw OutputError(problem);

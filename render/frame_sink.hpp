@@ -42,10 +42,11 @@ bool is_video_path(const std::string& output);
 /// True when `output` is a PNG frame pattern (has %d) or a directory.
 bool is_frame_pattern(const std::string& output);
 
-/// Checks what VideoSettings ask of `output` before a run: "-" needs a
-/// stream format and cannot be transparent; --format is for "-" only; a
-/// transparent video must be .webm or .mov. Throws OutputError naming the fix.
-void check_output_settings(const std::string& output, const VideoSettings&);
+/// Checks what VideoSettings ask of `output` before a run: a stream ("-", a
+/// pipe or device: `stream`) needs a stream format and cannot be
+/// transparent; --format is for streams only; a transparent video must be
+/// .webm or .mov. Throws OutputError naming the fix.
+void check_output_settings(const std::string& output, bool stream, const VideoSettings&);
 
 /// Throws OutputError unless `format` is one standard output can take
 /// (y4m, nut, matroska), naming them.

@@ -122,12 +122,17 @@ std::string lecture_page_html(const LecturePage& page) {
                {"PAGE_JS", std::string(page_asset("page.js"))}});
 }
 
+void write_text(const TemporaryFile& file, const std::string& text) {
+  const std::string path = file.final_path().string();
+  std::FILE* f = std::fopen(file.path().c_str(), "wb");
+  if (!f) throw OutputError("cannot write '" + path + "': choose a writable path");
+  const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  if (std::fclose(f) != 0 || !ok) throw OutputError("writing '" + path + "' failed (disk full?)");
+}
+
 void write_text_file(const std::filesystem::path& path, const std::string& text) {
   TemporaryFile file(path);
-  std::FILE* f = std::fopen(file.path().c_str(), "wb");
-  if (!f) throw OutputError("cannot write '" + path.string() + "': choose a writable path");
-  const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  if (std::fclose(f) != 0 || !ok) throw OutputError("writing '" + path.string() + "' failed (disk full?)");
+  write_text(file, text);
   file.commit();
 }
 

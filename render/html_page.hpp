@@ -44,6 +44,11 @@ struct LecturePage {
 /// The page as one self-contained HTML file (template render/page/lecture.html.in).
 std::string lecture_page_html(const LecturePage&);
 
+class TemporaryFile;
+
+/// Writes text into `file`'s temporary; commit() puts it in place.
+void write_text(const TemporaryFile& file, const std::string& text);
+
 /// Writes text to `path` through a temporary file (nothing partial is left).
 void write_text_file(const std::filesystem::path& path, const std::string& text);
 

@@ -93,6 +93,7 @@ FramePattern parse_frame_pattern(const std::string& pattern, long long frame_cou
 
 PngSequenceWriter::PngSequenceWriter(FramePattern pattern, int width, int height, int threads, long long first_index)
     : pattern_(std::move(pattern)),
+      staging_(pattern_.directory, "frames"),
       width_(width),
       height_(height),
       capacity_(std::max(threads, 1)),
@@ -108,13 +109,7 @@ PngSequenceWriter::PngSequenceWriter(FramePattern pattern, int width, int height
   }
 }
 
-PngSequenceWriter::~PngSequenceWriter() {
-  stop_workers();
-  if (finished_) return;
-  std::error_code ec;
-  for (size_t i = 0; i < saved_.size(); ++i)
-    if (saved_[i]) fs::remove(pattern_.name(first_ + static_cast<long long>(i)), ec);
-}
+PngSequenceWriter::~PngSequenceWriter() { stop_workers(); }  // then staging_ removes this run's frames
 
 void PngSequenceWriter::write(const std::uint8_t* bgra, int stride) {
   if (finished_) throw std::logic_error("PngSequenceWriter::write after finish");
@@ -132,7 +127,6 @@ void PngSequenceWriter::write(const std::uint8_t* bgra, int stride) {
   progress_.wait(lock, [&] { return jobs_.size() < capacity_ || !failure_.empty(); });
   if (!failure_.empty()) throw OutputError(failure_);
   jobs_.push_back({queued_++, std::move(scanlines)});
-  saved_.push_back(false);
   lock.unlock();
   work_.notify_one();
 }
@@ -144,6 +138,7 @@ void PngSequenceWriter::finish() {
     if (!failure_.empty()) throw OutputError(failure_);
   }
   stop_workers();
+  staging_.move_files_into_location();  // not interrupted: the set is replaced whole
   finished_ = true;
 }
 
@@ -182,9 +177,7 @@ void PngSequenceWriter::work() {
     lock.lock();
     --busy_;
     spare_.push_back(std::move(job.scanlines));
-    if (error.empty())
-      saved_[job.index - first_] = true;
-    else if (failure_.empty())
+    if (!error.empty() && failure_.empty())
       failure_ = std::move(error);
     progress_.notify_all();
   }
@@ -193,10 +186,10 @@ void PngSequenceWriter::work() {
 void PngSequenceWriter::save(const Job& job, std::vector<std::uint8_t>& png) const {
   const std::size_t size = encode_png(job.scanlines, png);
   const fs::path name = pattern_.name(job.index);
-  TemporaryFile file(name);
-  std::FILE* out = std::fopen(file.path().c_str(), "wb");
+  const fs::path file = staging_.path() / name.filename();
+  std::FILE* out = std::fopen(file.c_str(), "wb");
   if (!out)
-    throw OutputError("cannot create '" + file.path().string() + "': " + std::generic_category().message(errno) +
+    throw OutputError("cannot create '" + file.string() + "': " + std::generic_category().message(errno) +
                       ": choose a writable directory");
   bool ok = std::fwrite(png.data(), 1, size, out) == size;
   int error = errno;
@@ -204,7 +197,6 @@ void PngSequenceWriter::save(const Job& job, std::vector<std::uint8_t>& png) con
   if (!ok)
     throw OutputError("writing '" + name.string() + "' failed: " + std::generic_category().message(error) +
                       ": free disk space or choose another directory");
-  file.commit();
 }
 
 }  // namespace vibra::render

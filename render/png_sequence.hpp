@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/png_encoder.hpp"  // PngScanlines, which the writer queues
+#include "render/temporary_file.hpp"
 
 namespace vibra::render {
 
@@ -34,8 +35,9 @@ FramePattern parse_frame_pattern(const std::string& pattern, long long frame_cou
 /// Writes PNG frames on worker threads: encoding costs more than drawing and
 /// frames are independent, so every core compresses. The queue holds at most
 /// `threads` frames, so memory stays flat for any number of frames. Frames may
-/// finish out of order; each goes to its index's name, written under a
-/// temporary name and renamed, so no file is ever half-written.
+/// finish out of order. They are written into a temporary folder beside
+/// their names (TemporaryDirectory) and moved to their names by finish(), so
+/// until the run completes an earlier run's frames stay as they were.
 class PngSequenceWriter {
  public:
   /// `first_index`: the number of the first frame (a segment of a longer
@@ -45,15 +47,17 @@ class PngSequenceWriter {
   PngSequenceWriter(const PngSequenceWriter&) = delete;
   PngSequenceWriter& operator=(const PngSequenceWriter&) = delete;
   /// Not finished (error, interrupt): drops queued frames, waits for the
-  /// workers, then removes every frame this run wrote, so no partial sequence
-  /// remains. Never throws.
+  /// workers, then removes the temporary folder with every frame this run
+  /// wrote: no partial sequence remains, and earlier frames are untouched.
+  /// Never throws.
   ~PngSequenceWriter();
 
   /// Packs one Cairo ARGB32 frame (width x height, rows `stride` bytes apart)
   /// as PNG scanlines and queues it, waiting while the queue is full. Throws
   /// OutputError if a worker has already failed.
   void write(const std::uint8_t* bgra, int stride);
-  /// Waits until every frame is on disk; throws OutputError for the first failure.
+  /// Waits until every frame is on disk, then moves them to their names;
+  /// throws OutputError for the first failure.
   void finish();
   /// Frames accepted by write(); all of them are on disk once finish() returns.
   long long frames_written() const { return queued_ - first_; }
@@ -68,6 +72,7 @@ class PngSequenceWriter {
   void stop_workers() noexcept;
 
   FramePattern pattern_;
+  TemporaryDirectory staging_;  ///< where the frames wait for finish()
   int width_, height_;
   size_t capacity_;
   long long first_;
@@ -82,7 +87,6 @@ class PngSequenceWriter {
   int busy_ = 0;
   bool stopping_ = false;
   std::string failure_;
-  std::vector<bool> saved_;  // by index - first_: on disk, for the cleanup of an unfinished run
   std::vector<std::thread> workers_;
 };
 

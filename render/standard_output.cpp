@@ -13,11 +13,19 @@ extern "C" {
 #include <cerrno>
 #include <cstdio>
 #include <cstdint>
+#include <cstring>
+
+#include "render/output_error.hpp"
 
 namespace vibra::render {
 
 namespace {
 std::atomic<int> first_error = 0;
+
+std::string& name() {
+  static std::string text = "standard output";
+  return text;
+}
 
 void record(int error) {
   int none = 0;
@@ -54,6 +62,22 @@ void standard_output_failed(int error) {
 }
 
 int standard_output_error() { return first_error.load(); }
+
+const std::string& standard_output_name() { return name(); }
+
+void send_standard_output_to(const OutputTarget& target) {
+  if (!target.stream || (target.device.empty() && target.descriptor == STDOUT_FILENO)) return;
+  std::fflush(stdout);
+  int fd = target.descriptor;
+  if (!target.device.empty()) {
+    do fd = ::open(target.device.c_str(), O_WRONLY | O_CLOEXEC);
+    while (fd < 0 && errno == EINTR);
+  }
+  if (fd < 0 || ::dup2(fd, STDOUT_FILENO) < 0)
+    throw OutputError("cannot write to '" + target.named + "': " + std::strerror(errno) + ": choose another output");
+  if (!target.device.empty()) ::close(fd);
+  name() = target.named;
+}
 
 void print_standard_output(std::string_view text) {
   errno = 0;

@@ -1,6 +1,9 @@
 #pragma once
 #include <cstddef>
+#include <string>
 #include <string_view>
+
+#include "render/output_path.hpp"
 
 struct AVIOContext;
 
@@ -36,6 +39,16 @@ void write_standard_output(const void* data, std::size_t size);
 AVIOContext* open_standard_output_io();
 /// Flushes and frees the context; returns the first write error, or 0.
 int close_standard_output_io(AVIOContext*&);
+
+/// Makes a stream output (resolve_output: a pipe or device by name, or a
+/// descriptor such as /dev/fd/2) this process's standard output, so it is
+/// written as `-o -` is, every write checked; messages then name it. A FIFO
+/// opens when a reader has opened it. Nothing to do for standard output
+/// itself. Throws OutputError when it cannot be opened.
+void send_standard_output_to(const OutputTarget&);
+
+/// "standard output", or the pipe or device it was sent to.
+const std::string& standard_output_name();
 
 /// The errno of standard output's first failed write, or 0.
 int standard_output_error();

@@ -1,6 +1,8 @@
 #include "render/temporary_file.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
+#include <stdio.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -12,6 +14,7 @@
 #include <system_error>
 
 #include "render/output_error.hpp"
+#include "render/output_path.hpp"
 
 namespace fs = std::filesystem;
 
@@ -63,32 +66,20 @@ static void remove_stale_once(const fs::path& dir) {
     if (!seen.insert(ec ? dir : key).second) return;
   }
   for (const fs::path& stale : TemporaryFile::stale_in(dir)) {
-    if (fs::remove(stale, ec))
+    if (fs::remove_all(stale, ec) > 0)
       std::fprintf(stderr, "vibra: removed %s, a temporary left by a run that was killed\n", stale.c_str());
   }
 }
 
-TemporaryFile::TemporaryFile(fs::path final_path) : final_(std::move(final_path)) {
-  if (final_.filename().empty())
-    throw OutputError("output path '" + final_.string() + "' names a directory, not a file: add a file name");
-  std::error_code ec;
-  const fs::file_status status = fs::status(final_, ec);
-  if (fs::is_directory(status))
-    throw OutputError("output path '" + final_.string() + "' is a directory: give a file name");
-  if (fs::exists(status) && !fs::is_regular_file(status)) {
-    // A device or pipe (/dev/null, /dev/stdout, a FIFO): write to it directly;
-    // renaming over it would replace the device with a file.
-    temp_ = final_;
-    direct_ = true;
-    return;
-  }
-  require_writable_directory(directory_of(final_));
-  remove_stale_once(directory_of(final_));
-  std::string name = ".";
-  name += final_.filename().string();
-  name += kTag;
-  name += host_name() + "-" + std::to_string(getpid());
-  temp_ = directory_of(final_) / name;
+/// `.NAME.vibra-tmp-HOST-PID` in `dir`, after removing what killed runs left there.
+static fs::path temporary_name(const fs::path& dir, const std::string& name) {
+  remove_stale_once(dir);
+  return dir / ("." + name + kTag + host_name() + "-" + std::to_string(getpid()));
+}
+
+TemporaryFile::TemporaryFile(const fs::path& final_path)
+    : final_(resolve_output_file(final_path)), parents_(directory_of(final_)) {  // parents_ checks it is writable
+  temp_ = temporary_name(directory_of(final_), final_.filename().string());
 }
 
 TemporaryFile::~TemporaryFile() {
@@ -96,10 +87,6 @@ TemporaryFile::~TemporaryFile() {
 }
 
 void TemporaryFile::commit() {
-  if (direct_) {
-    done_ = true;
-    return;
-  }
   std::error_code ec;
   fs::rename(temp_, final_, ec);
   if (ec) {
@@ -107,13 +94,65 @@ void TemporaryFile::commit() {
     throw OutputError("cannot move the finished output to '" + final_.string() + "': " + ec.message());
   }
   done_ = true;
+  parents_.keep();
 }
 
 void TemporaryFile::discard() noexcept {
   done_ = true;
-  if (direct_) return;
   std::error_code ec;
   fs::remove(temp_, ec);
+}
+
+TemporaryDirectory::TemporaryDirectory(const fs::path& location, const std::string& name)
+    : parents_(location), location_(location.empty() ? fs::path(".") : location) {
+  path_ = temporary_name(location_, name);
+  std::error_code ec;
+  fs::remove_all(path_, ec);  // this process's own, from an earlier output of the same name
+  if (!fs::create_directory(path_, ec))
+    throw OutputError("cannot create the folder '" + path_.string() + "': " + ec.message() +
+                      ": choose another output path");
+}
+
+TemporaryDirectory::~TemporaryDirectory() {
+  if (done_) return;
+  std::error_code ec;
+  fs::remove_all(path_, ec);
+}
+
+void TemporaryDirectory::replace(const fs::path& final_folder) {
+  std::error_code ec;
+  const bool earlier = fs::exists(fs::symlink_status(final_folder, ec));
+  // Exchanged, the temporary name holds the earlier output, removed below.
+  if (earlier && ::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, final_folder.c_str(), RENAME_EXCHANGE) != 0) {
+    // No exchange on this file system: move the earlier folder aside first.
+    const fs::path aside = path_.string() + "-old";
+    fs::rename(final_folder, aside, ec);
+    if (!ec) fs::rename(path_, final_folder, ec);
+    if (ec) {
+      std::error_code ignored;
+      fs::rename(aside, final_folder, ignored);
+      throw OutputError("cannot move the finished output to '" + final_folder.string() + "': " + ec.message());
+    }
+    fs::remove_all(aside, ec);
+  } else if (!earlier) {
+    fs::rename(path_, final_folder, ec);
+    if (ec) throw OutputError("cannot move the finished output to '" + final_folder.string() + "': " + ec.message());
+  }
+  fs::remove_all(path_, ec);  // the earlier output, when exchanged
+  done_ = true;
+  parents_.keep();
+}
+
+void TemporaryDirectory::move_files_into_location() {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(path_, ec)) {
+    const fs::path to = location_ / entry.path().filename();
+    fs::rename(entry.path(), to, ec);
+    if (ec) throw OutputError("cannot move the finished output to '" + to.string() + "': " + ec.message());
+  }
+  fs::remove(path_, ec);
+  done_ = true;
+  parents_.keep();
 }
 
 std::vector<fs::path> TemporaryFile::stale_in(const fs::path& dir) {

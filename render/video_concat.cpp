@@ -10,8 +10,10 @@ extern "C" {
 #include <cstring>
 #include <memory>
 
+#include "core/input_files.hpp"
 #include "render/av_error.hpp"
 #include "render/output_error.hpp"
+#include "render/output_path.hpp"
 #include "render/temporary_file.hpp"
 
 namespace fs = std::filesystem;
@@ -176,13 +178,10 @@ std::optional<FrameSegment> read_segment_tag(const fs::path& video) {
 ConcatSummary concat_segments(const std::vector<fs::path>& paths, const fs::path& output) {
   av_log_set_level(AV_LOG_QUIET);  // every failure is reported in our words, with FFmpeg's reason
   if (paths.empty()) throw OutputError("concat needs the segment videos to join: give PART... -o OUT");
+  for (const fs::path& path : paths) note_input_file(path, "a part to join");
+  const fs::path file = resolve_output(output.string()).file;  // not a part, nor a folder
   std::vector<Part> parts;
-  std::error_code ec;
-  for (const fs::path& path : paths) {
-    if (fs::exists(output, ec) && fs::equivalent(path, output, ec))
-      throw OutputError("-o " + quoted(output) + " is one of the parts: choose another name for the joined video");
-    parts.push_back(open_part(path));
-  }
+  for (const fs::path& path : paths) parts.push_back(open_part(path));
   check_parts(parts);
 
   const AVOutputFormat* muxer = av_guess_format(nullptr, output.c_str(), nullptr);
@@ -190,7 +189,7 @@ ConcatSummary concat_segments(const std::vector<fs::path>& paths, const fs::path
   if (!muxer || avformat_query_codec(muxer, codec->codec_id, FF_COMPLIANCE_NORMAL) != 1)
     throw OutputError("-o " + quoted(output) + " cannot hold " + avcodec_get_name(codec->codec_id) +
                       " video: name it like the parts (" + parts.front().path.extension().string() + ")");
-  Output out(output);
+  Output out(file);
   out.check(avformat_alloc_output_context2(&out.format, muxer, nullptr, out.file.path().c_str()), "setting up");
   out.stream = avformat_new_stream(out.format, nullptr);
   if (!out.stream) out.check(AVERROR(ENOMEM), "setting up");

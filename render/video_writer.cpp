@@ -202,7 +202,7 @@ static std::string quoted(const fs::path& path) {
 struct VideoWriter::Impl {
   explicit Impl(const fs::path& final_path)
       : streaming(final_path == VideoWriter::kStandardOutput),
-        target(streaming ? std::string("standard output") : quoted(final_path)) {
+        target(streaming ? standard_output_name() : quoted(final_path)) {
     if (!streaming) file.emplace(final_path);
   }
   ~Impl();
@@ -535,6 +535,8 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
 }
 
 VideoWriter::~VideoWriter() = default;
+
+fs::path VideoWriter::file() const { return impl_ && impl_->file ? impl_->file->final_path() : fs::path(); }
 
 void VideoWriter::write(const std::uint8_t* argb32, int stride, const Damage* changed) {
   if (finished_) throw std::logic_error("VideoWriter::write after finish");

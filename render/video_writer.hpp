@@ -60,6 +60,8 @@ class VideoWriter {
   /// renames the file into place. Throws OutputError (e.g. disk full).
   void finish();
   int frames_written() const { return frames_; }
+  /// The file the video goes to (a link's target); empty for standard output.
+  std::filesystem::path file() const;
   /// Things to tell the user once, e.g. a size rounded up to even.
   const std::vector<std::string>& notes() const { return notes_; }
 

@@ -14,9 +14,11 @@
 #include "core/models/model.hpp"
 #include "render/canvas.hpp"
 #include "render/html_page.hpp"
+#include "render/output_path.hpp"
 #include "render/png_sequence.hpp"
 #include "render/output_error.hpp"
 #include "render/progress.hpp"
+#include "render/standard_output.hpp"
 #include "render/stop_signal.hpp"
 #include "render/temporary_file.hpp"
 #include "render/text.hpp"
@@ -79,39 +81,109 @@ std::uint64_t render_fingerprint(const RenderRequest& r, const std::string& capt
   return hash;
 }
 
+namespace fs = std::filesystem;
+
 /// Where the frames go: one target, or for a page its videos or frames.
 struct Outputs {
-  std::vector<std::string> targets;  ///< video files or a frame pattern
+  std::vector<std::string> targets;  ///< what the sinks write: video files, a frame pattern, or "-" (a stream)
+  std::vector<std::string> links;    ///< a page's videos, relative to the page
   std::string frames_prefix;         ///< player pages: frame name prefix relative to the page
   int digits = 4;
 };
 
-Outputs plan_outputs(const RenderRequest& r, const render::FrameSegment& segment) {
-  const long long frames = segment.total;
-  if (r.segment && render::is_video_path(r.output)) return {{segment.file_name(r.output)}, "", 4};
-  if (extension_of(r.output) != ".html") return {{r.output}, "", 4};
-  const std::filesystem::path page(r.output);
-  const std::string stem = page.stem().string();
-  if (!r.frames_player) return {{(page.parent_path() / (stem + ".mp4")).string(), (page.parent_path() / (stem + ".webm")).string()}, "", 4};
-  const std::filesystem::path directory = page.parent_path() / (stem + "_frames");  // the frame sink creates it
-  const render::FramePattern pattern = render::parse_frame_pattern((directory / "frame_%04d.png").string(), frames);
-  return {{(directory / "frame_%04d.png").string()}, stem + "_frames/frame_", pattern.digits};
+/// A page's companions (videos or frames, and the CSV) go in a folder of
+/// their own beside it, PAGE_files/ (as browsers save a page), so the page
+/// never writes over a file the user did not name.
+fs::path companion_folder(const std::string& page) {
+  const fs::path p(page);
+  return p.parent_path() / (p.stem().string() + "_files");
+}
+
+/// Whether `name` is one that vibra writes in the companion folder of a page `stem`.html.
+bool is_companion_name(const std::string& name, const std::string& stem) {
+  if (name == stem + ".mp4" || name == stem + ".webm" || name == stem + ".csv") return true;
+  if (!name.starts_with("frame_") || !name.ends_with(".png") || name.size() <= 10) return false;
+  return std::all_of(name.begin() + 6, name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
+}
+
+/// A page's companion folder may be replaced when vibra wrote it for a page
+/// of that name (it holds only such companions), or with --force; it never
+/// holds a file the run reads.
+void check_companion_folder(const fs::path& folder, const std::string& stem, bool force) {
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(folder, ec);
+  if (!fs::exists(status)) return;
+  bool ours = fs::is_directory(status);
+  render::refuse_input_as_output(folder);
+  for (const auto& entry : fs::directory_iterator(ours ? folder : fs::path(), ec)) {
+    render::refuse_input_as_output(entry.path());
+    ours = ours && is_companion_name(entry.path().filename().string(), stem) && entry.is_regular_file(ec) &&
+           !entry.is_symlink(ec);
+  }
+  if (!ours && !force)
+    throw render::OutputError("'" + folder.string() + "' exists and was not written by vibra for this page: move it "
+                              "away, or add --force to replace it");
+}
+
+/// A segment's file may be overwritten when vibra wrote it (it carries a
+/// segment tag: a restart, or another split of the same output), or with --force.
+void check_segment_file(const RenderRequest& r, const fs::path& file, const render::FrameSegment& segment) {
+  render::resolve_output_file(file);
+  std::error_code ec;
+  if (r.force || !fs::exists(file, ec)) return;
+  if (!render::read_segment_tag(file))
+    throw render::OutputError("'" + file.string() + "' exists and was not written by vibra for segment " +
+                              std::to_string(segment.index) + "/" + std::to_string(segment.count) + " of " + r.output +
+                              ": move it away, or add --force to overwrite it");
+}
+
+/// Each frame's name is a file that may be written (not a folder, not an input).
+void check_frame_names(const std::string& target, const render::FrameSegment& segment) {
+  const render::FramePattern pattern = render::parse_frame_pattern(target, segment.total);
+  for (long long k = segment.first(); k < segment.end(); ++k) render::resolve_output_file(pattern.name(k));
+}
+
+Outputs plan_outputs(const RenderRequest& r, const render::FrameSegment& segment, bool stream, const fs::path& staged) {
+  if (stream) return {{"-"}, {}, "", 4};
+  if (r.segment && render::is_video_path(r.output)) return {{segment.file_name(r.output)}, {}, "", 4};
+  if (staged.empty()) return {{r.output}, {}, "", 4};
+  const std::string stem = fs::path(r.output).stem().string();
+  const std::string folder = companion_folder(r.output).filename().string() + "/";
+  if (!r.frames_player)
+    return {{(staged / (stem + ".mp4")).string(), (staged / (stem + ".webm")).string()},
+            {folder + stem + ".mp4", folder + stem + ".webm"}, "", 4};
+  const std::string pattern = (staged / "frame_%04d.png").string();
+  return {{pattern}, {}, folder + "frame_", render::parse_frame_pattern(pattern, segment.total).digits};
+}
+
+/// Whether every frame name of `pattern` in the segment holds a file.
+bool frames_complete(const std::string& pattern, const render::FrameSegment& segment) {
+  const render::FramePattern names = render::parse_frame_pattern(pattern, segment.total);
+  std::error_code ec;
+  for (long long k = segment.first(); k < segment.end(); ++k)
+    if (!fs::is_regular_file(names.name(k), ec)) return false;
+  return true;
 }
 
 /// --skip-existing: whether the outputs are complete at their final paths.
-/// Outputs are renamed into place only when complete, so existence is proof;
-/// a segment video must also hold this segment (not one of another split).
+/// Outputs are put in place only when complete, so a file there is proof (a
+/// folder is not); a segment video must also hold this segment (not one of
+/// another split), a page its companions.
 bool already_complete(const RenderRequest& r, const Outputs& outputs, const render::FrameSegment& segment) {
-  namespace fs = std::filesystem;
   std::error_code ec;
-  if (r.at || extension_of(r.output) == ".html") return fs::exists(r.output, ec);
+  if (r.at) return fs::is_regular_file(r.output, ec);
+  if (extension_of(r.output) == ".html") {
+    const fs::path folder = companion_folder(r.output);
+    const std::string stem = fs::path(r.output).stem().string();
+    if (!fs::is_regular_file(r.output, ec) || !fs::is_regular_file(folder / (stem + ".csv"), ec)) return false;
+    if (r.frames_player) return frames_complete((folder / "frame_%04d.png").string(), segment);
+    return fs::is_regular_file(folder / (stem + ".mp4"), ec) && fs::is_regular_file(folder / (stem + ".webm"), ec);
+  }
   const std::string& target = outputs.targets.front();
+  if (target == "-") return false;
   if (render::is_video_path(target))
-    return fs::exists(target, ec) && (!r.segment || render::read_segment_tag(target) == segment);
-  const render::FramePattern pattern = render::parse_frame_pattern(target, segment.total);
-  for (long long k = segment.first(); k < segment.end(); ++k)
-    if (!fs::exists(pattern.name(k), ec)) return false;
-  return true;
+    return fs::is_regular_file(target, ec) && (!r.segment || render::read_segment_tag(target) == segment);
+  return frames_complete(target, segment);
 }
 
 render::PageFacts page_facts(const RenderRequest& r, long long frames, const Parameters& p, const TimeMesh& mesh,
@@ -139,9 +211,9 @@ render::PageFacts page_facts(const RenderRequest& r, long long frames, const Par
   return facts;
 }
 
-/// A page beside its videos (or frames) and CSV, with the run's time series.
-void write_page(const RenderRequest& r, const Outputs& outputs, const FrameClock& clock, render::PageFacts facts,
-                std::vector<render::PagePanel> panels, const std::string& csv_name) {
+/// A page that links its videos (or frames) and CSV, with the run's time series.
+std::string page_html(const RenderRequest& r, const Outputs& outputs, const FrameClock& clock, render::PageFacts facts,
+                      std::vector<render::PagePanel> panels, const std::string& csv_link) {
   render::LecturePage page;
   page.title = "vibra: " + r.scene.name;
   render::PageMedia& media = page.media;
@@ -157,23 +229,38 @@ void write_page(const RenderRequest& r, const Outputs& outputs, const FrameClock
     media.width = r.scene.width, media.height = r.scene.height;
   } else {
     media.kind = render::PageMedia::Kind::video;
-    for (const auto& t : outputs.targets) {
-      const std::string name = std::filesystem::path(t).filename().string();
-      media.videos.push_back(name);
-      page.downloads.push_back({extension_of(name) == ".mp4" ? "MP4 video" : "WebM video", name});
+    for (const auto& link : outputs.links) {
+      media.videos.push_back(link);
+      page.downloads.push_back({extension_of(link) == ".mp4" ? "MP4 video" : "WebM video", link});
     }
   }
-  page.downloads.push_back({"CSV of the run", csv_name});
+  page.downloads.push_back({"CSV of the run", csv_link});
   page.panels = std::move(panels);
   page.facts = std::move(facts);
   page.command_line = r.command_line;
-  render::write_text_file(r.output, render::lecture_page_html(page));
+  return render::lecture_page_html(page);
+}
+
+/// The closing line's list for a page: the page, then every companion.
+std::string page_written(const RenderRequest& r, const render::OutputTarget& target, long long frames) {
+  const fs::path folder = companion_folder(r.output);
+  const std::string stem = fs::path(r.output).stem().string();
+  std::string written = target.shown();
+  const std::string count = " (" + std::to_string(frames) + " frames)";
+  if (!r.frames_player) {
+    for (const char* ext : {".mp4", ".webm"}) written += ", " + (folder / (stem + ext)).string() + count;
+  } else {
+    const render::FramePattern names = render::parse_frame_pattern((folder / "frame_%04d.png").string(), frames);
+    written += ", " + std::to_string(frames) + " frames " + names.name(0).string() + " ... " +
+               names.name(std::max(0LL, frames - 1)).string();
+  }
+  return written + " and " + (folder / (stem + ".csv")).string();
 }
 
 /// Writes one picture at the request's time: PNG, SVG or PDF.
-void write_still(const RenderRequest& r, Scene& scene, std::span<const double> row) {
+void write_still(const RenderRequest& r, const render::OutputTarget& target, Scene& scene, std::span<const double> row) {
   const std::string ext = extension_of(r.output);
-  render::TemporaryFile file(r.output);
+  render::TemporaryFile file(target.file);
   const int w = r.scene.width, h = r.scene.height;
   if (ext == ".png") {
     render::Canvas canvas = render::Canvas::image(w, h);
@@ -187,7 +274,7 @@ void write_still(const RenderRequest& r, Scene& scene, std::span<const double> r
     canvas.finish();
   }
   file.commit();
-  if (!r.quiet) std::fprintf(stderr, "vibra: wrote %s (t = %g)\n", r.output.c_str(), row[0]);
+  if (!r.quiet) std::fprintf(stderr, "vibra: wrote %s (t = %g)\n", target.shown().c_str(), row[0]);
 }
 }  // namespace
 
@@ -201,14 +288,21 @@ void run_render(const RenderRequest& r) {
     throw UsageError("--at renders one still: give -o FILE.png, FILE.svg or FILE.pdf");
   if (!still && (ext == ".svg" || ext == ".pdf"))
     throw UsageError("-o " + r.output + " is one picture: add --at T to choose its time");
-  const bool page = ext == ".html", stream = r.output == "-";
+  const bool page = ext == ".html";
+  // A frame pattern or folder names frames; anything else one file or a stream.
+  const bool frames = !still && !page && !render::is_video_path(r.output) && r.output != "-" &&
+                      !r.output.empty() && render::is_frame_pattern(r.output);
+  render::OutputTarget target;  // frames: their names are checked one by one below
+  target.named = r.output;
+  if (!frames) target = render::resolve_output(r.output, still || page ? render::kNeedsAFile : "");
+  const bool stream = target.stream;
   if (r.frames_player && !page) throw UsageError("--frames-player writes a page: give -o PLAYER.html");
   if (r.csv_every < 1) throw UsageError("--every must be at least 1: the page's CSV keeps every K-th step");
   if (r.csv_every != 1 && !page) throw UsageError("--every thins the CSV beside a page: give -o PAGE.html, or drop --every");
   if (r.video.transparent && page && !r.frames_player)
     throw UsageError("a page's MP4 cannot be transparent: add --frames-player (PNG frames), or write .webm or .mov");
-  render::check_output_settings(r.output, r.video);
-  if (!still && !page && !stream && !render::is_video_path(r.output) && !render::is_frame_pattern(r.output)) {
+  render::check_output_settings(r.output, stream, r.video);
+  if (!still && !page && !stream && !frames && !render::is_video_path(r.output)) {
     if (ext == ".png")
       throw UsageError("-o " + r.output + " is one picture: add --at T, or give a pattern such as frames/tmp_%04d.png");
     throw UsageError("cannot tell what to write from -o " + r.output +
@@ -220,7 +314,7 @@ void run_render(const RenderRequest& r) {
     if (still) throw UsageError("--segment splits a video or frame sequence; --at renders one still: drop one of them");
     if (stream)
       throw UsageError("--segment writes files for vibra concat to join: give -o FILE.mp4, .mkv, .webm or PNG frames, "
-                       "not - (standard output)");
+                       "not a stream (" + r.output + ")");
     if (page)
       throw UsageError("--segment cannot split a page (.html): render segments to .mp4, .mkv, .webm or PNG frames, "
                        "join them with vibra concat");
@@ -234,7 +328,7 @@ void run_render(const RenderRequest& r) {
   const Parameters parameters =
       r.scene.compare.empty() ? model_parameters_of(r.scene)
                               : comparison_base_of(r.scene, parse_comparison(r.scene.compare).key);
-  std::unique_ptr<Trajectory> pre_pass = build_scene_runs(r.scene);
+  std::unique_ptr<Trajectory> pre_pass = build_scene_runs(r.scene);  // reads the run's files (a road)
   const TimeMesh mesh = pre_pass->info().mesh;
   if (!std::isfinite(mesh.T)) throw UsageError("a render needs a finite end time: give T or periods");
   if (still && (*r.at < 0 || *r.at > mesh.T * (1 + 1e-12)))
@@ -255,12 +349,29 @@ void run_render(const RenderRequest& r) {
                        " has no frames: the render has only " + std::to_string(segment.total) +
                        ", so use at most that many segments");
   }
-  const Outputs outputs = still ? Outputs{} : plan_outputs(r, segment);
-  if (r.skip_existing && already_complete(r, outputs, segment)) {
-    const std::string& done = page || still ? r.output : outputs.targets.front();
+
+  // Every path the run will write, checked now that its inputs are known,
+  // before any work: the inputs, companions and frame names.
+  const fs::path companions = page ? companion_folder(r.output) : fs::path();
+  if (!target.file.empty()) render::refuse_input_as_output(target.file);
+  if (page) check_companion_folder(companions, fs::path(r.output).stem().string(), r.force);
+  if (r.segment && render::is_video_path(r.output)) check_segment_file(r, segment.file_name(r.output), segment);
+  if (frames) check_frame_names(r.output, segment);
+  if (r.skip_existing && !stream && already_complete(r, still ? Outputs{} : plan_outputs(r, segment, false, {}), segment)) {
+    const std::string done =
+        page || still ? r.output : r.segment && render::is_video_path(r.output) ? segment.file_name(r.output) : r.output;
     if (!r.quiet) std::fprintf(stderr, "vibra: %s is already complete: skipped\n", done.c_str());
     return;
   }
+  // A page's companions are made in a temporary folder, and take the place
+  // of earlier ones only with the page, when the run is complete.
+  std::optional<render::TemporaryDirectory> staged;
+  std::optional<render::TemporaryFile> page_file;
+  if (page) {
+    staged.emplace(companions.parent_path(), companions.filename().string());
+    page_file.emplace(target.file);
+  }
+  const Outputs outputs = still ? Outputs{} : plan_outputs(r, segment, stream, staged ? staged->path() : fs::path());
 
   SceneConfig drawn = r.scene;
   if (r.video.transparent) drawn.colors.background = drawn.colors.background.with_alpha(0);  // cleared, not painted
@@ -271,11 +382,11 @@ void run_render(const RenderRequest& r) {
   std::optional<PagePlotCollector> page_plots;
   std::optional<ComparisonPagePlots> comparison_plots;  // a comparison's page: a curve per member
   std::optional<RunCsvFile> csv;
-  const std::filesystem::path csv_path = std::filesystem::path(r.output).replace_extension(".csv");
+  const std::string csv_name = fs::path(r.output).stem().string() + ".csv";
   if (page) {
     if (runs) comparison_plots.emplace(*runs, r.scene.colors.bob);
     else page_plots.emplace(pre_pass->info(), page_panel_names(pre_pass->info()), r.scene.name);
-    csv.emplace(csv_path, pre_pass->info().columns, r.csv_every);
+    csv.emplace(staged->path() / csv_name, pre_pass->info().columns, r.csv_every);
   }
   HistoryFeed(*pre_pass, *scene, scene->sample_interval()).record_all([&](std::span<const double> row) {
     if (comparison_plots) comparison_plots->observe(*runs, row);
@@ -291,13 +402,14 @@ void run_render(const RenderRequest& r) {
   std::unique_ptr<Trajectory> trajectory = build_scene_runs(r.scene);
   HistoryFeed history(*trajectory, *scene, scene->sample_interval());
   auto row_at = [&](double t) { return history.row_at(t); };
-  if (still) return write_still(r, *scene, row_at(*r.at));
+  if (still) return write_still(r, target, *scene, row_at(*r.at));
 
   std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name}, {"comment", plain_text(caption)}};
   if (r.segment) metadata["description"] = segment.tag();  // what vibra concat checks
+  if (stream) render::send_standard_output_to(target);  // a pipe or device: written as -o - is
   std::vector<std::unique_ptr<render::FrameSink>> sinks;
-  for (const auto& target : outputs.targets)
-    sinks.push_back(render::make_frame_sink(target, r.scene.width, r.scene.height, r.scene.fps, clock.frames(), r.video,
+  for (const auto& output : outputs.targets)
+    sinks.push_back(render::make_frame_sink(output, r.scene.width, r.scene.height, r.scene.fps, clock.frames(), r.video,
                                             metadata, segment.first()));
   std::unique_ptr<render::FrameSink> sink =
       sinks.size() == 1 ? std::move(sinks.front()) : render::make_tee_sink(std::move(sinks));
@@ -326,11 +438,15 @@ void run_render(const RenderRequest& r) {
   progress.finish(segment.frames());
   if (page) {
     csv->commit();
-    write_page(r, outputs, clock, page_facts(r, clock.frames(), parameters, mesh, speed),
-               comparison_plots ? comparison_plots->take_panels() : page_plots->take_panels(),
-               csv_path.filename().string());
+    render::write_text(*page_file, page_html(r, outputs, clock, page_facts(r, clock.frames(), parameters, mesh, speed),
+                                             comparison_plots ? comparison_plots->take_panels() : page_plots->take_panels(),
+                                             companions.filename().string() + "/" + csv_name));
+    staged->replace(companions);  // the earlier companions go only now, with the page's
+    page_file->commit();
   }
-  if (!r.quiet) std::fprintf(stderr, "vibra: wrote %s\n", (sink->description() + (page ? " and " + r.output : "")).c_str());
+  if (!r.quiet)
+    std::fprintf(stderr, "vibra: wrote %s\n",
+                 (page ? page_written(r, target, clock.frames()) : sink->description()).c_str());
 }
 
 }  // namespace vibra::scenes

@@ -21,6 +21,9 @@ struct RenderRequest {
   std::optional<render::FrameSegment> segment;
   /// Do nothing when the output is already complete at its final path.
   bool skip_existing = false;
+  /// Replace a page's companion folder, or a segment's file, that vibra did
+  /// not write for this output (without it, the run is refused).
+  bool force = false;
   /// With -o PAGE.html: the CSV beside the page keeps every K-th step (and the last).
   long long csv_every = 1;
   /// The command that asked for the render, shown on a page.
@@ -30,7 +33,8 @@ struct RenderRequest {
 
 /// Solves the scene's model, draws every frame and writes the output. Throws
 /// UsageError / SolutionError / OutputError / render::Interrupted; on any of
-/// them nothing is left at the output path.
+/// them nothing is left at the output paths, and earlier output there is as
+/// it was.
 void run_render(const RenderRequest&);
 
 }  // namespace vibra::scenes

@@ -12,6 +12,7 @@
 
 #include "core/comparison.hpp"
 #include "core/error.hpp"
+#include "core/input_files.hpp"
 #include "core/word_list.hpp"
 #include "core/models/model.hpp"
 #include "scenes/builtin_scenes.hpp"
@@ -299,6 +300,7 @@ SceneConfig load_scene(const std::string& name_or_path) {
                        ") or a model name (vibra solve --help lists them)");
     }
     std::ifstream in(name_or_path, std::ios::binary);
+    note_input_file(name_or_path, "the scene file");
     std::stringstream buffer;
     buffer << in.rdbuf();
     text = buffer.str();

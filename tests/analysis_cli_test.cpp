@@ -105,7 +105,7 @@ TEST_CASE("analyze refuses bad input with one line, exit code 2 and no file", "[
       {"analyze orbit --steps-per-orbit 2.5", "whole numbers"},
       {"analyze orbit --orbits 0", "--orbits"},
       {"analyze frequency -o OUT.gif", ".png, .svg or .pdf"},
-      {"analyze frequency -o OUT/missing/f.png", "does not exist"},
+      {"analyze frequency -o /proc/version/f.png", "not a directory"},
       {"analyze frequency --size 0x10", "WxH"},
       {"analyze period", "needs a MODEL"},
       {"analyze period pendulm", "did you mean 'pendulum'"},

@@ -88,11 +88,15 @@ TEST_CASE("a figure refuses other formats and leaves nothing behind when writing
   ScratchDirectory dir;
   const Figure figure = two_panel_figure(400, 300);
   CHECK_THROWS_WITH(figure.write(dir / "f.jpg"), Catch::Contains(".png, .svg or .pdf"));
-  CHECK_THROWS_AS(figure.write(dir / "missing/f.png"), OutputError);
+  std::ofstream(dir / "file") << "in the way";
+  CHECK_THROWS_AS(figure.write(dir / "file/f.png"), OutputError);
+  std::filesystem::remove(dir / "file");
   std::filesystem::create_directory(dir / "taken.png");
   CHECK_THROWS_AS(figure.write(dir / "taken.png"), OutputError);
   std::filesystem::remove(dir / "taken.png");
   CHECK(dir.empty());
+  figure.write(dir / "made/for/it/f.png");  // missing folders are made
+  CHECK(std::filesystem::is_regular_file(dir / "made/for/it/f.png"));
   CHECK_THROWS_AS(Figure(0, 300), OutputError);
 }
 

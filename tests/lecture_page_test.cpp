@@ -1,6 +1,6 @@
 // `vibra render -o PAGE.html` and `vibra plot -o FIGURE.html` through the
-// real executable: what the page holds and links, the CSV beside it, bad
-// input. tests/browser/check_lecture_page.py checks the page in Chromium.
+// real executable: what the page holds and links, its companions (videos or
+// frames, and the CSV) in PAGE_files/, bad input. tests/browser/check_lecture_page.py checks the page in Chromium.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -35,14 +35,16 @@ TEST_CASE("a lecture page: video sources, plots' data, each fact once, the comma
   const fs::path page = dir.path / "my lectures ø" / "Pendel #1 ø.html";
   REQUIRE(run_vibra("render" + kShort + "--set scheme=rk4 --set alpha=0.3 --every 4 -o '" + page.string() + "'").exit_code == 0);
   const std::string html = read_file(page);
-  for (const char* file : {"Pendel #1 ø.mp4", "Pendel #1 ø.webm", "Pendel #1 ø.csv"}) CHECK(fs::exists(page.parent_path() / file));
+  const fs::path files = page.parent_path() / "Pendel #1 ø_files";  // the companions' own folder
+  for (const char* file : {"Pendel #1 ø.mp4", "Pendel #1 ø.webm", "Pendel #1 ø.csv"}) CHECK(fs::exists(files / file));
 
   // Links percent-encoded, MP4 first, then WebM; downloads of both videos and the CSV.
-  CHECK(html.find("<source src=\"Pendel%20%231%20%C3%B8.mp4\" type=\"video/mp4\">") <
-        html.find("<source src=\"Pendel%20%231%20%C3%B8.webm\" type=\"video/webm\">"));
-  CHECK_THAT(html, Catch::Contains("<a href=\"Pendel%20%231%20%C3%B8.csv\" download>CSV of the run</a>"));
-  CHECK_THAT(html, Catch::Contains("<a href=\"Pendel%20%231%20%C3%B8.mp4\" download>MP4 video</a>"));
-  CHECK_THAT(html, Catch::Contains("<a href=\"Pendel%20%231%20%C3%B8.webm\" download>WebM video</a>"));
+  const std::string folder = "Pendel%20%231%20%C3%B8_files/";
+  CHECK(html.find("<source src=\"" + folder + "Pendel%20%231%20%C3%B8.mp4\" type=\"video/mp4\">") <
+        html.find("<source src=\"" + folder + "Pendel%20%231%20%C3%B8.webm\" type=\"video/webm\">"));
+  CHECK_THAT(html, Catch::Contains("<a href=\"" + folder + "Pendel%20%231%20%C3%B8.csv\" download>CSV of the run</a>"));
+  CHECK_THAT(html, Catch::Contains("<a href=\"" + folder + "Pendel%20%231%20%C3%B8.mp4\" download>MP4 video</a>"));
+  CHECK_THAT(html, Catch::Contains("<a href=\"" + folder + "Pendel%20%231%20%C3%B8.webm\" download>WebM video</a>"));
 
   // Each key once, the settings given among them; the command that made the page.
   for (const char* key : {"scene", "model", "scheme", "dt", "T", "alpha", "periods", "frames", "size"}) {
@@ -64,7 +66,7 @@ TEST_CASE("a lecture page: video sources, plots' data, each fact once, the comma
   CHECK(count(html, "<script") == 3);  // the data, uPlot, the page script: all inline
 
   // The CSV keeps every 4th step of the 61 and the last: 0, 4, ..., 60.
-  const std::string csv = read_file(page.parent_path() / "Pendel #1 ø.csv");
+  const std::string csv = read_file(files / "Pendel #1 ø.csv");
   CHECK(csv.rfind("t,theta,omega,S,D\n", 0) == 0);
   CHECK(lines(csv) == 1 + 16);
 }
@@ -72,10 +74,10 @@ TEST_CASE("a lecture page: video sources, plots' data, each fact once, the comma
 TEST_CASE("a frames-player page: PNG frames and the same page around them", "[page]") {
   ScratchDirectory dir;
   REQUIRE(run_vibra("render" + kShort + "--frames-player -o " + (dir / "player.html")).exit_code == 0);
-  CHECK(fs::exists(dir / "player_frames/frame_0030.png"));
-  CHECK(fs::exists(dir / "player.csv"));
+  CHECK(fs::exists(dir / "player_files/frame_0030.png"));
+  CHECK(fs::exists(dir / "player_files/player.csv"));
   const std::string html = read_file(dir / "player.html");
-  CHECK_THAT(html, Catch::Contains("\"media\":{\"kind\":\"frames\",\"prefix\":\"player_frames/frame_\",\"digits\":4}") &&
+  CHECK_THAT(html, Catch::Contains("\"media\":{\"kind\":\"frames\",\"prefix\":\"player_files/frame_\",\"digits\":4}") &&
                        Catch::Contains("<img id=\"frames\""));
   CHECK(html.find("<video") == std::string::npos);
 }
@@ -86,7 +88,7 @@ TEST_CASE("a run too long for the page's data budget is decimated, not refused",
   REQUIRE(run_vibra("render --size 160x90 --set dt=1e-4 --set T=100 --speed 50 --every 1000 -q -o " + (dir / "long.html"))
               .exit_code == 0);
   CHECK(fs::file_size(dir / "long.html") < 2'000'000);
-  CHECK(lines(read_file(dir / "long.csv")) == 1 + 1001);
+  CHECK(lines(read_file(dir / "long_files/long.csv")) == 1 + 1001);
   // 1e7 steps in a figure page.
   REQUIRE(run_vibra("plot undamped --set dt=1e-3 --set T=1e4 -o " + (dir / "figure.html")).exit_code == 0);
   CHECK(fs::file_size(dir / "figure.html") < 2'000'000);
@@ -96,22 +98,22 @@ TEST_CASE("a run too long for the page's data budget is decimated, not refused",
 }
 
 TEST_CASE("pages refuse what they cannot write, leaving nothing behind", "[page]") {
-  check_refused("render" + kShort + "-o OUT/missing/lecture.html", "does not exist");
   check_refused("render" + kShort + "--every 0 -o OUT.html", "--every must be at least 1");
   check_refused("render" + kShort + "--every 5 -o OUT.mp4", "--every thins the CSV beside a page");
   check_refused("plot pendulum --panels theta,phase -o OUT.html", "panel 'phase' is not against t");
   check_refused("plot pendulum --size 800x600 -o OUT.html", "drop --size");
-  check_refused("plot pendulum -o OUT/missing/figure.html", "does not exist");
+  check_refused("plot pendulum -o /proc/version/figure.html", "not a directory");
 
-  // The page's video name is taken by a directory: nothing of the page is left.
+  // The companions' folder name is taken by a file of the user's: nothing of the page is left.
   ScratchDirectory dir;
-  fs::create_directory(dir.path / "lecture.mp4");
+  std::ofstream(dir.path / "lecture_files") << "mine";
   const auto r = run_vibra("render" + kShort + "-o " + (dir / "lecture.html"));
   CHECK(r.exit_code == 2);
-  const std::string taken = dir / "lecture.mp4";
-  CHECK_THAT(r.err, Catch::Contains(taken) && Catch::Contains("is a directory"));
+  const std::string taken = dir / "lecture_files";
+  CHECK_THAT(r.err, Catch::Contains(taken) && Catch::Contains("was not written by vibra") && Catch::Contains("--force"));
   CHECK(lines(r.err) == 1);
   int entries = 0;
   for (const auto& entry : fs::directory_iterator(dir.path)) ++entries, (void)entry;
-  CHECK(entries == 1);  // only the directory that was there
+  CHECK(entries == 1);  // only the file that was there
+  CHECK(read_file(dir.path / "lecture_files") == "mine");
 }

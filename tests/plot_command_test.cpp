@@ -96,7 +96,7 @@ TEST_CASE("vibra plot refuses bad input with one line, exit code 2 and no file",
       {"plot undamped -o OUT.jpg", ".png, .svg or .pdf"},
       {"plot undamped", "needs an output file"},
       {"plot undamped --size 10x0 -o OUT.png", "WxH"},
-      {"plot undamped -o OUT/missing/u.png", "does not exist"},
+      {"plot undamped -o /proc/version/u.png", "not a directory"},
       {"plot undamped --set T=inf -o OUT.png", "finite end time"},
   };
   for (const auto& [args, expected] : cases) vibra::test::check_refused(args, expected);

@@ -198,19 +198,27 @@ TEST_CASE("png sequence: identical bytes for any thread count", "[png]") {
   }
 }
 
-TEST_CASE("png sequence: an unfinished writer removes the frames it wrote", "[png]") {
+TEST_CASE("png sequence: an unfinished writer removes the frames it wrote, and leaves earlier ones", "[png]") {
   ScratchDirectory dir;
   std::ofstream(dir / "f_009.png") << "an earlier run's frame";  // not this run's: stays
+  std::ofstream(dir / "f_000.png") << "an earlier run's frame 0";  // replaced only by a finished run
+  auto files = [&] {
+    size_t n = 0;
+    for (const auto& e : fs::recursive_directory_iterator(dir.path)) n += e.is_regular_file();
+    return n;
+  };
   {
     PngSequenceWriter writer(parse_frame_pattern(dir / "f_%03d.png", 10), 24, 16, 2);
     for (int k = 0; k < 4; ++k) writer.write(opaque_frame(24, 16, k).bytes(), 24 * 4);
     // Let at least one frame reach the disk, so the cleanup has work to do.
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(2);
-    while (!fs::exists(dir / "f_000.png") && std::chrono::steady_clock::now() < give_up)
+    while (files() == 2 && std::chrono::steady_clock::now() < give_up)
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    REQUIRE(fs::exists(dir / "f_000.png"));
+    REQUIRE(files() > 2);
+    CHECK(vibra::test::read_file(dir.path / "f_000.png") == "an earlier run's frame 0");
   }
-  CHECK(file_names(dir.path) == std::set<std::string>{"f_009.png"});
+  CHECK(file_names(dir.path) == std::set<std::string>{"f_000.png", "f_009.png"});
+  CHECK(vibra::test::read_file(dir.path / "f_000.png") == "an earlier run's frame 0");
 }
 
 TEST_CASE("png sequence: a write failure surfaces as OutputError and nothing remains", "[png]") {

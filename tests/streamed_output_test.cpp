@@ -88,6 +88,6 @@ TEST_CASE("a full disk behind standard output is a one-line error", "[stream][re
 TEST_CASE("standard output needs a stream format, and --format needs standard output", "[stream][cli]") {
   vibra::test::check_refused("render -o -", "add --format y4m");
   vibra::test::check_refused("render -o - --format webm", "--format webm is not a stream format");
-  vibra::test::check_refused("render --format y4m -o OUT.mp4", "--format is for -o -");
+  vibra::test::check_refused("render --format y4m -o OUT.mp4", "--format is for a stream (-o -, a pipe or a device)");
   vibra::test::check_refused("render -o - --format y4m --at 1", "--at renders one still");
 }

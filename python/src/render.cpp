@@ -5,6 +5,7 @@
 
 #include "bindings.hpp"
 #include "core/error.hpp"
+#include "core/input_files.hpp"
 #include "render/stop_signal.hpp"
 #include "scenes/render_job.hpp"
 
@@ -14,6 +15,7 @@ namespace {
 void render(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& settings,
             const std::string& output, std::optional<double> at, bool frame_per_step, bool frames_player,
             const render::VideoSettings& video, bool quiet) {
+  forget_input_files();  // each call is a run of its own
   scenes::RenderRequest request;
   request.scene = scenes::load_scene(scene);
   for (const auto& [key, value] : settings) scenes::apply_setting(request.scene, {key, value, "vibra.render"});

@@ -85,8 +85,8 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
     """Renders a scene as `vibra render` does: a video (out="name.mp4", .webm,
     .mkv, .ogv or .gif; default SCENE.mp4), or with at=T one still (out=
     "name.png", .svg or .pdf; default SCENE.png). PNG frame patterns
-    ("frames/tmp_%04d.png") and pages ("page.html") are written too and
-    returned as a Path. Other keywords are scene keys (size=(1280, 720) or
+    ("frames/tmp_%04d.png") and pages ("page.html", with their videos and
+    CSV in page_files/) are written too and returned as a Path. Other keywords are scene keys (size=(1280, 720) or
     "1280x720", fps, layout="fbd", speed, window="8periods", ...) or keys of
     the scene's model (Theta=40, alpha=0.8, T=20). compare={"scheme": ["forward-euler",
     "rk4"]} (or "scheme=forward-euler,rk4") draws one run per value together, as

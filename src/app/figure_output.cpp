@@ -1,7 +1,8 @@
 #include <filesystem>
 
 #include "app/experiments.hpp"
-#include "render/temporary_file.hpp"
+#include "render/figure.hpp"
+#include "render/output_path.hpp"
 #include "scenes/scene_config.hpp"
 
 namespace vibra::app {
@@ -11,8 +12,7 @@ void check_figure_output(const std::string& figure, const std::string& size) {
   scenes::parse_size(size, width, height);
   if (figure.empty()) return;
   render::require_picture_extension(figure);
-  const std::filesystem::path directory = std::filesystem::path(figure).parent_path();
-  render::require_writable_directory(directory.empty() ? "." : directory);
+  render::resolve_output(figure);  // before the experiment: a folder there, a file in the way
 }
 
 void write_figure(const ExperimentResult& result, const std::string& figure, const std::string& size) {

@@ -2,14 +2,16 @@
 
 #include <cstdio>
 
+#include "cli/commands.hpp"
 #include "cli/wrote_message.hpp"
+#include "render/output_path.hpp"
 #include "render/standard_output.hpp"
 
 namespace vibra::cli {
 
 void add_output_options(CLI::App& cmd, AnalysisOutput& o) {
   cmd.add_flag("--csv", o.csv, "Print the table as CSV");
-  cmd.add_option("-o,--output", o.figure, "Also draw the figure: FILE.png, FILE.svg or FILE.pdf");
+  add_output_option(cmd, o.figure, "Also draw the figure: FILE.png, FILE.svg or FILE.pdf");
   cmd.add_option("--size", o.size, "Figure size WxH in pixels")->capture_default_str();
   cmd.add_flag("-q,--quiet", o.quiet, "No message on stderr after writing the figure");
 }
@@ -34,7 +36,7 @@ void show(const AnalysisOutput& o, const app::ExperimentResult& result) {
   render::print_standard_output(text);  // a failure stops here, before the figure
   if (!result.conclusion.empty() && o.csv && !o.quiet) std::fprintf(stderr, "vibra: %s\n", result.conclusion.c_str());
   app::write_figure(result, o.figure, o.size);
-  if (!o.figure.empty()) say_wrote(o.quiet, o.figure);
+  if (!o.figure.empty()) say_wrote(o.quiet, render::resolve_output(o.figure).shown());
 }
 
 }  // namespace vibra::cli

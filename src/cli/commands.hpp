@@ -12,4 +12,8 @@ void add_plot_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
 void add_concat_command(CLI::App& app);
 
+/// Adds -o/--output to a command: every command's output path is given the
+/// same way, and an empty one (-o '') names no file, so it is refused.
+CLI::Option* add_output_option(CLI::App& cmd, std::string& path, const std::string& help);
+
 }  // namespace vibra::cli

@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/wrote_message.hpp"
 #include "core/error.hpp"
+#include "render/output_path.hpp"
 #include "render/video_concat.hpp"
 
 namespace vibra::cli {
@@ -23,7 +24,7 @@ void run(const ConcatOptions& o) {
   if (o.output.empty()) throw UsageError("vibra concat needs an output: add -o OUT.mp4 (or .mkv, .webm)");
   const std::vector<std::filesystem::path> parts(o.parts.begin(), o.parts.end());
   const render::ConcatSummary joined = render::concat_segments(parts, o.output);
-  say_wrote(o.quiet, o.output + " (" + std::to_string(joined.frames) + " frames from " +
+  say_wrote(o.quiet, render::resolve_output(o.output).shown() + " (" + std::to_string(joined.frames) + " frames from " +
                          std::to_string(joined.parts) + " segments, no re-encoding)");
 }
 }  // namespace
@@ -33,7 +34,7 @@ void add_concat_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "concat", "Join the segment videos of one render (vibra render --segment) by copying, without re-encoding");
   cmd->add_option("PART", o->parts, "Segment videos, in any order: every segment of the render, once")->required();
-  cmd->add_option("-o,--output", o->output, "The joined video (.mp4, .mkv or .webm, as the parts)")->required();
+  add_output_option(*cmd, o->output, "The joined video (.mp4, .mkv or .webm, as the parts)")->required();
   cmd->add_flag("-q,--quiet", o->quiet, "No message");
   cmd->footer(
       "\nEach part must be a segment of the same render (same scene, parameters and video options). The parts'\n"

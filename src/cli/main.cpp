@@ -13,6 +13,16 @@
 #include "render/standard_output.hpp"
 #include "render/stop_signal.hpp"
 
+namespace vibra::cli {
+CLI::Option* add_output_option(CLI::App& cmd, std::string& path, const std::string& help) {
+  return cmd.add_option("-o,--output", path, help)->check(CLI::Validator(
+      [](const std::string& value) {
+        return value.empty() ? std::string("the output path is empty: give a file name, e.g. -o out.mp4") : std::string();
+      },
+      "PATH"));
+}
+}  // namespace vibra::cli
+
 namespace {
 /// main has put its one line on stderr and chosen the exit code: the check at
 /// exit adds no second line.
@@ -28,7 +38,8 @@ int report(int code) {
 void check_standard_output() {
   const int error = vibra::render::close_standard_output();
   if (error == 0 || error == EPIPE || reported) return;  // EPIPE: the reader has gone, a pipeline's normal end
-  std::fprintf(stderr, "vibra: error: writing standard output: %s\n", std::strerror(error));
+  std::fprintf(stderr, "vibra: error: writing %s: %s\n", vibra::render::standard_output_name().c_str(),
+               std::strerror(error));
   std::_Exit(2);
 }
 

@@ -14,7 +14,7 @@
 #include "scenes/comparison_labels.hpp"
 #include "render/html_page.hpp"
 #include "render/stop_signal.hpp"
-#include "render/temporary_file.hpp"
+#include "render/output_path.hpp"
 #include "scenes/page_plot_collector.hpp"
 #include "scenes/run_caption.hpp"
 #include "scenes/scene_config.hpp"
@@ -80,7 +80,7 @@ render::Figure trajectory_plot(const PlotOptions& o, const Parameters& parameter
 }
 
 /// FIGURE.html: the run's time series as a page of linked, zoomable plots.
-void write_figure_page(const PlotOptions& o) {
+void write_figure_page(const PlotOptions& o, const std::filesystem::path& file) {
   if (!o.size.empty())
     throw UsageError("--size sets a picture's size, and a page's plots fit the browser window: drop --size");
   const Parameters parameters = model_settings(o.model, o.settings);
@@ -89,7 +89,6 @@ void write_figure_page(const PlotOptions& o) {
   const std::vector<std::string> panels =
       o.panels.empty() ? scenes::page_panel_names(info) : app::word_list("--panels", o.panels);
   scenes::PagePlotCollector collector(info, panels, o.model);
-  render::require_writable_directory(std::filesystem::absolute(o.output).parent_path());
   std::vector<double> row(trajectory->width());
   do {
     trajectory->row(row);
@@ -101,7 +100,7 @@ void write_figure_page(const PlotOptions& o) {
   page.panels = collector.take_panels();
   page.facts = scenes::run_facts(o.model, parameters, info.mesh);
   page.command_line = command_line();
-  render::write_text_file(o.output, render::lecture_page_html(page));
+  render::write_text_file(file, render::lecture_page_html(page));
 }
 
 void run_plot(const PlotOptions& o) {
@@ -112,18 +111,20 @@ void run_plot(const PlotOptions& o) {
   }
   if (o.output.empty())
     throw UsageError("vibra plot needs an output file: add -o FILE.png, FILE.svg, FILE.pdf or FILE.html");
-  if (std::filesystem::path(o.output).extension() == ".html") {
-    if (o.transparent)
-      throw UsageError("--transparent is for pictures; a page has no background to drop: give -o FILE.png, .svg or .pdf");
-    write_figure_page(o);
+  const bool page = std::filesystem::path(o.output).extension() == ".html";
+  if (page && o.transparent)
+    throw UsageError("--transparent is for pictures; a page has no background to drop: give -o FILE.png, .svg or .pdf");
+  if (!page) render::require_picture_extension(o.output);
+  const render::OutputTarget target = render::resolve_output(o.output);
+  if (page) {
+    write_figure_page(o, target.file);
   } else {
-    render::require_picture_extension(o.output);
     const Parameters parameters = model_settings(o.model, o.settings);
     render::Figure figure = o.compare.empty() ? trajectory_plot(o, parameters) : comparison_plot(o, parameters);
     figure.set_transparent(o.transparent);
-    figure.write(o.output);
+    figure.write(target.file);
   }
-  say_wrote(o.quiet, o.output);
+  say_wrote(o.quiet, target.shown());
 }
 }  // namespace
 
@@ -136,7 +137,7 @@ void add_plot_command(CLI::App& app) {
   cmd->add_option("MODEL", o->model, "Model name (vibra solve --help lists them)");
   cmd->add_option("--set", o->settings, "KEY=VALUE, repeatable (vibra plot MODEL --help lists keys)")
       ->allow_extra_args(false);
-  cmd->add_option("-o,--output", o->output, "Picture file: .png, .svg or .pdf; or .html for zoomable plots");
+  add_output_option(*cmd, o->output, "Picture file: .png, .svg or .pdf; or .html for zoomable plots");
   cmd->add_option("--panels", o->panels, "Comma-separated panels, e.g. theta,S,D or u,exact or path");
   cmd->add_option("--compare", o->compare, "KEY=V1,V2,...: one run per value of KEY, drawn together (up to 8)")
       ->allow_extra_args(false);

@@ -32,6 +32,7 @@ struct RenderOptions {
   std::optional<std::string> at;  ///< a time: a number or an expression, as --set values take
   std::string segment;
   bool skip_existing = false;
+  bool force = false;
   bool quiet = false;
   render::VideoSettings video;
 };
@@ -110,6 +111,7 @@ void run(const RenderOptions& o) {
   request.video = o.video;
   if (!o.segment.empty()) request.segment = parse_segment_option(o.segment, [](const char* name) { return std::getenv(name); });
   request.skip_existing = o.skip_existing;
+  request.force = o.force;
   scenes::run_render(request);  // -o -: a failed write ends it with StandardOutputFailed, for main to handle
 }
 }  // namespace
@@ -119,10 +121,11 @@ void add_render_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Draw a scene's frames: video, PNG frames, or one still");
   cmd->add_option("SCENE", o->scene, "Built-in scene name or a TOML scene file")->capture_default_str();
   cmd->add_option("--set", o->settings, "KEY=VALUE: a scene key or a model key, repeatable");
-  cmd->add_option("-o,--output", o->output,
-                  "OUT.mp4|.webm|.mkv|.mov|.ogv|.gif|.yuv|.nut, PAGE.html (MP4 + WebM + CSV + an interactive page), "
-                  "frames/tmp_%04d.png or a directory (created if missing), - for standard output (with --format), or a "
-                  "still .png/.svg/.pdf with --at (default: SCENE.mp4)");
+  add_output_option(*cmd, o->output,
+                    "OUT.mp4|.webm|.mkv|.mov|.ogv|.gif|.yuv|.nut, PAGE.html (an interactive page, its MP4, WebM and CSV "
+                    "in PAGE_files/), frames/tmp_%04d.png or a directory, - for standard output or a pipe or device "
+                    "(with --format), or a still .png/.svg/.pdf with --at (default: SCENE.mp4); missing folders are "
+                    "made");
   cmd->add_option("--size", o->size, "Frame size WxH, e.g. 1920x1080");
   cmd->add_option("--fps", o->fps, "Frames per second");
   cmd->add_option("--speed", o->speed, "Simulated time units per second of video");
@@ -156,8 +159,11 @@ void add_render_command(CLI::App& app) {
                   "numbers (PNG); auto: K and N of a Slurm job array; auto/N: K from JOB_COMPLETION_INDEX");
   cmd->add_flag("--skip-existing", o->skip_existing,
                 "Do nothing when the output (or this segment) is already complete at its final path");
+  cmd->add_flag("--force", o->force,
+                "Replace a page's PAGE_files/ folder, or a segment's file, that vibra did not write for this output");
   cmd->add_option("--format", o->video.format,
-                  "With -o - (standard output): y4m (raw frames, for ffplay -), nut or matroska (H.264)");
+                  "With -o - (standard output), a pipe or a device: y4m (raw frames, for ffplay -), nut or matroska "
+                  "(H.264)");
   cmd->add_flag("--transparent", o->video.transparent,
                 "No background: PNG with alpha, .webm (VP9 with alpha), .mov (ProRes 4444), SVG/PDF without the "
                 "background rectangle");

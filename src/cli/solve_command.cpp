@@ -9,6 +9,7 @@
 #include "core/csv_writer.hpp"
 #include "core/error.hpp"
 #include "render/output_error.hpp"
+#include "render/output_path.hpp"
 #include "render/standard_output.hpp"
 #include "render/stop_signal.hpp"
 #include "render/temporary_file.hpp"
@@ -40,10 +41,15 @@ void run_solve(const SolveOptions& o) {
   std::vector<std::string> columns = info.columns;
   if (o.energy) columns.insert(columns.end(), {"E", "E_rel"});
 
+  // Standard output, a pipe or a device takes the CSV as a stream; a file
+  // (or a link's target) gets it through a temporary.
+  const render::OutputTarget target = render::resolve_output(o.output.empty() ? "-" : o.output, "");
   std::optional<render::TemporaryFile> file;
   std::FILE* out = stdout;
-  if (!o.output.empty() && o.output != "-") {
-    file.emplace(o.output);
+  if (target.stream) {
+    render::send_standard_output_to(target);
+  } else {
+    file.emplace(target.file);
     out = std::fopen(file->path().c_str(), "wb");
     if (!out) throw render::OutputError("cannot write '" + o.output + "': choose a writable path");
   }
@@ -79,7 +85,7 @@ void run_solve(const SolveOptions& o) {
         throw render::OutputError("writing '" + o.output + "' failed (disk full?): free space or choose another path");
       out = stdout;
       file->commit();
-      say_wrote(o.quiet, o.output);
+      say_wrote(o.quiet, target.shown());
     }
   } catch (...) {
     close();
@@ -96,7 +102,7 @@ void add_solve_command(CLI::App& app) {
   cmd->add_option("MODEL", options->model, "Model name (vibra solve --help lists them)");
   cmd->add_option("--set", options->settings, "KEY=VALUE, repeatable (vibra solve MODEL --help lists keys)")
       ->allow_extra_args(false);
-  cmd->add_option("-o,--output", options->output, "CSV file (default: standard output)");
+  add_output_option(*cmd, options->output, "CSV file, or a pipe or device (default: standard output)");
   cmd->add_option("--every", options->every, "Write every K-th step (the last step is always written)");
   cmd->add_flag("--energy", options->energy,
                 "Append the energy E (scheme's own velocity) and E_rel = (E - E(0))/|E(0)|");

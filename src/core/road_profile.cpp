@@ -7,6 +7,7 @@
 #include <random>
 
 #include "core/error.hpp"
+#include "core/input_files.hpp"
 
 namespace vibra {
 
@@ -33,6 +34,7 @@ double RoadProfile::curvature(double x) const { return interpolate(q_, x); }
 RoadProfile RoadProfile::from_file(const std::string& path, double dx) {
   std::ifstream in(path);
   if (!in) throw UsageError("cannot read the road file '" + path + "': give a file of heights, one per line");
+  note_input_file(path, "the road profile (--set road)");
   std::vector<double> heights;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {

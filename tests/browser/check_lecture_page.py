@@ -4,9 +4,10 @@
 Drives Chromium through its DevTools protocol over --remote-debugging-pipe
 (standard library only). Renders a small pendulum page into a directory
 whose name has a space and non-ASCII letters, then checks: the video loads
-(readyState, duration = frames / fps; which source played is reported),
-ArrowRight while paused advances currentTime by 1 / fps and shows that
-frame, clicking or dragging in a plot seeks there, the speed selector sets
+(readyState, duration = frames / fps; which source played is reported)
+from the page's folder PAGE_files/, ArrowRight while paused advances
+currentTime by 1 / fps and shows that frame, clicking or dragging in a
+plot seeks there, the speed selector sets
 the rate, the plots' cursor moves while playing, the wheel zooms all
 time axes together and a double-click resets them; a figure page's legend
 hides a curve; a frames-player page steps with the same keys; no console
@@ -27,6 +28,7 @@ import tempfile
 import threading
 import time
 from pathlib import Path
+from urllib.parse import unquote
 
 SKIP = 77
 failures = []
@@ -211,6 +213,8 @@ def check_lecture(browser, page, T, fps, frames, screenshot):
     source = browser.js("document.getElementById('video').currentSrc")
     h264 = browser.js("document.getElementById('video').canPlayType('video/mp4; codecs=avc1.4d401e')")
     print(f"      the source that plays: {source.rsplit('/', 1)[-1]} (this Chromium's H.264 support: '{h264 or 'none'}')")
+    check(unquote(source).endswith(f"/{page.stem}_files/{page.stem}" + source[source.rfind("."):]),
+          "the video comes from the page's own folder, PAGE_files/")
     # Without H.264 (a Chromium built without proprietary codecs) the WebM must be the one that plays.
     check(source.endswith(".mp4") if h264 else source.endswith(".webm"),
           "the browser plays the first source it can: " + ("MP4" if h264 else "WebM, as it has no H.264"))
@@ -324,7 +328,7 @@ def check_frames_player(browser, page, fps):
           "the frames player shows frame 0")
     browser.key("ArrowRight", "ArrowRight", 39)
     src = browser.js("document.getElementById('frames').src")
-    check(src.endswith("frame_0001.png") and abs(browser.js("vibraPage.media.time") - 1 / fps) < 1e-9,
+    check(src.endswith("player_files/frame_0001.png") and abs(browser.js("vibraPage.media.time") - 1 / fps) < 1e-9,
           "ArrowRight steps the frames player one frame: " + src.rsplit("/", 1)[-1])
 
 
@@ -347,7 +351,7 @@ def main():
         page = directory / "Pendel ø.html"
         fps, frames = 30, 31  # periods=0.5: T = pi, speed = a period in 2 s, so 31 frames
         run([vibra, "render", "--size", "480x270", "--set", "periods=0.5", "--every", "2", "-q", "-o", str(page)])
-        rows = list(csv.reader(open(page.with_suffix(".csv"))))
+        rows = list(csv.reader(open(page.parent / (page.stem + "_files") / (page.stem + ".csv"))))
         T = float(rows[-1][0])
         run([vibra, "plot", "undamped", "--panels", "u,exact", "--set", "periods=3", "-o", str(directory / "figure.html")])
         run([vibra, "render", "--size", "320x180", "--set", "periods=0.5", "--frames-player", "-q",

@@ -1,0 +1,27 @@
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace vibra {
+
+/// The files a run reads (a scene file, a road profile, the parts vibra
+/// concat joins), noted as they are opened, so that no output of the same run
+/// is written over one of them (render/output_path.hpp asks input_at).
+struct InputFile {
+  std::filesystem::path path;  ///< as the user named it
+  std::string role;            ///< what it is, for messages: "the road profile (--set road)"
+};
+
+/// Notes that this run reads `path`. A path that cannot be found is ignored.
+void note_input_file(const std::filesystem::path& path, std::string role);
+
+/// The input that `output` is (the same file, also through links or another
+/// spelling), if any.
+std::optional<InputFile> input_at(const std::filesystem::path& output);
+
+/// Forgets every input: a process that runs several commands (the Python
+/// module) starts each afresh.
+void forget_input_files();
+
+}  // namespace vibra
