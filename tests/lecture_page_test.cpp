@@ -38,8 +38,8 @@ TEST_CASE("a lecture page: video sources, plots' data, each fact once, the comma
   for (const char* file : {"Pendel #1 ø.mp4", "Pendel #1 ø.webm", "Pendel #1 ø.csv"}) CHECK(fs::exists(page.parent_path() / file));
 
   // Links percent-encoded, MP4 first, then WebM; downloads of both videos and the CSV.
-  CHECK(html.find("<source src=\"Pendel%20%231%20%C3%B8.mp4\" type=\"video/mp4\">") <
-        html.find("<source src=\"Pendel%20%231%20%C3%B8.webm\" type=\"video/webm\">"));
+  vibra::test::check_in_order(html, {"<source src=\"Pendel%20%231%20%C3%B8.mp4\" type=\"video/mp4\">",
+                                     "<source src=\"Pendel%20%231%20%C3%B8.webm\" type=\"video/webm\">"});
   CHECK_THAT(html, Catch::Contains("<a href=\"Pendel%20%231%20%C3%B8.csv\" download>CSV of the run</a>"));
   CHECK_THAT(html, Catch::Contains("<a href=\"Pendel%20%231%20%C3%B8.mp4\" download>MP4 video</a>"));
   CHECK_THAT(html, Catch::Contains("<a href=\"Pendel%20%231%20%C3%B8.webm\" download>WebM video</a>"));
