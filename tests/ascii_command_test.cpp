@@ -1,5 +1,6 @@
 // `vibra ascii` end to end: the classic plotter's lines, character for character.
 #include <catch2/catch.hpp>
+#include <sstream>
 
 #include "cli_support.hpp"
 
@@ -42,8 +43,18 @@ TEST_CASE("ascii: several series with a legend, default range from the amplitude
   const auto r = run_vibra("ascii pendulum --columns theta,S,D --set periods=1 --width 40");
   REQUIRE(r.exit_code == 0);
   CHECK(r.out.substr(0, r.out.find('\n')) == "* theta   o S   + D");
-  const auto second = r.out.substr(r.out.find('\n') + 1);
-  CHECK(second.substr(0, second.find('\n')).size() >= 41);
+  // Every line after the legend: width + 1 = 41 columns, a space and the
+  // counter t/P with one decimal (0.0 to 1.0 over one period).
+  std::istringstream lines(r.out.substr(r.out.find('\n') + 1));
+  int count = 0;
+  for (std::string line; std::getline(lines, line); ++count) {
+    INFO("line " << count << ": '" << line << "'");
+    REQUIRE(line.size() == 41 + 1 + 3);
+    CHECK(line[41] == ' ');
+    CHECK(line.substr(42, 1) <= "1");
+    CHECK(line[43] == '.');
+  }
+  CHECK(count == 61);  // one line per step: t = 0 and the 60 steps of the period
 }
 
 TEST_CASE("ascii: the default range holds every column shown, not just the first", "[ascii-command]") {

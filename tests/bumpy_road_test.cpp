@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "cli_support.hpp"
 #include "core/error.hpp"
 #include "core/road_profile.hpp"
 #include "test_support.hpp"
@@ -15,8 +16,11 @@ using vibra::test::str;
 using vibra::test::trajectory;
 
 namespace {
+/// Writes a road file into a scratch directory of this test process's own
+/// (removed at exit), never to a fixed name that another suite might share.
 std::filesystem::path write_road(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / name;
+  static const vibra::test::ScratchDirectory dir;
+  const std::filesystem::path path = dir / name;
   std::ofstream(path) << text;
   return path;
 }

@@ -10,7 +10,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
+#include <cstdint>
+#include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vibra::test {
@@ -125,17 +129,23 @@ inline CommandResult read_then_close(const std::vector<std::string>& args, std::
   return result;
 }
 
-/// A fresh empty directory under /tmp, removed by the destructor.
+/// A fresh empty directory of its own under the temporary directory
+/// (mkdtemp: no other process, suite or test case gets the same one), removed
+/// with its contents by the destructor. Every file a test writes goes into
+/// one, never to a fixed name in /tmp, so that two suites can run at once.
 struct ScratchDirectory {
   std::filesystem::path path;
   ScratchDirectory() {
-    static int counter = 0;
-    path = std::filesystem::temp_directory_path() /
-           ("vibra_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directories(path);
+    std::string name = (std::filesystem::temp_directory_path() / "vibra_test_XXXXXX").string();
+    if (!::mkdtemp(name.data())) throw std::runtime_error("cannot create a scratch directory in " + name);
+    path = name;
   }
-  ~ScratchDirectory() { std::filesystem::remove_all(path); }
+  ScratchDirectory(ScratchDirectory&& other) noexcept : path(std::move(other.path)) { other.path.clear(); }
+  ScratchDirectory& operator=(ScratchDirectory&&) = delete;
+  ~ScratchDirectory() {
+    std::error_code ignored;
+    if (!path.empty()) std::filesystem::remove_all(path, ignored);
+  }
   std::string operator/(const std::string& name) const { return (path / name).string(); }
   bool empty() const { return std::filesystem::is_empty(path); }
 };
@@ -166,6 +176,57 @@ inline std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
     if (!line.empty() && line.back() == ',') rows.back().push_back("");
   }
   return rows;
+}
+
+/// Checks that each of `parts` occurs in `text` and that their first
+/// occurrences come in the given order (a missing part fails, where comparing
+/// two find() results would pass with npos on the right).
+inline void check_in_order(const std::string& text, const std::vector<std::string>& parts) {
+  std::size_t previous = 0;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const std::size_t at = text.find(parts[i]);
+    INFO("'" << parts[i] << "'");
+    REQUIRE(at != std::string::npos);
+    if (i) CHECK(at > previous);
+    previous = at;
+  }
+}
+
+/// The types of an MP4 (ISO BMFF) file's top-level boxes, in file order.
+inline std::vector<std::string> mp4_top_level_boxes(const std::string& bytes) {
+  std::vector<std::string> boxes;
+  std::uint64_t at = 0;
+  while (at + 8 <= bytes.size()) {
+    auto byte = [&](std::uint64_t i) { return std::uint64_t(static_cast<unsigned char>(bytes[i])); };
+    std::uint64_t size = byte(at) << 24 | byte(at + 1) << 16 | byte(at + 2) << 8 | byte(at + 3);
+    boxes.push_back(bytes.substr(at + 4, 4));
+    if (size == 1 && at + 16 <= bytes.size()) {  // a 64-bit size follows the type
+      size = 0;
+      for (std::uint64_t k = 8; k < 16; ++k) size = size << 8 | byte(at + k);
+    }
+    if (size < 8) break;  // 0: to the end of the file
+    at += size;
+  }
+  return boxes;
+}
+
+/// A PNG file's width and height from its IHDR chunk ({0, 0} if it is not a PNG).
+inline std::pair<int, int> png_size(const std::filesystem::path& path) {
+  const std::string bytes = read_file(path);
+  if (bytes.size() < 24 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0 || bytes.compare(12, 4, "IHDR") != 0) return {0, 0};
+  auto be32 = [&](std::size_t i) {
+    return int(static_cast<unsigned char>(bytes[i])) << 24 | int(static_cast<unsigned char>(bytes[i + 1])) << 16 |
+           int(static_cast<unsigned char>(bytes[i + 2])) << 8 | int(static_cast<unsigned char>(bytes[i + 3]));
+  };
+  return {be32(16), be32(20)};
+}
+
+/// Whether this run is CI's (CI=true): a test that needs a tool (Chromium,
+/// Slurm, GNU parallel, root, huge pages) must then fail when it is missing,
+/// saying what to install, instead of skipping as on a developer's machine.
+inline bool in_ci() {
+  const char* ci = std::getenv("CI");
+  return ci && std::string(ci) == "true";
 }
 
 }  // namespace vibra::test

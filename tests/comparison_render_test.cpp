@@ -6,6 +6,7 @@
 #include <cairo.h>
 
 #include <cmath>
+#include <iterator>
 #include <fstream>
 #include <map>
 #include <set>
@@ -19,6 +20,7 @@
 #include "scenes/scene_config.hpp"
 #include "scenes/scene_factory.hpp"
 #include "scenes/system_scene.hpp"
+#include "test_support.hpp"
 
 using namespace vibra;
 using test::check_refused;
@@ -77,8 +79,16 @@ TEST_CASE("a comparison's rows hold every member exactly at its own samples, on 
       if (own != alone[i].end()) {  // its own sample: exactly its numbers
         CHECK(row[runs.offset(i)] == own->second[1]);
         CHECK(row[runs.offset(i) + 1] == own->second[2]);
-      } else {  // between its samples: its interpolation, close to the solution
-        CHECK(std::abs(row[runs.offset(i)] - runs.info().exact(row[0])) < 0.05);
+      } else {  // between its samples: the quintic through its two neighbours, to rounding
+        const auto after = alone[i].upper_bound(row[0]);
+        REQUIRE(after != alone[i].begin());
+        REQUIRE(after != alone[i].end());
+        const auto before = std::prev(after);
+        // u'' = -u (w = 1) at both ends.
+        const auto [u, v] = test::quintic_between(before->second, -before->second[1], after->second,
+                                                  -after->second[1], row[0]);
+        CHECK(row[runs.offset(i)] == Approx(u).margin(1e-12));
+        CHECK(row[runs.offset(i) + 1] == Approx(v).margin(1e-12));
       }
     }
   } while (runs.advance());

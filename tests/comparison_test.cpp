@@ -6,6 +6,7 @@
 
 #include "core/comparison.hpp"
 #include "core/error.hpp"
+#include "test_support.hpp"
 
 using namespace vibra;
 
@@ -71,6 +72,17 @@ TEST_CASE("members advance in lock step, each with its own dt", "[comparison]") 
     c.row_at(m, 0.5, row);
     CHECK(row[0] == 0.5);
     CHECK(row[1] == Approx(std::cos(M_PI)).margin(3e-3));  // RK4's error at dt = 0.1 is 2e-3
+    // Exactly the member's own run, read between its samples by the quintic
+    // through them (computed here independently; u'' = -(2 pi)^2 u).
+    const double dt = c.trajectory(m).info().mesh.dt;
+    const auto own = vibra::test::rows(*vibra::test::trajectory("undamped", {"scheme=rk4", "T=1", "dt=" + vibra::test::str(dt)}));
+    size_t k = 0;
+    while (own[k + 1][0] < 0.5) ++k;
+    const double w2 = 4 * M_PI * M_PI;
+    const auto [u, v] = vibra::test::quintic_between(own[k], -w2 * own[k][1], own[k + 1], -w2 * own[k + 1][1], 0.5);
+    INFO("member dt = " << dt << ", between t = " << own[k][0] << " and " << own[k + 1][0]);
+    CHECK(row[1] == Approx(u).margin(1e-12));
+    CHECK(row[2] == Approx(v).margin(1e-11));
   }
   c.advance_to(10);  // past the end: every member stops at T
   for (size_t m = 0; m < 3; ++m) CHECK(c.trajectory(m).done());

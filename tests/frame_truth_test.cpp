@@ -4,8 +4,6 @@
 // bars and moving windows. Frames and stills go through the real command;
 // their pixels are compared by PSNR. What may differ is anti-aliasing where
 // a frame's layer drew a curve in pieces (docs/render.md).
-#include <cairo.h>
-
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -14,37 +12,14 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "png_compare.hpp"
 
+using vibra::test::psnr;
 using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;
 namespace fs = std::filesystem;
 
 namespace {
-
-/// Peak signal-to-noise ratio of two PNG files' colour channels, in dB
-/// (infinite when identical); -1 when they cannot be read or differ in size.
-double psnr(const std::string& a, const std::string& b) {
-  cairo_surface_t* x = cairo_image_surface_create_from_png(a.c_str());
-  cairo_surface_t* y = cairo_image_surface_create_from_png(b.c_str());
-  double result = -1;
-  if (cairo_surface_status(x) == CAIRO_STATUS_SUCCESS && cairo_surface_status(y) == CAIRO_STATUS_SUCCESS &&
-      cairo_image_surface_get_width(x) == cairo_image_surface_get_width(y) &&
-      cairo_image_surface_get_height(x) == cairo_image_surface_get_height(y)) {
-    const int w = cairo_image_surface_get_width(x), h = cairo_image_surface_get_height(x);
-    double sum = 0;
-    for (int r = 0; r < h; ++r) {
-      const auto* p = cairo_image_surface_get_data(x) + r * cairo_image_surface_get_stride(x);
-      const auto* q = cairo_image_surface_get_data(y) + r * cairo_image_surface_get_stride(y);
-      for (int i = 0; i < 4 * w; ++i)
-        if (i % 4 != 3) sum += double(p[i] - q[i]) * (p[i] - q[i]);
-    }
-    const double mse = sum / (3.0 * w * h);
-    result = mse == 0 ? INFINITY : 10 * std::log10(255.0 * 255.0 / mse);
-  }
-  cairo_surface_destroy(x);
-  cairo_surface_destroy(y);
-  return result;
-}
 
 std::string exact(double t) {
   char text[40];

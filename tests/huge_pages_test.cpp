@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "cli_support.hpp"
 #include "render/huge_pages.hpp"
 
 using vibra::render::advise_huge_pages;
@@ -80,7 +81,12 @@ TEST_CASE("advise_huge_pages accepts ranges without a whole huge page", "[huge_p
 
 TEST_CASE("a frame-sized HugePageArray is advised for huge pages", "[huge_pages]") {
   if (!huge_pages_offered()) {
-    WARN("no transparent huge pages of 2 MiB for this process: nothing to check");
+    const char* what =
+        "no transparent huge pages of 2 MiB for this process: enable them with "
+        "`echo madvise > /sys/kernel/mm/transparent_hugepage/enabled` (as root)";
+    // A kernel setting, not a package scripts/setup could install: a machine
+    // without it (CI included) has nothing here to check.
+    WARN(what << ": nothing to check");
     return;
   }
   HugePageArray<std::uint8_t> pixels(4 * kHugePageBytes);

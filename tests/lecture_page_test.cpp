@@ -40,8 +40,8 @@ TEST_CASE("a lecture page: video sources, plots' data, each fact once, the comma
 
   // Links percent-encoded, MP4 first, then WebM; downloads of both videos and the CSV.
   const std::string folder = "Pendel%20%231%20%C3%B8_files/";
-  CHECK(html.find("<source src=\"" + folder + "Pendel%20%231%20%C3%B8.mp4\" type=\"video/mp4\">") <
-        html.find("<source src=\"" + folder + "Pendel%20%231%20%C3%B8.webm\" type=\"video/webm\">"));
+  vibra::test::check_in_order(html, {"<source src=\"" + folder + "Pendel%20%231%20%C3%B8.mp4\" type=\"video/mp4\">",
+                                     "<source src=\"" + folder + "Pendel%20%231%20%C3%B8.webm\" type=\"video/webm\">"});
   CHECK_THAT(html, Catch::Contains("<a href=\"" + folder + "Pendel%20%231%20%C3%B8.csv\" download>CSV of the run</a>"));
   CHECK_THAT(html, Catch::Contains("<a href=\"" + folder + "Pendel%20%231%20%C3%B8.mp4\" download>MP4 video</a>"));
   CHECK_THAT(html, Catch::Contains("<a href=\"" + folder + "Pendel%20%231%20%C3%B8.webm\" download>WebM video</a>"));

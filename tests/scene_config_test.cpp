@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "cli_support.hpp"
 #include "core/error.hpp"
 #include "scenes/scene_config.hpp"
 
@@ -9,15 +10,12 @@ using namespace vibra;
 using namespace vibra::scenes;
 
 namespace {
-std::string write_file(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / name;
-  std::ofstream(path, std::ios::binary) << text;
-  return path.string();
-}
-
 std::string load_error(const std::string& text) {
+  const vibra::test::ScratchDirectory dir;  // its own folder: suites may run at once
+  const std::string path = dir / "vibra_scene_test.toml";
+  std::ofstream(path, std::ios::binary) << text;
   try {
-    load_scene(write_file("vibra_scene_test.toml", text));
+    load_scene(path);
   } catch (const UsageError& e) {
     return e.what();
   }

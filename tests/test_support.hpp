@@ -1,5 +1,9 @@
 #pragma once
+#include <Eigen/Dense>
+#include <cmath>
+#include <cstdio>
 #include <memory>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -28,6 +32,39 @@ inline std::string str(double x) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", x);
   return buf;
+}
+
+/// u and v at time t between two samples {t, u, v, ...} of a scalar
+/// second-order ODE whose accelerations there are acc_a and acc_b, computed
+/// without core/hermite.hpp: the quintic matching u, u' = v and u'' at both
+/// ends, its six coefficients solved for. Its own error is O(dt^6) in u and
+/// O(dt^5) in v: a trajectory's rows between its samples must equal it to
+/// rounding, not merely come near the exact solution.
+inline std::pair<double, double> quintic_between(const std::vector<double>& a, double acc_a,
+                                                 const std::vector<double>& b, double acc_b, double t) {
+  const double h = b[0] - a[0], s = (t - a[0]) / h;
+  // p(s) = sum c_k s^k on [0, 1], with p' = h u' and p'' = h^2 u''.
+  Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> rhs;
+  for (int end = 0; end < 2; ++end) {
+    const double x = end;
+    for (int k = 0; k < 6; ++k) {
+      m(3 * end, k) = std::pow(x, k);
+      m(3 * end + 1, k) = k >= 1 ? k * std::pow(x, k - 1) : 0;
+      m(3 * end + 2, k) = k >= 2 ? k * (k - 1) * std::pow(x, k - 2) : 0;
+    }
+    const auto& sample = end ? b : a;
+    rhs(3 * end) = sample[1];
+    rhs(3 * end + 1) = h * sample[2];
+    rhs(3 * end + 2) = h * h * (end ? acc_b : acc_a);
+  }
+  const Eigen::Matrix<double, 6, 1> c = m.fullPivLu().solve(rhs);
+  double u = 0, du = 0;
+  for (int k = 0; k < 6; ++k) {
+    u += c(k) * std::pow(s, k);
+    if (k) du += k * c(k) * std::pow(s, k - 1);
+  }
+  return {u, du / h};
 }
 
 }  // namespace vibra::test

@@ -26,7 +26,9 @@ def test_a_video_decodes_and_plays_inline(in_tmp):
     assert os.fspath(video) == "pendulum.mp4" and (in_tmp / "pendulum.mp4").is_file()
     stream = probe(video)
     assert (stream["codec_name"], stream["width"], stream["height"]) == ("h264", 320, 180)
-    assert int(stream["nb_read_frames"]) >= 10
+    # The scene's dt is 2 pi/120, so T = 1 ends at 19 steps, t = 0.9948; at 10 fps and speed 1 the frames
+    # are t = 0, 0.1, ..., 0.9: exactly 10 (a frame at t = 1 would lie past the run).
+    assert int(stream["nb_read_frames"]) == 10
     html = video._repr_mimebundle_()["text/html"]
     assert html.startswith("<video") and "data:video/mp4;base64," in html
     embedded = html.split("base64,", 1)[1].split('"', 1)[0]

@@ -5,10 +5,10 @@
 #   tests/scale_out/parallel_segments_test.sh path/to/vibra
 set -euo pipefail
 VIBRA=$(realpath "$1")
-command -v parallel >/dev/null || { echo "SKIP: GNU parallel is not installed (scripts/setup installs it)"; exit 77; }
-WORK=$(mktemp -d /tmp/vibra_parallel.XXXXXX)
-trap 'rm -rf "$WORK"' EXIT
 source "$(dirname "$0")/common.sh"
+command -v parallel >/dev/null || missing "GNU parallel is not installed: install the Debian package parallel (scripts/setup does)"
+WORK=$(mktemp -d "${TMPDIR:-/tmp}/vibra_parallel.XXXXXX")
+trap 'rm -rf "$WORK"' EXIT
 
 "$VIBRA" render "${RENDER_ARGS[@]}" -q -o "$WORK/whole.mp4"
 mkdir "$WORK/parts"

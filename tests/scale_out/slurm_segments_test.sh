@@ -12,12 +12,13 @@
 #   tests/scale_out/slurm_segments_test.sh path/to/vibra
 set -euo pipefail
 VIBRA=$(realpath "$1")
+source "$(dirname "$0")/common.sh"
 for tool in munged slurmctld slurmd sbatch scontrol sinfo; do
   command -v "$tool" >/dev/null ||
-    { echo "SKIP: $tool is not installed (scripts/setup installs slurm-wlm and munge)"; exit 77; }
+    missing "$tool is not installed: install the Debian packages slurm-wlm and munge (scripts/setup does)"
 done
-[ "$(id -u)" -eq 0 ] || { echo "SKIP: starting slurmd needs root"; exit 77; }
-WORK=$(mktemp -d /tmp/vibra_slurm.XXXXXX)
+[ "$(id -u)" -eq 0 ] || missing "starting slurmd needs root: run the suite as root (CI does)"
+WORK=$(mktemp -d /tmp/vibra_slurm.XXXXXX)  # /tmp: munged's socket path must stay short
 chmod 711 "$WORK"  # munged wants its socket's directories searchable by all
 DAEMONS=()
 stop_daemons() {
@@ -32,7 +33,6 @@ stop_daemons() {
 }
 trap stop_daemons EXIT
 trap 'exit 1' INT TERM
-source "$(dirname "$0")/common.sh"
 show_logs() { tail -n 20 "$WORK"/log/* >&2 || true; }
 
 # MUNGE: its own key, socket, pid, log and seed files.
