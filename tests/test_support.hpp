@@ -37,9 +37,10 @@ inline std::string str(double x) {
 /// u and v at time t between two samples {t, u, v, ...} of a scalar
 /// second-order ODE whose accelerations there are acc_a and acc_b, computed
 /// without core/hermite.hpp: the quintic matching u, u' = v and u'' at both
-/// ends, its six coefficients solved for. Its own error is O(dt^6) in u and
-/// O(dt^5) in v: a trajectory's rows between its samples must equal it to
-/// rounding, not merely come near the exact solution.
+/// ends, its six coefficients solved for, and for v the cubic matching v and
+/// v' = u'' at both ends. Errors O(dt^6) in u and O(dt^4) in v: a
+/// trajectory's rows between its samples must equal these to rounding, not
+/// merely come near the exact solution.
 inline std::pair<double, double> quintic_between(const std::vector<double>& a, double acc_a,
                                                  const std::vector<double>& b, double acc_b, double t) {
   const double h = b[0] - a[0], s = (t - a[0]) / h;
@@ -59,12 +60,13 @@ inline std::pair<double, double> quintic_between(const std::vector<double>& a, d
     rhs(3 * end + 2) = h * h * (end ? acc_b : acc_a);
   }
   const Eigen::Matrix<double, 6, 1> c = m.fullPivLu().solve(rhs);
-  double u = 0, du = 0;
-  for (int k = 0; k < 6; ++k) {
-    u += c(k) * std::pow(s, k);
-    if (k) du += k * c(k) * std::pow(s, k - 1);
-  }
-  return {u, du / h};
+  double u = 0;
+  for (int k = 0; k < 6; ++k) u += c(k) * std::pow(s, k);
+  // v: the cubic through v and v' = u'' at both ends (Hermite basis).
+  const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+  const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+  const double v = h00 * a[2] + h10 * h * acc_a + h01 * b[2] + h11 * h * acc_b;
+  return {u, v};
 }
 
 }  // namespace vibra::test
