@@ -2,26 +2,48 @@
 
 #include <cmath>
 
+#include "render/drawing_record.hpp"
+#include "render/label_placer.hpp"
+
 namespace vibra::render {
+
+namespace {
+/// 720p pixels: an arrow shorter than this is drawn as a dot (its head alone would be a smear).
+constexpr double kShortestArrow = 14;
+}  // namespace
 
 bool draw_force_arrow(Canvas& canvas, const WorldView& view, const ForceArrow& f, const Color& background) {
   const double scale = canvas.scale();
   const Point from = view.to_pixel(f.from), tip = view.to_pixel(f.to);
-  if ((tip - from).norm() < 8 * scale) return false;
-  draw_arrow(canvas, view, f.from, f.to, {f.color, 4.2}, 22);
-  if (f.label.empty()) return true;
+  const bool visible = (tip - from).norm() >= kShortestArrow * scale;
+  {
+    OutlineKindScope kind(canvas, OutlineKind::arrow);
+    if (visible) {
+      draw_arrow(canvas, view, f.from, f.to, {f.color, 4.2}, 22);
+    } else {
+      // Shorter than its head: a dot where the force acts, still labelled.
+      cairo_new_path(canvas.cr());
+      cairo_arc(canvas.cr(), from.x(), from.y(), 4.5 * scale, 0, 2 * M_PI);
+      cairo_set_source_rgba(canvas.cr(), f.color.r, f.color.g, f.color.b, f.color.a);
+      canvas.fill();
+    }
+  }
+  if (f.label.empty()) return visible;
   TextStyle style{24, f.color};
   style.halo = true, style.halo_color = background;
-  const Point size = text_size(canvas, f.label, style);
-  const Point at = f.place == LabelPlace::beside ? label_beyond(0.5 * (from + tip), f.side, size, 8 * scale)
-                                                 : label_beyond(tip, tip - from, size, 5 * scale);
-  draw_text(canvas, at, f.label, style);
-  return true;
+  if (!visible)
+    request_label(canvas, {f.label, style, from, f.place == LabelPlace::beside ? f.side : Point(1, -1), 6 * scale});
+  else if (f.place == LabelPlace::beside)
+    request_label(canvas, {f.label, style, 0.5 * (from + tip), f.side, 8 * scale});
+  else
+    request_label(canvas, {f.label, style, tip, tip - from, 5 * scale});
+  return visible;
 }
 
 void draw_dimension(Canvas& canvas, const WorldView& view, const Point& a, const Point& b, const std::string& label,
                     const Point& side, const Color& color, const Color& background) {
   const double scale = canvas.scale();
+  OutlineKindScope kind(canvas, OutlineKind::arrow);
   const Point pa = view.to_pixel(a), pb = view.to_pixel(b);
   const Point d = pb - pa;
   const double length = d.norm();
@@ -53,8 +75,7 @@ void draw_dimension(Canvas& canvas, const WorldView& view, const Point& a, const
   if (label.empty()) return;
   TextStyle style{20, color};
   style.halo = true, style.halo_color = background;
-  const Point size = text_size(canvas, label, style);
-  draw_text(canvas, label_beyond(0.5 * (pa + pb), side, size, 6 * scale), label, style);
+  request_label(canvas, {label, style, 0.5 * (pa + pb), side, 6 * scale});
 }
 
 }  // namespace vibra::render

@@ -9,6 +9,7 @@
 #include <new>
 #include <string>
 
+#include "render/drawing_record.hpp"
 #include "render/huge_pages.hpp"
 #include "render/label_cache.hpp"
 #include "render/output_error.hpp"
@@ -128,16 +129,19 @@ void Canvas::mark_path(double widen) {
 // A stroke reaches half the line width beyond the path with round joins and
 // caps; a whole width leaves room for square caps and short miters.
 void Canvas::stroke() {
+  if (record_) record_->outline.add_stroke(cr(), record_->kind);
   mark_path(cairo_get_line_width(cr()));
   cairo_stroke(cr());
 }
 
 void Canvas::fill() {
+  if (record_) record_->outline.add_fill(cr(), record_->kind);
   mark_path(0);
   cairo_fill(cr());
 }
 
 void Canvas::fill_preserve() {
+  if (record_) record_->outline.add_fill(cr(), record_->kind);
   mark_path(0);
   cairo_fill_preserve(cr());
 }

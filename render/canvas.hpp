@@ -13,6 +13,7 @@
 namespace vibra::render {
 
 class LabelCache;
+struct DrawingRecord;
 
 using Point = Eigen::Vector2d;
 
@@ -72,6 +73,11 @@ class Canvas {
   /// Notes a box in user space that is about to be drawn.
   void mark_drawn(double x0, double y0, double x1, double y1);
 
+  /// From now on, every stroke, fill and text goes into `record`'s outline,
+  /// and labels asked for wait there to be placed (nullptr: drawn at once).
+  void record_into(DrawingRecord* record) { record_ = record; }
+  DrawingRecord* record() const { return record_; }
+
   /// Frames of an animation: from now on, note where drawing lands.
   void track_damage() { tracking_ = true; }
   bool tracks_damage() const { return tracking_; }
@@ -98,6 +104,7 @@ class Canvas {
   bool tracking_ = false;
   Damage drawn_, drawn_last_frame_, restored_;
   std::shared_ptr<LabelCache> labels_;
+  DrawingRecord* record_ = nullptr;
 };
 
 /// Maps world coordinates (y up, equal aspect) into a pixel rectangle (y down),

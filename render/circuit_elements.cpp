@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "render/drawing_record.hpp"
 #include "render/machine_elements.hpp"
 
 namespace vibra::render {
@@ -17,6 +18,7 @@ std::pair<Point, Point> axes(const Point& a, const Point& b) {
 }  // namespace
 
 void draw_wire(Canvas& canvas, const WorldView& view, std::span<const Point> points, const Stroke& stroke) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::wire);
   for (size_t i = 1; i < points.size(); ++i) draw_line(canvas, view, points[i - 1], points[i], stroke);
 }
 

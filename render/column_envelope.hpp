@@ -5,12 +5,12 @@
 #include <vector>
 
 #include "render/canvas.hpp"
+#include "render/envelope_cell.hpp"
 
 namespace vibra::render {
 
-/// A curve decimated to one entry per pixel column: the first, last, smallest
-/// and largest value that fell in each column. Drawing it costs the same
-/// whatever the number of samples, and no peak is lost.
+/// A curve decimated to one EnvelopeCell per pixel column. Drawing it costs
+/// the same whatever the number of samples, and no peak is lost.
 class ColumnEnvelope {
  public:
   /// `columns` columns spanning x in [x0, x1].
@@ -35,37 +35,24 @@ class ColumnEnvelope {
   /// merges `factor` neighbours, keeping their extremes and their order.
   ColumnEnvelope coarsened(int factor) const;
 
-  /// Pixel polyline through columns [0, last_column].
+  /// Pixel polyline through columns [0, last_column], with to_pixel(x, y).
   template <class ToPixel>
   std::vector<Point> polyline(int last_column, ToPixel&& to_pixel) const {
     return polyline(0, last_column, std::forward<ToPixel>(to_pixel));
   }
 
   /// Pixel polyline through columns [first_column, last_column], with
-  /// `to_pixel(column, y)`. A column whose values are all equal adds one point.
+  /// `to_pixel(x, y)` at the x where each kept sample happened.
   template <class ToPixel>
   std::vector<Point> polyline(int first_column, int last_column, ToPixel&& to_pixel) const {
     std::vector<Point> out;
-    for (int c = std::max(0, first_column); c <= last_column && c < columns(); ++c) {
-      const Cell& k = cells_[c];
-      if (!k.used) continue;
-      out.push_back(to_pixel(c, k.first));
-      if (k.min == k.max) continue;
-      const bool rising = k.first <= k.last;
-      out.push_back(to_pixel(c, rising ? k.min : k.max));
-      out.push_back(to_pixel(c, rising ? k.max : k.min));
-      out.push_back(to_pixel(c, k.last));
-    }
+    for (int c = std::max(0, first_column); c <= last_column && c < columns(); ++c)
+      cells_[c].visit_in_order([&](double x, double y) { out.push_back(to_pixel(x, y)); });
     return out;
   }
 
  private:
-  struct Cell {
-    bool used = false;
-    bool min_first = true;  ///< the smallest value came no later than the largest
-    double first = 0, last = 0, min = 0, max = 0;
-  };
-  std::vector<Cell> cells_;
+  std::vector<EnvelopeCell> cells_;
   double x0_, x1_;
 };
 

@@ -22,10 +22,7 @@ void Series::add(double x, double y) {
 std::vector<std::vector<Point>> Series::polylines() const {
   if (path_) return path_->strokes();
   if (!envelope_) return {points_};
-  const double column_width = (envelope_->x1() - envelope_->x0()) / envelope_->columns();
-  return {envelope_->polyline(0, envelope_->columns() - 1, [&](int c, double y) {
-    return Point(envelope_->x0() + (c + 0.5) * column_width, y);
-  })};
+  return {envelope_->polyline(0, envelope_->columns() - 1, [](double x, double y) { return Point(x, y); })};
 }
 
 void Series::for_each_point(const std::function<void(double, double)>& visit) const {

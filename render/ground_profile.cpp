@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "render/drawing_record.hpp"
 #include "render/output_error.hpp"
 
 namespace vibra::render {
@@ -90,6 +91,7 @@ void GroundProfile::paint(cairo_t* cr, const Placement& at, std::vector<Point> t
 }
 
 void GroundProfile::draw(Canvas& canvas, const WorldView& view) const {
+  OutlineKindScope outline_kind(canvas, OutlineKind::ground);
   cairo_t* cr = canvas.cr();
   double clip_x0, clip_y0, clip_x1, clip_y1;
   cairo_clip_extents(cr, &clip_x0, &clip_y0, &clip_x1, &clip_y1);
@@ -97,6 +99,16 @@ void GroundProfile::draw(Canvas& canvas, const WorldView& view) const {
   const Point origin = view.to_pixel(Point(0, 0));
   const double column0 = std::round(origin.x());  // canvas column of road column 0
   const Placement at{canvas.id(), view.zoom(), origin.y(), std::ceil(clip_y1), canvas.scale()};
+  if (DrawingRecord* record = canvas.record()) {
+    // Pasted from tiles, not stroked: its outline is the road down to the bottom.
+    std::vector<Point> ground = road_points(at, clip_x0 - column0, clip_x1 - column0);
+    for (Point& p : ground) p.x() += column0;
+    if (ground.size() > 1) {
+      ground.emplace_back(ground.back().x(), at.bottom);
+      ground.emplace_back(ground.front().x(), at.bottom);
+      record->outline.add_polygon(std::move(ground), OutlineKind::ground);
+    }
+  }
   if (cairo_surface_get_type(canvas.surface()) != CAIRO_SURFACE_TYPE_IMAGE) {  // a vector still: drawn as it is
     canvas.mark_drawn(clip_x0, clip_y0, clip_x1, clip_y1);
     paint(cr, at, road_points(at, clip_x0 - column0, clip_x1 - column0), -column0, 0);

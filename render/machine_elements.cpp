@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/drawing_record.hpp"
+
 namespace vibra::render {
 
 namespace {
@@ -48,6 +50,7 @@ std::vector<Point> spring_points(const Point& from, const Point& to, const Sprin
 
 void draw_spring(Canvas& canvas, const WorldView& view, const Point& from, const Point& to, const SpringShape& shape,
                  const Stroke& stroke) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::spring);
   const std::vector<Point> points = spring_points(from, to, shape);
   const std::vector<Point> pixels = to_pixels(view, points);
   cairo_set_line_join(canvas.cr(), CAIRO_LINE_JOIN_ROUND);
@@ -80,6 +83,7 @@ DashpotGeometry dashpot_geometry(const Point& from, const Point& to, const Dashp
 
 void draw_dashpot(Canvas& canvas, const WorldView& view, const Point& from, const Point& to, const DashpotShape& shape,
                   const Stroke& stroke) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::spring);
   const DashpotGeometry g = dashpot_geometry(from, to, shape);
   draw_line(canvas, view, g.rod_from_start, g.rod_from_end, stroke);
   const std::vector<Point> cylinder = to_pixels(view, g.cylinder);
@@ -92,6 +96,7 @@ void draw_dashpot(Canvas& canvas, const WorldView& view, const Point& from, cons
 
 void draw_wheel(Canvas& canvas, const WorldView& view, const Point& center, double radius, double angle,
                 const Color& fill, const Stroke& stroke) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::body);
   draw_circle(canvas, view, center, radius, fill, stroke);
   Stroke spoke = stroke;
   spoke.width = 0.7 * stroke.width;
@@ -107,6 +112,7 @@ void draw_wheel(Canvas& canvas, const WorldView& view, const Point& center, doub
 
 void draw_box(Canvas& canvas, const WorldView& view, const Point& low, const Point& high, const Color& fill,
               const Stroke& stroke) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::body);
   const Point a = view.to_pixel(Point(low.x(), high.y())), b = view.to_pixel(Point(high.x(), low.y()));
   cairo_t* cr = canvas.cr();
   cairo_new_path(cr);
@@ -121,6 +127,7 @@ void draw_box(Canvas& canvas, const WorldView& view, const Point& low, const Poi
 
 void draw_hatched_surface(Canvas& canvas, const WorldView& view, const Point& a, const Point& b, const Point& outside,
                           const Stroke& s) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::ground);
   const Point pa = view.to_pixel(a), pb = view.to_pixel(b);
   const Point out_pixels = Point(outside.x(), -outside.y()).normalized();
   const double spacing = 12 * canvas.scale(), depth = 12 * canvas.scale();

@@ -114,11 +114,7 @@ void PlotPanel::draw_envelope(Canvas& canvas, const ColumnEnvelope& envelope, do
 
 void PlotPanel::draw_envelope_columns(Canvas& canvas, const ColumnEnvelope& envelope, int first_column, int last_column,
                                       const Stroke& s) const {
-  const double envelope_span = envelope.x1() - envelope.x0();
-  auto points = envelope.polyline(first_column, last_column, [&](int c, double y) {
-    const double x = envelope.x0() + (c + 0.5) * envelope_span / envelope.columns();
-    return Point(to_pixel(x, y).x(), to_pixel(x0_, y).y());
-  });
+  auto points = envelope.polyline(first_column, last_column, [&](double x, double y) { return to_pixel(x, y); });
   cairo_save(canvas.cr());
   cairo_rectangle(canvas.cr(), area_.x, area_.y, area_.w, area_.h);
   cairo_clip(canvas.cr());

@@ -14,14 +14,9 @@ void RollingEnvelope::add(double x, double y) {
   if (!std::isfinite(y) || x < 0) return;
   const long long c = column_of(x);
   newest_ = std::max(newest_, c);
-  Cell& k = cells_[slot(c)];
-  if (k.column != c) {
-    k = {c, y, y, y, y};  // a new column reuses the oldest slot
-    return;
-  }
-  k.last = y;
-  k.min = std::min(k.min, y);
-  k.max = std::max(k.max, y);
+  Column& k = cells_[slot(c)];
+  if (k.column != c) k = {c, {}};  // a new column reuses the oldest slot
+  k.cell.add(x, y);
 }
 
 }  // namespace vibra::render

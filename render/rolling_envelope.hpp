@@ -1,14 +1,15 @@
 #pragma once
+#include <algorithm>
 #include <vector>
 
 #include "render/canvas.hpp"
+#include "render/envelope_cell.hpp"
 
 namespace vibra::render {
 
-/// The most recent stretch of a curve, decimated to one cell per pixel
-/// column (first, last, min, max of the values in it), in a ring: memory is
-/// proportional to the columns kept, never to the length of the run or to
-/// how many samples fall in a column.
+/// The most recent stretch of a curve, decimated to one EnvelopeCell per
+/// pixel column, in a ring: memory is proportional to the columns kept,
+/// never to the length of the run or to how many samples fall in a column.
 class RollingEnvelope {
  public:
   /// Cells of width `column_width` in x; keeps the newest `capacity` columns.
@@ -20,34 +21,27 @@ class RollingEnvelope {
   long long column_of(double x) const;
 
   /// Polyline through the kept columns in [first, last] (absolute indices),
-  /// with to_pixel(x_of_column_centre, y).
+  /// with to_pixel(x, y) at the x where each kept sample happened.
   template <class ToPixel>
   std::vector<Point> polyline(long long first, long long last, ToPixel&& to_pixel) const {
     std::vector<Point> out;
     first = std::max(first, newest_ - static_cast<long long>(cells_.size()) + 1);
     for (long long c = first; c <= last && c <= newest_; ++c) {
-      const Cell& k = cells_[slot(c)];
-      if (k.column != c) continue;
-      const double x = (c + 0.5) * width_;
-      out.push_back(to_pixel(x, k.first));
-      if (k.min == k.max) continue;  // one point for a flat column
-      const bool rising = k.first <= k.last;
-      out.push_back(to_pixel(x, rising ? k.min : k.max));
-      out.push_back(to_pixel(x, rising ? k.max : k.min));
-      out.push_back(to_pixel(x, k.last));
+      const Column& k = cells_[slot(c)];
+      if (k.column == c) k.cell.visit_in_order([&](double x, double y) { out.push_back(to_pixel(x, y)); });
     }
     return out;
   }
 
  private:
-  struct Cell {
+  struct Column {
     long long column = -1;  ///< absolute column held, -1 = empty
-    double first = 0, last = 0, min = 0, max = 0;
+    EnvelopeCell cell;
   };
   size_t slot(long long column) const { return static_cast<size_t>(column % static_cast<long long>(cells_.size())); }
 
   double width_;
-  std::vector<Cell> cells_;
+  std::vector<Column> cells_;
   long long newest_ = -1;
 };
 

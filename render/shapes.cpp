@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/drawing_record.hpp"
+
 namespace vibra::render {
 
 namespace {
@@ -57,6 +59,7 @@ void draw_line(Canvas& canvas, const WorldView& view, const Point& a, const Poin
 
 void draw_arrow(Canvas& canvas, const WorldView& view, const Point& from, const Point& to, const Stroke& s,
                 double head) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::arrow);
   const Point a = view.to_pixel(from), b = view.to_pixel(to);
   const double length = (b - a).norm();
   if (length < 1e-9) return;
@@ -78,6 +81,7 @@ void draw_arrow(Canvas& canvas, const WorldView& view, const Point& from, const 
 
 void draw_circle(Canvas& canvas, const WorldView& view, const Point& center, double radius, const Color& fill,
                  const Stroke& outline) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::body);
   const Point c = view.to_pixel(center);
   cairo_t* cr = canvas.cr();
   cairo_new_path(cr);
@@ -104,6 +108,7 @@ void draw_arc(Canvas& canvas, const WorldView& view, const Point& center, double
 }
 
 void draw_ceiling(Canvas& canvas, const WorldView& view, const Point& center, double half_width, const Stroke& s) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::ground);
   const Point left = view.to_pixel(center - Point(half_width, 0)), right = view.to_pixel(center + Point(half_width, 0));
   const double spacing = 12 * canvas.scale(), rise = 12 * canvas.scale();
   Stroke hatch = s;

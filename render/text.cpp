@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "render/drawing_record.hpp"
 #include "render/label_cache.hpp"
 
 namespace vibra::render {
@@ -26,8 +27,6 @@ PangoLayout* new_layout(cairo_t* cr, const std::string& markup, const TextStyle&
   return layout;
 }
 
-/// How far a halo reaches beyond the glyphs' outlines, in pixels.
-double halo_reach(const TextStyle& style, double scale) { return style.halo ? 2.5 * scale : 0; }
 
 /// The halo, then the text, with the layout's origin at (x, y).
 void show_layout(cairo_t* cr, PangoLayout* layout, const TextStyle& style, double scale, double x, double y) {
@@ -152,7 +151,9 @@ Point text_size(Canvas& canvas, const std::string& markup, const TextStyle& styl
   return {logical.width, logical.height};
 }
 
-Point draw_text(Canvas& canvas, const Point& at, const std::string& markup, const TextStyle& style, Anchor anchor) {
+namespace {
+Point draw_text_unrecorded(Canvas& canvas, const Point& at, const std::string& markup, const TextStyle& style,
+                           Anchor anchor) {
   cairo_t* cr = canvas.cr();
   const double scale = canvas.scale();
   LabelCache* cache = pasting_cache(canvas);
@@ -177,6 +178,21 @@ Point draw_text(Canvas& canvas, const Point& at, const std::string& markup, cons
   show_layout(cr, layout.get(), style, scale, origin.x(), origin.y());
   return {logical.width, logical.height};
 }
+}  // namespace
+
+Point draw_text(Canvas& canvas, const Point& at, const std::string& markup, const TextStyle& style, Anchor anchor) {
+  const Point size = draw_text_unrecorded(canvas, at, markup, style, anchor);
+  if (DrawingRecord* record = canvas.record()) {
+    // Its logical box and halo: what a placed label must keep off.
+    const double reach = halo_reach(style, canvas.scale());
+    const Point origin = placed(at, size, anchor);
+    record->outline.add_box({origin.x() - reach, origin.y() - reach, size.x() + 2 * reach, size.y() + 2 * reach},
+                            OutlineKind::text, markup);
+  }
+  return size;
+}
+
+double halo_reach(const TextStyle& style, double scale) { return style.halo ? 2.5 * scale : 0; }
 
 Point label_beyond(const Point& tip, const Point& direction, const Point& size, double gap) {
   const double n = direction.norm();

@@ -32,6 +32,9 @@ Point draw_text(Canvas&, const Point& at, const std::string& markup, const TextS
 /// The markup's size in pixels.
 Point text_size(Canvas&, const std::string& markup, const TextStyle&);
 
+/// How far a halo reaches beyond the glyphs' outlines, in pixels.
+double halo_reach(const TextStyle&, double scale);
+
 /// Where to centre a label of `size` pixels so that it sits just beyond
 /// `tip` in direction `direction` (pixel space), `gap` pixels away.
 Point label_beyond(const Point& tip, const Point& direction, const Point& size, double gap);

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "render/annotations.hpp"
+#include "render/label_placer.hpp"
 #include "render/shapes.hpp"
 #include "render/text.hpp"
 #include "scenes/diagram_registry.hpp"
@@ -85,14 +86,13 @@ void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::s
       {g.bob, g.drag_tip, c.drag, magnification_label(o.drag_magnification)}};
   for (const auto& f : forces) draw_force_arrow(canvas, view, f, c.background);
 
-  // The angle's label goes last, over the arrows, with a halo.
+  // The angle's label beyond the middle of its arc, placed like the arrows' labels.
   if (std::abs(state.theta) > 0.02) {
     TextStyle label{24, c.wire};
     label.halo = true, label.halo_color = c.background;
     const Point at = view.to_pixel(g.pivot + o.arc_radius * g.theta_label_direction);
     const Point direction(g.theta_label_direction.x(), -g.theta_label_direction.y());
-    const std::string theta = "<i>θ</i>";
-    draw_text(canvas, render::label_beyond(at, direction, text_size(canvas, theta, label), 4 * scale), theta, label);
+    render::request_label(canvas, {"<i>θ</i>", label, at, direction, 4 * scale});
   }
 }
 

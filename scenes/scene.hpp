@@ -2,6 +2,7 @@
 #include <span>
 
 #include "render/canvas.hpp"
+#include "render/drawing_record.hpp"
 
 namespace vibra::scenes {
 
@@ -28,6 +29,9 @@ class Scene {
   /// frames after it (the whole-run curves drawn so far), without drawing on
   /// `canvas`, which only says the frames' size and kind.
   virtual void skip(const render::Canvas&, std::span<const double> row) = 0;
+  /// What the last drawn frame's diagram part covers and where its labels
+  /// went (for checks of the layout); null for a scene without a diagram.
+  virtual const render::DrawingRecord* last_layout() const { return nullptr; }
 };
 
 }  // namespace vibra::scenes

@@ -99,20 +99,18 @@ const std::vector<render::GrowingPolyline>& SeriesPanel::whole_curves() const {
     std::vector<render::Point> points;
     std::vector<int> ends(columns);
     if (series_[i].of_time) {
-      // At every half column, on one grid for the whole run: the centre of
-      // column c is sample 2c + 1, where the envelopes put their points.
+      // At every half column, on one grid for the whole run: column c holds
+      // samples 2c and 2c + 1, as an envelope's column holds the samples
+      // whose x falls in it.
       for (int k = 0; k <= 2 * columns; ++k) {
         const double x = std::min(t_end_, k * column_width / 2), y = series_[i].of_time(x);
         if (std::isfinite(y)) points.push_back(panel_.to_pixel(x, y));
-        if (k % 2 == 1 || k == 2 * columns) ends[std::min(k / 2, columns - 1)] = int(points.size());
+        ends[std::min(k / 2, columns - 1)] = int(points.size());
       }
     } else {
       const render::ColumnEnvelope& envelope = whole_[i];
       for (int c = 0; c < columns; ++c) {
-        const auto column = envelope.polyline(c, c, [&](int c, double y) {
-          const double x = envelope.x0() + (c + 0.5) * column_width;
-          return render::Point(panel_.to_pixel(x, y).x(), panel_.to_pixel(envelope.x0(), y).y());
-        });
+        const auto column = envelope.polyline(c, c, [&](double x, double y) { return panel_.to_pixel(x, y); });
         points.insert(points.end(), column.begin(), column.end());
         ends[c] = int(points.size());
       }

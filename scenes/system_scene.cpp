@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "render/caption.hpp"
+#include "render/label_placer.hpp"
 #include "render/text.hpp"
 
 namespace vibra::scenes {
@@ -109,12 +110,16 @@ render::WorldView SystemScene::view_at(std::span<const double> row) {
 void SystemScene::draw_static(render::Canvas& canvas) {
   canvas.clear(style_.colors.background);
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i]->draw_static(canvas, i == time_labels_panel_);
+  render::DrawingRecord record;
+  canvas.record_into(&record);
   diagram_->draw_static(canvas, *view_);
   if (!legend_.empty()) legend_.draw_static(canvas, legend_corner(canvas.scale()));
   if (caption_)
     render::draw_caption(
         canvas, {diagram_area_.x + 16 * canvas.scale(), diagram_area_.y + diagram_area_.h - 12 * canvas.scale()},
         *caption_);
+  canvas.record_into(nullptr);
+  static_outline_ = std::move(record.outline);
 }
 
 void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
@@ -123,6 +128,11 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i]->draw(canvas, row[0], row, i == time_labels_panel_);
   const std::optional<WorldBox> moving = diagram_->view_at(row);
   const render::WorldView view = moving ? render::WorldView(*moving, view_area_) : *view_;
+  // Everything in the diagram's part is recorded, so that its labels,
+  // placed last, keep off all of it.
+  last_frame_ = {};
+  last_frame_.outline = static_outline_;
+  canvas.record_into(&last_frame_);
   if (moving || !legend_.empty()) {
     // A following view runs its ground off the sides and the bottom, and a
     // comparison's run that blows up leaves the view: keep them out of the
@@ -144,6 +154,9 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   if (!legend_.empty()) legend_.draw(canvas, legend_corner(canvas.scale()), row[0]);
   if (bars_) bars_->draw(canvas, row);
   draw_readout(canvas, diagram_area_, row[0], style_);
+  canvas.record_into(nullptr);
+  last_frame_.placed = render::place_labels(canvas, last_frame_.labels, last_frame_.outline, label_area(canvas.scale()));
+  render::draw_placed_labels(canvas, last_frame_.placed);
 }
 
 void SystemScene::skip(const render::Canvas& canvas, std::span<const double> row) {
@@ -154,6 +167,12 @@ void SystemScene::skip(const render::Canvas& canvas, std::span<const double> row
 render::PixelRect SystemScene::drawing_area() const {
   const double w = std::max(diagram_area_.w - legend_.width(), view_area_.x + view_area_.w - diagram_area_.x);
   return {diagram_area_.x, diagram_area_.y, w, diagram_area_.h};
+}
+
+render::PixelRect SystemScene::label_area(double scale) const {
+  render::PixelRect area = drawing_area();
+  if (bars_) area.w = bars_->area().x - 8 * scale - area.x;
+  return area;
 }
 
 render::Point SystemScene::legend_corner(double scale) const {

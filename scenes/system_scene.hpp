@@ -5,6 +5,7 @@
 
 #include "core/trajectory.hpp"
 #include "render/caption.hpp"
+#include "render/drawing_record.hpp"
 #include "scenes/diagram.hpp"
 #include "scenes/energy_bars.hpp"
 #include "scenes/quantity_panels.hpp"
@@ -36,6 +37,7 @@ class SystemScene final : public Scene {
   double sample_interval() const override;
   void draw(render::Canvas&, std::span<const double> row) override;
   void skip(const render::Canvas&, std::span<const double> row) override;
+  const render::DrawingRecord* last_layout() const override { return &last_frame_; }
 
   /// The diagram's world box over the run (after record()).
   const WorldBox& world_box() const { return world_; }
@@ -60,6 +62,8 @@ class SystemScene final : public Scene {
   std::unique_ptr<Diagram> diagram_;
   /// Where the diagram may draw: its area without the legend's column.
   render::PixelRect drawing_area() const;
+  /// Where its labels may go: the drawing area short of the energy bars.
+  render::PixelRect label_area(double scale) const;
   /// The legend column's top right corner.
   render::Point legend_corner(double scale) const;
 
@@ -72,6 +76,10 @@ class SystemScene final : public Scene {
   std::optional<render::WorldView> view_;
   std::optional<render::Caption> caption_;  ///< set with the view
   StaticLayer background_;
+  /// What the parts drawn once (ground, walls, legend, caption) cover.
+  render::Outline static_outline_;
+  /// The last frame's diagram part: its outline and labels.
+  render::DrawingRecord last_frame_;
 };
 
 }  // namespace vibra::scenes

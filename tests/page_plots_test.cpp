@@ -67,7 +67,7 @@ size_t count(const std::string& text, const std::string& what) {
 
 TEST_CASE("a column's extremes come in the order they happened, and survive coarsening", "[page]") {
   ColumnEnvelope e(8, 0, 8);
-  for (double y : {0.0, 5.0, -3.0, 1.0}) e.add(0.5, y);  // max then min
+  for (double y : {0.0, 5.0, -3.0, 1.0}) e.add(0.5, y);  // max then min (samples at one x keep their order)
   for (double y : {0.0, -2.0, 4.0}) e.add(1.5, y);       // min then max
   e.add(2.5, 7.0);
   CHECK(*e.extremes_in_order(0) == std::pair(5.0, -3.0));

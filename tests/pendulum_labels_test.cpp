@@ -7,8 +7,9 @@
 // <use x y>. A label is read by the shapes of its glyphs: the number of closed
 // contours and whether it descends below the baseline tell S (one contour),
 // D (two) and mg (one, then two with a descender) apart in any ordinary font.
-// The drawing order ties a label to its arrow: shaft, head, halo, then the
-// label's glyphs in the arrow's colour.
+// A label is tied to its arrow by colour: the arrows are drawn, then (placed
+// once the whole diagram is known) the labels' glyphs, each force's in its
+// arrow's colour; the panels, drawn before the diagram, do not count.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -94,9 +95,8 @@ struct Svg {
 Svg parse(const std::string& svg) {
   Svg out;
   std::string symbol;  // inside <symbol id=...>
-  std::string group;   // fill colour of the current <g>
-  DrawnArrow* arrow = nullptr;
-  bool labelling = false;
+  DrawnArrow* arrow = nullptr;     // the last arrow drawn, until its head
+  DrawnArrow* labelled = nullptr;  // the arrow whose colour the current glyph group has
   for (size_t at = svg.find('<'); at != std::string::npos; at = svg.find('<', at + 1)) {
     const std::string tag = svg.substr(at, svg.find('>', at) + 1 - at);
     if (tag.rfind("<symbol", 0) == 0) {
@@ -120,24 +120,27 @@ Svg parse(const std::string& svg) {
       if (style.find("stroke-width:4.2;") != std::string::npos && straight) {  // an arrow's shaft
         out.arrows.push_back({colour(style, "stroke"), {xy[0], xy[1]}, {xy[2], xy[3]}, {}});
         arrow = &out.arrows.back();
-        labelling = false;
       } else if (arrow && style.find("stroke:none") != std::string::npos && colour(style, "fill") == arrow->colour) {
         arrow->tip = {xy[0], xy[1]};  // the head: its first point is the tip
-        labelling = true;
+        arrow = nullptr;
       } else if (style.find("stroke-width:2.2;") != std::string::npos && straight) {
         out.lines.push_back({{xy[0], xy[1]}, {xy[2], xy[3]}});
-      } else if (style.find("stroke:rgb(100%,100%,100%)") == std::string::npos) {
-        labelling = false;  // anything but a label's halo ends the arrow's label
       }
     } else if (tag.rfind("<g style=", 0) == 0) {
-      group = colour(attribute(tag, "style"), "fill");
-      if (arrow && labelling && group == arrow->colour) arrow->label.emplace_back();
-      else labelling = false;
-    } else if (tag.rfind("<use", 0) == 0 && arrow && labelling && !arrow->label.empty()) {
-      arrow->label.back().push_back({attribute(tag, "xlink:href").substr(1),
-                                     {std::stod(attribute(tag, "x")), std::stod(attribute(tag, "y"))}});
+      const std::string group = colour(attribute(tag, "style"), "fill");
+      labelled = nullptr;
+      for (auto& a : out.arrows)
+        if (a.colour == group) labelled = &a;
+      if (labelled) labelled->label.emplace_back();
+    } else if (tag.rfind("</g", 0) == 0) {
+      labelled = nullptr;
+    } else if (tag.rfind("<use", 0) == 0 && labelled) {
+      labelled->label.back().push_back({attribute(tag, "xlink:href").substr(1),
+                                        {std::stod(attribute(tag, "x")), std::stod(attribute(tag, "y"))}});
     }
   }
+  // Groups that held no glyphs (a colour's other fills) are not labels.
+  for (auto& a : out.arrows) std::erase_if(a.label, [](const auto& group) { return group.empty(); });
   return out;
 }
 

@@ -19,7 +19,7 @@ const render::Color kBlue = render::palette::blue, kRed = render::palette::vermi
 }
 
 TEST_CASE("the energy panel's values are solve --energy's E_rel at the same steps", "[panels]") {
-  for (const std::string& settings : {"vibration --set b=0.3 --set scheme=centered", "pendulum --set scheme=forward-euler",
+  for (const std::string settings : {"vibration --set b=0.3 --set scheme=centered", "pendulum --set scheme=forward-euler",
                                       "two-body --set vy0=1.2 --set scheme=rk4 --set steps_per_period=30"}) {
     INFO(settings);
     const auto solved = test::run_vibra("solve " + settings + " --set periods=2 --energy");
@@ -119,7 +119,7 @@ TEST_CASE("every panel kind draws for every built-in scene, whole run and window
   test::ScratchDirectory dir;
   for (const auto& scene : scenes::builtin_scene_names()) {
     const std::string panels = scene == "spring" ? "phase,energy,period,error" : "phase,energy,period";
-    for (const std::string& window : {"", " --window 2periods --window-mode jumps", " --window 3 --window-mode movement"}) {
+    for (const std::string window : {"", " --window 2periods --window-mode jumps", " --window 3 --window-mode movement"}) {
       const std::string args = "render " + scene + " --panels " + panels + " --energy-bars --size 640x360 --at 4" + window;
       INFO(args);
       const auto png = test::run_vibra(args + " -q -o " + (dir / "still.png"));

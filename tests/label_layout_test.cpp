@@ -1,0 +1,161 @@
+// Labels are placed clear of everything the diagram draws, for every
+// built-in scene, both diagram layouts, three frame sizes and a dozen moments
+// of each run: checked from the kit's recorded outlines, not from pixels.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "render/canvas.hpp"
+#include "render/drawing_record.hpp"
+#include "render/outline.hpp"
+#include "scenes/scene_config.hpp"
+#include "scenes/scene_factory.hpp"
+
+using vibra::render::Canvas;
+using vibra::render::DrawingRecord;
+using vibra::render::OutlineKind;
+using vibra::render::OutlineShape;
+using vibra::render::PixelRect;
+using vibra::render::PlacedLabel;
+
+namespace {
+
+struct Setup {
+  std::string scene;
+  std::vector<std::pair<std::string, std::string>> settings;
+  int width, height;
+};
+
+std::string describe(const Setup& s) {
+  std::ostringstream out;
+  out << s.scene;
+  for (const auto& [k, v] : s.settings) out << " --set " << k << "=" << v;
+  out << " --size " << s.width << "x" << s.height;
+  return out.str();
+}
+
+/// The box shrunk by half a pixel: boxes that only touch do not overlap.
+PixelRect inset(const PixelRect& r) { return {r.x + 0.5, r.y + 0.5, r.w - 1, r.h - 1}; }
+
+/// What a label's box overlaps in the frame's outline, if anything.
+std::string overlap_of(const DrawingRecord& frame, size_t label) {
+  const PlacedLabel& placed = frame.placed[label];
+  for (const OutlineShape& shape : frame.outline.shapes()) {
+    const bool itself = shape.kind == OutlineKind::label && shape.name == placed.request.markup &&
+                        shape.bounds.x == placed.box.x && shape.bounds.y == placed.box.y;
+    if (itself || !vibra::render::overlaps(inset(placed.box), shape)) continue;
+    return std::string(vibra::render::outline_kind_name(shape.kind)) + (shape.name.empty() ? "" : " '" + shape.name + "'");
+  }
+  return {};
+}
+
+struct Verdict {
+  int frames = 0, labels = 0;
+};
+
+/// Draws the run at a dozen moments, two consecutive solver steps each, and
+/// checks every placed label of every frame.
+Verdict check_layout(const Setup& setup) {
+  vibra::scenes::SceneConfig config = vibra::scenes::load_scene(setup.scene);
+  for (const auto& [key, value] : setup.settings) vibra::scenes::apply_setting(config, {key, value, "test"});
+  config.width = setup.width, config.height = setup.height;
+  auto pre_pass = vibra::scenes::build_scene_runs(config);
+  auto scene = vibra::scenes::make_scene_for(config, *pre_pass, "a layout test");
+  std::vector<double> row(pre_pass->width());
+  long long steps = 0;
+  do {
+    pre_pass->row(row);
+    scene->record(row);
+    ++steps;
+  } while (pre_pass->advance());
+
+  std::vector<long long> moments;
+  for (int k = 0; k < 12; ++k) moments.push_back(k * (steps - 2) / 11);
+  Canvas canvas = Canvas::image(setup.width, setup.height);
+  auto runs = vibra::scenes::build_scene_runs(config);
+  Verdict verdict;
+  long long step = 0;
+  size_t next = 0;
+  do {
+    runs->row(row);
+    scene->observe(row);
+    const bool drawn = next < moments.size() && (step == moments[next] || step == moments[next] + 1);
+    if (drawn) {
+      if (step == moments[next] + 1) ++next;
+      scene->draw(canvas, row);
+      const DrawingRecord* frame = scene->last_layout();
+      REQUIRE(frame);
+      ++verdict.frames;
+      for (size_t i = 0; i < frame->placed.size(); ++i) {
+        const PlacedLabel& label = frame->placed[i];
+        ++verdict.labels;
+        INFO(describe(setup) << " at t = " << row[0] << ": label '" << label.request.markup << "'");
+        CHECK(overlap_of(*frame, i) == "");
+        CHECK(label.free);
+      }
+    }
+    ++step;
+  } while (runs->advance() && next < moments.size());
+  return verdict;
+}
+
+const std::vector<std::string> kScenes = {"pendulum", "pendulum_book", "spring",        "spring_dashpot",
+                                          "washing_machine", "sliding_box", "bumpy_road", "bouncing_ball",
+                                          "rlc",             "elastic_pendulum", "orbit"};
+
+void check_all_scenes(int width, int height) {
+  for (const std::string& scene : kScenes)
+    for (const char* layout : {"fbd", "fbd+plot"}) {
+      const Verdict v = check_layout({scene, {{"layout", layout}}, width, height});
+      INFO(scene << " " << layout << " at " << width << "x" << height);
+      CHECK(v.frames == 24);
+      CHECK(v.labels > 0);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("labels overlap nothing the diagram draws, at 640x360", "[labels]") { check_all_scenes(640, 360); }
+TEST_CASE("labels overlap nothing the diagram draws, at 1280x720", "[labels]") { check_all_scenes(1280, 720); }
+TEST_CASE("labels overlap nothing the diagram draws, at 1920x1080", "[labels]") { check_all_scenes(1920, 1080); }
+
+TEST_CASE("labels overlap nothing in comparisons, energy bars and large swings", "[labels]") {
+  const std::vector<Setup> setups = {
+      {"spring", {{"compare", "scheme=forward-euler,crank-nicolson,rk4"}}, 1280, 720},
+      {"pendulum", {{"compare", "Theta=20,60,120"}}, 1280, 720},
+      {"pendulum", {{"Theta", "170"}, {"alpha", "0"}}, 1280, 720},
+      {"spring_dashpot", {{"energy_bars", "true"}}, 1280, 720},
+      {"sliding_box", {}, 640, 360},
+  };
+  for (const Setup& s : setups) {
+    const Verdict v = check_layout(s);
+    INFO(describe(s));
+    CHECK(v.frames == 24);
+    CHECK(v.labels > 0);
+  }
+}
+
+TEST_CASE("an outline knows what a box overlaps: strokes by their width, fills by their inside", "[labels]") {
+  Canvas canvas = Canvas::image(200, 100);
+  DrawingRecord record;
+  canvas.record_into(&record);
+  cairo_t* cr = canvas.cr();
+  cairo_set_line_width(cr, 10);
+  cairo_move_to(cr, 10, 50);
+  cairo_line_to(cr, 190, 50);
+  canvas.stroke();
+  cairo_rectangle(cr, 20, 70, 40, 20);
+  canvas.fill();
+  canvas.record_into(nullptr);
+  REQUIRE(record.outline.shapes().size() == 2);
+  const OutlineShape& line = record.outline.shapes()[0];
+  const OutlineShape& box = record.outline.shapes()[1];
+  CHECK(vibra::render::overlaps({90, 52, 10, 10}, line));   // within the stroke's half width of 5
+  CHECK(!vibra::render::overlaps({90, 56, 10, 10}, line));  // 6 below the centre line: clear
+  CHECK(vibra::render::overlaps({30, 75, 5, 5}, box));      // wholly inside the fill
+  CHECK(!vibra::render::overlaps({70, 75, 5, 5}, box));
+  CHECK(vibra::render::overlaps({55, 60, 10, 12}, box));    // across its corner
+}
