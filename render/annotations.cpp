@@ -21,11 +21,14 @@ bool draw_force_arrow(Canvas& canvas, const WorldView& view, const ForceArrow& f
     if (visible) {
       draw_arrow(canvas, view, f.from, f.to, {f.color, 4.2}, 22);
     } else {
-      // Shorter than its head: a dot where the force acts, still labelled.
+      // Shorter than its head: a small ring where the force acts, still
+      // labelled (a ring, so the body under it keeps its colour).
       cairo_new_path(canvas.cr());
-      cairo_arc(canvas.cr(), from.x(), from.y(), 4.5 * scale, 0, 2 * M_PI);
+      cairo_arc(canvas.cr(), from.x(), from.y(), 5 * scale, 0, 2 * M_PI);
       cairo_set_source_rgba(canvas.cr(), f.color.r, f.color.g, f.color.b, f.color.a);
-      canvas.fill();
+      cairo_set_line_width(canvas.cr(), 2.2 * scale);
+      cairo_set_dash(canvas.cr(), nullptr, 0, 0);
+      canvas.stroke();
     }
   }
   if (f.label.empty()) return visible;

@@ -16,7 +16,7 @@ enum class LabelPlace {
 
 /// A force drawn as an arrow from `from` to `to` (world units) with a label
 /// in Pango markup, placed by the label placer. An arrow shorter than its
-/// head is drawn as a dot where the force acts, labelled all the same.
+/// head is drawn as a small ring where the force acts, labelled all the same.
 struct ForceArrow {
   Point from, to;
   Color color;
@@ -25,9 +25,9 @@ struct ForceArrow {
   Point side = Point(1, 0);  ///< pixel direction for LabelPlace::beside
 };
 
-/// Draws the arrow (or its dot) and asks for its haloed label (see
+/// Draws the arrow (or its ring) and asks for its haloed label (see
 /// request_label). `background` is the halo colour. Returns false when the
-/// arrow was too short and drawn as a dot.
+/// arrow was too short and drawn as a ring.
 bool draw_force_arrow(Canvas&, const WorldView&, const ForceArrow&, const Color& background);
 
 /// A dimension line from `a` to `b` (world units), with end ticks across it,
