@@ -5,6 +5,16 @@
 
 namespace vibra::render {
 
+namespace {
+/// floor(v) clamped to [lo, hi] before the cast: a path far outside the
+/// picture (a run leaving the view) has coordinates no int can hold.
+int clamped_floor(double v, int lo, int hi) {
+  if (!(v > lo)) return lo;  // NaN too
+  if (v >= hi) return hi;
+  return static_cast<int>(std::floor(v));
+}
+}  // namespace
+
 OccupancyGrid::OccupancyGrid(const PixelRect& area, double cell, double clearance)
     : area_(area),
       cell_(std::max(1.0, cell)),
@@ -16,10 +26,10 @@ OccupancyGrid::OccupancyGrid(const PixelRect& area, double cell, double clearanc
 void OccupancyGrid::mark_segment(const Point& a, const Point& b, double reach) {
   // A cell is taken when its centre lies within reach plus half its diagonal.
   const double r = reach + 0.7072 * cell_;
-  const int c0 = std::max(0, static_cast<int>(std::floor((std::min(a.x(), b.x()) - r - area_.x) / cell_)));
-  const int c1 = std::min(columns_ - 1, static_cast<int>(std::floor((std::max(a.x(), b.x()) + r - area_.x) / cell_)));
-  const int r0 = std::max(0, static_cast<int>(std::floor((std::min(a.y(), b.y()) - r - area_.y) / cell_)));
-  const int r1 = std::min(rows_ - 1, static_cast<int>(std::floor((std::max(a.y(), b.y()) + r - area_.y) / cell_)));
+  const int c0 = clamped_floor((std::min(a.x(), b.x()) - r - area_.x) / cell_, 0, columns_);
+  const int c1 = clamped_floor((std::max(a.x(), b.x()) + r - area_.x) / cell_, -1, columns_ - 1);
+  const int r0 = clamped_floor((std::min(a.y(), b.y()) - r - area_.y) / cell_, 0, rows_);
+  const int r1 = clamped_floor((std::max(a.y(), b.y()) + r - area_.y) / cell_, -1, rows_ - 1);
   for (int row = r0; row <= r1; ++row)
     for (int column = c0; column <= c1; ++column) {
       const Point centre(area_.x + (column + 0.5) * cell_, area_.y + (row + 0.5) * cell_);
@@ -32,8 +42,8 @@ void OccupancyGrid::mark_polygon(const std::vector<Point>& polygon) {
   // segments, so a cell the polygon only grazes is taken too.
   double top = 1e300, bottom = -1e300;
   for (const Point& p : polygon) top = std::min(top, p.y()), bottom = std::max(bottom, p.y());
-  const int first = std::max(0, static_cast<int>(std::floor((top - area_.y) / cell_)));
-  const int last = std::min(rows_ - 1, static_cast<int>(std::floor((bottom - area_.y) / cell_)));
+  const int first = clamped_floor((top - area_.y) / cell_, 0, rows_);
+  const int last = clamped_floor((bottom - area_.y) / cell_, -1, rows_ - 1);
   for (int row = first; row <= last; ++row) {
     const double y = area_.y + (row + 0.5) * cell_;
     std::vector<double> xs;
@@ -43,8 +53,8 @@ void OccupancyGrid::mark_polygon(const std::vector<Point>& polygon) {
     }
     std::sort(xs.begin(), xs.end());
     for (size_t k = 0; k + 1 < xs.size(); k += 2) {
-      const int c0 = std::max(0, static_cast<int>(std::floor((xs[k] - area_.x) / cell_)));
-      const int c1 = std::min(columns_ - 1, static_cast<int>(std::floor((xs[k + 1] - area_.x) / cell_)));
+      const int c0 = clamped_floor((xs[k] - area_.x) / cell_, 0, columns_);
+      const int c1 = clamped_floor((xs[k + 1] - area_.x) / cell_, -1, columns_ - 1);
       for (int column = c0; column <= c1; ++column) mark(column, row);
     }
   }
@@ -78,10 +88,10 @@ void OccupancyGrid::build_sums() {
 
 long long OccupancyGrid::taken(const PixelRect& r) {
   if (!sums_current_) build_sums();
-  const int c0 = std::clamp(static_cast<int>(std::floor((r.x - area_.x) / cell_)), 0, columns_);
-  const int c1 = std::clamp(static_cast<int>(std::floor((r.x + r.w - area_.x) / cell_)) + 1, 0, columns_);
-  const int r0 = std::clamp(static_cast<int>(std::floor((r.y - area_.y) / cell_)), 0, rows_);
-  const int r1 = std::clamp(static_cast<int>(std::floor((r.y + r.h - area_.y) / cell_)) + 1, 0, rows_);
+  const int c0 = clamped_floor((r.x - area_.x) / cell_, 0, columns_);
+  const int c1 = clamped_floor((r.x + r.w - area_.x) / cell_ + 1, 0, columns_);
+  const int r0 = clamped_floor((r.y - area_.y) / cell_, 0, rows_);
+  const int r1 = clamped_floor((r.y + r.h - area_.y) / cell_ + 1, 0, rows_);
   auto at = [&](int row, int column) { return sums_[static_cast<size_t>(row) * (columns_ + 1) + column]; };
   return at(r1, c1) - at(r0, c1) - at(r1, c0) + at(r0, c0);
 }
