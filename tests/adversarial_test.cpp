@@ -6,6 +6,7 @@
 // The odd paths that are valid (spaces, unicode, a newline) must work, and
 // text that reaches a page must arrive escaped.
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -110,9 +111,12 @@ TEST_CASE("adversarial: empty and malformed values of every kind of option", "[c
       {"render bumpy_road --set speed=1e12 -o OUT.mp4", "heights, more than 2e7"},
       {"render bumpy_road --set dx=1e-12 -o OUT.mp4", "heights, more than 2e7"},
       {"solve pendulum --set T=1e15 --set dt=1e-9 -o OUT.csv", "too many"},
+      // A window below a time step: once heap corruption, once an endless tick loop (2).
+      {"render --window 1e-300 --at 0.5 -o OUT.png", "narrower than one time step"},
+      {"render --window 1e-16 --set periods=0.2 -o OUT.mp4", "narrower than one time step"},
   };
   for (const auto& c : cases) check_refused(c.args, c.expected);
-  CHECK(std::size(cases) == 34);
+  CHECK(std::size(cases) == 36);
 }
 
 TEST_CASE("adversarial: long values and newlines are quoted shortened, on one line", "[cli][adversarial]") {
@@ -231,4 +235,17 @@ TEST_CASE("adversarial: markup in names reaches the page escaped", "[cli][advers
   REQUIRE_FALSE(html.empty());
   CHECK(html.find("<img src=x onerror=alert(1)>") == std::string::npos);
   CHECK(html.find("x</script>") == std::string::npos);
+}
+
+TEST_CASE("adversarial: a huge amplitude draws its still in bounded time", "[cli][adversarial]") {
+  // Theta = 1e9 degrees once took minutes in Cairo (an arc of 1.7e7 turns);
+  // the bound is a hang guard, far above the ordinary second.
+  ScratchDirectory dir;
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = run_vibra("render --set Theta=1e9 --at 1 -q -o " + (dir / "still.png"));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(seconds < 60);
+  CHECK(vibra::test::png_size(dir / "still.png") == std::pair{1280, 720});
 }
