@@ -96,7 +96,7 @@ TEST_CASE("adversarial: empty and malformed values of every kind of option", "[c
       {"analyze orbit --orbits 0", "--orbits"},
       {"analyze orbit --orbits 1e10", "--orbits"},
       {"analyze orbit --orbits 30abc", "--orbits"},
-      {"analyze orbit --orbits ''", "--orbits: the value is empty"},
+      {"analyze orbit --orbits ''", "empty value for --orbits"},
       // Parser text gets a fix (5).
       {"solve pendulum --set dt=nan -o OUT.csv", "write a decimal number or an expression"},
       {"solve pendulum --set dt=0x10 -o OUT.csv", "write a decimal number or an expression"},
