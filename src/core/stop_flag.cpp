@@ -41,8 +41,15 @@ void report_long_work(long long done, long long total) {
   next_line = now + std::chrono::seconds(10);
   const double seconds = std::chrono::duration<double>(now - start).count();
   const double left = seconds * double(total - done) / double(done - first_done);
-  std::fprintf(stderr, "vibra: step %lld of %lld (%.2g%%), about %.3g s left; Ctrl-C stops it\n", done, total,
-               100.0 * double(done) / double(total), left);
+  // The estimate in the unit a person reads: 40 s, 12 min, 3.5 h, 9 days, 2.7e+02 years.
+  char estimate[48];
+  if (left < 120) std::snprintf(estimate, sizeof estimate, "%.0f s", left);
+  else if (left < 7200) std::snprintf(estimate, sizeof estimate, "%.0f min", left / 60);
+  else if (left < 2 * 86400) std::snprintf(estimate, sizeof estimate, "%.1f h", left / 3600);
+  else if (left < 365.25 * 86400) std::snprintf(estimate, sizeof estimate, "%.0f days", left / 86400);
+  else std::snprintf(estimate, sizeof estimate, "%.2g years", left / (365.25 * 86400));
+  std::fprintf(stderr, "vibra: step %lld of %lld (%.1f%%), about %s left; Ctrl-C stops it\n", done, total,
+               100.0 * double(done) / double(total), estimate);
 }
 
 }  // namespace vibra

@@ -1,6 +1,8 @@
 #include "core/value_ranges.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "core/error.hpp"
 #include "core/quoted_value.hpp"
@@ -47,9 +49,14 @@ const ValueRange& value_range(std::string_view name) {
 }
 
 namespace {
+/// A bound as written exactly: 16777216, 1e+15 (never a rounded 1.67772e+07).
 std::string bound(double x) {
-  if (x == std::floor(x) && std::abs(x) < 1e7) return std::to_string(static_cast<long long>(x));
-  return short_number(x);
+  if (x == std::floor(x) && std::abs(x) < 1e9) return std::to_string(static_cast<long long>(x));
+  const std::string shortest = short_number(x);
+  if (std::stod(shortest) == x) return shortest;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
 }
 }  // namespace
 

@@ -112,7 +112,7 @@ class ScratchFolder {
 std::vector<std::string> arguments_of(std::string_view text) {
   std::vector<std::string> args;
   std::size_t start = 0;
-  while (start <= text.size() && args.size() < kMaxArguments) {
+  while (start < text.size() && args.size() < kMaxArguments) {  // a final newline ends the last argument
     std::size_t end = text.find('\n', start);
     if (end == std::string_view::npos) end = text.size();
     std::string arg(text.substr(start, std::min(end - start, kMaxArgumentLength)));
