@@ -46,6 +46,15 @@ Interrupted interrupt_vibra(const std::vector<std::string>& args, const std::str
 
 int signal_named(const std::string& name) { return name == "SIGINT" ? SIGINT : SIGTERM; }
 
+/// Whether process `pid` catches SIGINT yet (its handler is installed): on a
+/// loaded machine the dynamic loader alone can take a second or more.
+bool catches_sigint(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("SigCgt:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) >> (SIGINT - 1)) & 1;
+  return false;
+}
+
 }  // namespace
 
 TEST_CASE("SIGINT and SIGTERM stop video and frame renders: exit 128+signal, nothing left", "[signals][render]") {
@@ -129,6 +138,7 @@ TEST_CASE("Ctrl-C stops every long loop within a second: solver passes, analyses
       if (a.starts_with("OUT")) a = dir / ("out" + a.substr(3));
     CAPTURE(args);
     const pid_t pid = vibra::test::spawn_vibra(args, logs / "out", logs / "err");
+    for (int i = 0; i < 1000 && !catches_sigint(pid); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // well inside the loop
     const auto sent = std::chrono::steady_clock::now();
     kill(pid, SIGINT);
