@@ -45,18 +45,26 @@ class VideoSink final : public FrameSink {
 
 class PngSink final : public FrameSink {
  public:
-  PngSink(FramePattern pattern, int width, int height, int threads, long long first)
-      : pattern_(pattern), first_(first), writer_(std::move(pattern), width, height, threads, first) {}
+  PngSink(FramePattern pattern, int width, int height, int threads, long long first, long long count)
+      : pattern_(pattern), first_(first), count_(count), writer_(std::move(pattern), width, height, threads, first) {}
   void write(const std::uint8_t* bgra, int stride, const Damage*) override { writer_.write(bgra, stride); }
-  void finish() override { writer_.finish(); }
+  void finish() override {
+    writer_.finish();
+    // A whole render (not a segment) leaves exactly its own frames under the
+    // pattern: an earlier, longer run's extra frames go, but only now that
+    // the new set is complete (docs/reliability.md, "Interrupted runs").
+    if (first_ == 0 && writer_.frames_written() == count_) removed_ = remove_earlier_frames(pattern_, count_);
+  }
+
   std::string description() const override {
     return std::to_string(writer_.frames_written()) + " frames " + pattern_.name(first_).string() + " ... " +
-           pattern_.name(first_ + std::max(0LL, writer_.frames_written() - 1)).string();
+           pattern_.name(first_ + std::max(0LL, writer_.frames_written() - 1)).string() +
+           (removed_ ? "; removed " + std::to_string(removed_) + " frames of an earlier run beyond these" : "");
   }
 
  private:
   FramePattern pattern_;
-  long long first_;
+  long long first_, count_, removed_ = 0;
   PngSequenceWriter writer_;
 };
 class Y4mSink final : public FrameSink {
@@ -158,7 +166,8 @@ std::unique_ptr<FrameSink> make_frame_sink(const std::string& output, int width,
     return std::make_unique<VideoSink>(output, options);
   }
   const int threads = settings.threads > 0 ? settings.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::make_unique<PngSink>(parse_frame_pattern(output, frame_count), width, height, threads, first_frame);
+  return std::make_unique<PngSink>(parse_frame_pattern(output, frame_count), width, height, threads, first_frame,
+                                   frame_count);
 }
 
 }  // namespace vibra::render

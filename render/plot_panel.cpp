@@ -29,7 +29,16 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
   std::vector<double> ticks;
   if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return ticks;
   const double step = nice_step(hi - lo, target);
-  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + 1e-9 * step; ++k) ticks.push_back(k * step);
+  // At most a few dozen ticks, whatever the numbers: where the span is below
+  // the resolution of lo (a window of 1e-16 at t = 0.5), k * step repeats
+  // one value and an unbounded loop would never end.
+  const int most = 4 * std::max(1, target) + 4;
+  const double first = std::ceil(lo / step - 1e-9);
+  for (int i = 0; i < most && (first + i) * step <= hi + 1e-9 * step; ++i) {
+    const double tick = (first + i) * step;
+    if (!ticks.empty() && !(tick > ticks.back())) break;  // below the resolution of lo: no distinct ticks
+    ticks.push_back(tick);
+  }
   return ticks;
 }
 

@@ -91,6 +91,23 @@ FramePattern parse_frame_pattern(const std::string& pattern, long long frame_cou
   return p;
 }
 
+long long remove_earlier_frames(const FramePattern& p, long long count) {
+  long long removed = 0;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(p.directory, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() <= p.prefix.size() + p.suffix.size() || !name.starts_with(p.prefix) || !name.ends_with(p.suffix))
+      continue;
+    const std::string number = name.substr(p.prefix.size(), name.size() - p.prefix.size() - p.suffix.size());
+    if (number.size() > kMaxDigits + 1 || !std::all_of(number.begin(), number.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      continue;
+    const bool ours = std::stoll(number) < count && entry.path().filename() == p.name(std::stoll(number)).filename();
+    std::error_code ignored;
+    if (!ours && entry.is_regular_file(ignored) && fs::remove(entry.path(), ignored)) ++removed;
+  }
+  return removed;
+}
+
 PngSequenceWriter::PngSequenceWriter(FramePattern pattern, int width, int height, int threads, long long first_index)
     : pattern_(std::move(pattern)),
       staging_(pattern_.directory, "frames"),

@@ -23,6 +23,13 @@ struct FramePattern {
   std::filesystem::path name(long long index) const;
 };
 
+/// After a whole render of `count` frames has replaced its set: removes the
+/// frames of an earlier run that this one did not write, files named by the
+/// same pattern (prefix, digits, suffix) with a number of `count` or more, or
+/// with another number of digits, so the folder holds exactly this run's
+/// frames. Anything else in the folder stays. Returns how many it removed.
+long long remove_earlier_frames(const FramePattern&, long long count);
+
 /// Reads a user's pattern: "frames/tmp_%04d.png" (exactly one %d or %0Nd,
 /// N in 1..18, in the file name, which ends in .png, any case), or a
 /// directory "DIR" or "DIR/" meaning DIR/tmp_%04d.png. The digits widen when

@@ -8,7 +8,11 @@ namespace vibra::render {
 RollingEnvelope::RollingEnvelope(double column_width, int capacity)
     : width_(column_width > 0 ? column_width : 1), cells_(std::max(2, capacity)) {}
 
-long long RollingEnvelope::column_of(double x) const { return static_cast<long long>(std::floor(x / width_)); }
+long long RollingEnvelope::column_of(double x) const {
+  // Clamped before the cast: a double beyond long long's range is undefined
+  // behaviour there (a huge x over a tiny column width).
+  return static_cast<long long>(std::clamp(std::floor(x / width_), -9e18, 9e18));
+}
 
 void RollingEnvelope::add(double x, double y) {
   if (!std::isfinite(y) || x < 0) return;

@@ -94,7 +94,11 @@ void draw_circle(Canvas& canvas, const WorldView& view, const Point& center, dou
 
 void draw_arc(Canvas& canvas, const WorldView& view, const Point& center, double radius, double a0, double a1,
               const Stroke& s) {
-  if (std::abs(a1 - a0) < 1e-12) return;
+  if (std::abs(a1 - a0) < 1e-12 || !std::isfinite(a1 - a0)) return;
+  // A sweep of more than a turn draws as one turn: Cairo makes segments in
+  // proportion to the angle, and a pendulum at Theta = 1e9 degrees would
+  // cost minutes a frame for the same circle.
+  if (std::abs(a1 - a0) > 2 * M_PI) a1 = a0 + std::copysign(2 * M_PI, a1 - a0);
   const Point c = view.to_pixel(center);
   cairo_t* cr = canvas.cr();
   apply(canvas, s);

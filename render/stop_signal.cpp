@@ -1,12 +1,10 @@
 #include "render/stop_signal.hpp"
 
-#include <atomic>
 #include <csignal>
 
 namespace vibra::render {
 namespace {
-std::atomic<int> g_stop_signal{0};
-extern "C" void record_stop(int sig) { g_stop_signal.store(sig); }
+extern "C" void record_stop(int sig) { record_stop_signal(sig); }
 }  // namespace
 
 void install_stop_handlers() {
@@ -17,23 +15,17 @@ void install_stop_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
-int stop_signal() { return g_stop_signal.load(std::memory_order_relaxed); }
-
-void throw_if_stop_requested() {
-  if (int sig = stop_signal()) throw Interrupted{sig};
-}
-
 ScopedStopHandlers::ScopedStopHandlers() {
   sigaction(SIGINT, nullptr, &previous_[0]);
   sigaction(SIGTERM, nullptr, &previous_[1]);
-  g_stop_signal.store(0);
+  record_stop_signal(0);
   install_stop_handlers();
 }
 
 ScopedStopHandlers::~ScopedStopHandlers() {
   sigaction(SIGINT, &previous_[0], nullptr);
   sigaction(SIGTERM, &previous_[1], nullptr);
-  if (const int sig = g_stop_signal.exchange(0)) std::raise(sig);
+  if (const int sig = take_stop_signal()) std::raise(sig);
 }
 
 }  // namespace vibra::render

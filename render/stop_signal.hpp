@@ -5,24 +5,19 @@
 
 #include <csignal>
 
+#include "core/stop_flag.hpp"
+
 namespace vibra::render {
 
 /// Installs SIGINT and SIGTERM handlers that only record the signal.
 void install_stop_handlers();
 
-/// The signal number that asked us to stop, or 0.
-int stop_signal();
+// The flag itself and Interrupted live in core (core/stop_flag.hpp).
+using vibra::Interrupted;
+using vibra::stop_signal;
+using vibra::throw_if_stop_requested;
 
 inline bool stop_requested() { return stop_signal() != 0; }
-
-/// Thrown by loops that noticed stop_requested(); the CLI maps it to 128 + signal.
-struct Interrupted {
-  int signal;
-  const char* outcome = "no partial output was kept";  // what the user finds afterwards
-};
-
-/// Throws Interrupted if a stop was requested.
-void throw_if_stop_requested();
 
 /// The stop handlers for the lifetime of the object, in a process that has
 /// handlers of its own (the Python module inside an interpreter or a notebook

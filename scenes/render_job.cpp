@@ -11,6 +11,7 @@
 
 #include "core/comparison_trajectory.hpp"
 #include "core/error.hpp"
+#include "core/quoted_value.hpp"
 #include "core/models/model.hpp"
 #include "render/canvas.hpp"
 #include "render/html_page.hpp"
@@ -274,7 +275,7 @@ void write_still(const RenderRequest& r, const render::OutputTarget& target, Sce
     canvas.finish();
   }
   file.commit();
-  if (!r.quiet) std::fprintf(stderr, "vibra: wrote %s (t = %g)\n", target.shown().c_str(), row[0]);
+  if (!r.quiet) std::fprintf(stderr, "vibra: wrote %s (t = %g)\n", one_line_message(target.shown(), 4096).c_str(), row[0]);
 }
 }  // namespace
 
@@ -445,8 +446,8 @@ void run_render(const RenderRequest& r) {
     page_file->commit();
   }
   if (!r.quiet)
-    std::fprintf(stderr, "vibra: wrote %s\n",
-                 (page ? page_written(r, target, clock.frames()) : sink->description()).c_str());
+    std::fprintf(stderr, "vibra: wrote %s\n",  // one line, a newline in a file name escaped
+                 one_line_message(page ? page_written(r, target, clock.frames()) : sink->description(), 4096).c_str());
 }
 
 }  // namespace vibra::scenes

@@ -3,6 +3,7 @@
 #include <iterator>
 
 #include "core/error.hpp"
+#include "core/quoted_value.hpp"
 #include "scenes/comparison_diagram.hpp"
 #include "scenes/comparison_labels.hpp"
 #include "scenes/diagram_registry.hpp"
@@ -20,6 +21,13 @@ SceneStyle style_of(const SceneConfig& config, const TrajectoryInfo& info, const
   style.period = info.mesh.period;
   style.caption = caption;
   style.window = window_width(config, info.mesh.period);
+  // A window narrower than a time step shows no curve, and its pixel columns
+  // would be narrower than the resolution of t (--window 1e-300 corrupted the
+  // heap): the range's lower end depends on dt, so it is checked here.
+  if (style.window > 0 && style.window < info.mesh.dt)
+    throw UsageError("window=" + quoted_value(config.window) + " is narrower than one time step, dt = " +
+                     short_number(info.mesh.dt) + ": give a window of several steps, e.g. window=" +
+                     short_number(100 * info.mesh.dt) + ", or lower dt");
   style.window_mode = style.window > 0 ? config.window_mode : WindowMode::whole_run;
   if (style.window > 0 && style.window >= info.mesh.T) style.window_mode = WindowMode::whole_run;
   return style;

@@ -44,3 +44,7 @@ TEST_CASE("fuzz inputs replay cleanly: --set assignments", "[fuzz]") {
 TEST_CASE("fuzz inputs replay cleanly: expressions", "[fuzz]") {
   CHECK(replay("expression", vibra::fuzz::expression) >= 5);
 }
+
+TEST_CASE("fuzz inputs replay cleanly: command lines", "[fuzz]") {
+  CHECK(replay("command_line", vibra::fuzz::command_line) >= 8);
+}

@@ -98,7 +98,7 @@ TEST_CASE("a run too long for the page's data budget is decimated, not refused",
 }
 
 TEST_CASE("pages refuse what they cannot write, leaving nothing behind", "[page]") {
-  check_refused("render" + kShort + "--every 0 -o OUT.html", "--every must be at least 1");
+  check_refused("render" + kShort + "--every 0 -o OUT.html", "--every: 0 must be a whole number 1..");
   check_refused("render" + kShort + "--every 5 -o OUT.mp4", "--every thins the CSV beside a page");
   check_refused("plot pendulum --panels theta,phase -o OUT.html", "panel 'phase' is not against t");
   check_refused("plot pendulum --size 800x600 -o OUT.html", "drop --size");

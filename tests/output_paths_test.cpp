@@ -278,6 +278,34 @@ TEST_CASE("an interrupted render leaves an earlier run's frames byte for byte", 
   CHECK(same == earlier.size());
 }
 
+TEST_CASE("a shorter run leaves exactly its own frames under the pattern", "[output][paths]") {
+  ScratchDirectory dir;
+  const std::string pattern = dir / "frames/f_%04d.png";
+  REQUIRE(run_vibra("render --size 160x90 --set periods=0.5 -q -o " + pattern).exit_code == 0);  // 31 frames
+  REQUIRE(entries(dir.path / "frames").size() == 31);
+  // The user's own files in the folder, one of them almost a frame's name.
+  write(dir.path / "frames/notes.txt", "mine");
+  write(dir.path / "frames/f_12ab.png", "mine too");
+  write(dir.path / "frames/g_0040.png", "another pattern's");
+  // A segment of a longer render removes nothing: the other segments' frames belong there.
+  REQUIRE(run_vibra("render --size 160x90 --set periods=1 -q --segment 0/2 -o " + pattern).exit_code == 0);
+  CHECK(entries(dir.path / "frames").size() == 31 + 3);
+  const auto r = run_vibra("render --size 160x90 --set periods=0.1 -o " + pattern);  // 7 frames
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.err, Catch::Contains("removed 24 frames of an earlier run"));
+  std::vector<std::string> expected = {"f_12ab.png"};
+  for (int i = 0; i < 7; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "f_%04d.png", i);
+    expected.push_back(name);
+  }
+  expected.push_back("g_0040.png");
+  expected.push_back("notes.txt");
+  std::sort(expected.begin(), expected.end());
+  CHECK(entries(dir.path / "frames") == expected);
+}
+
 TEST_CASE("a page keeps its companions in PAGE_files/ and leaves the user's files alone", "[output][paths][page]") {
   ScratchDirectory dir;
   for (const char* name : {"lecture.mp4", "lecture.webm", "lecture.csv"}) write(dir.path / name, std::string("mine: ") + name);

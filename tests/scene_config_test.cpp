@@ -74,7 +74,7 @@ TEST_CASE("scene file errors name the file, line and key", "[scene-config]") {
   CHECK_THAT(load_error("Theta = \"abc\"\n"), Catch::Contains("Theta"));
   CHECK_THAT(load_error("[a]\n[a.b]\nc = 1\n"), Catch::Contains("nested"));
   CHECK_THAT(load_error("model = \"two-bdy\"\n"), Catch::Contains("did you mean 'two-body'"));
-  CHECK_THAT(load_error("window = \"-3\"\n"), Catch::Contains("must be positive"));
+  CHECK_THAT(load_error("window = \"-3\"\n"), Catch::Contains("window=-3 must be a positive number"));
   CHECK_THAT(load_error("window_mode = \"sliding\"\n"), Catch::Contains("drawing, movement, jumps"));
   CHECK_THAT(load_error(std::string("\0\1\2", 3)), Catch::Contains("binary"));
   CHECK_THAT(load_error("Theta = [1, 2]\n"), Catch::Contains("must be a number, string or boolean"));

@@ -1,7 +1,10 @@
 #include "bindings.hpp"
 
+#include "core/stop_flag.hpp"
+
 PYBIND11_MODULE(_vibra, m) {
   m.doc() = "vibra's C++ core: solvers, scenes and analyses (use the package vibra)";
+  vibra::quiet_long_work(true);  // a notebook's cell shows no stderr lines of the CLI's kind
   vibra::python::bind_errors(m);
   vibra::python::bind_solve(m);
   vibra::python::bind_ascii(m);

@@ -6,6 +6,7 @@
 #include "bindings.hpp"
 #include "core/error.hpp"
 #include "core/input_files.hpp"
+#include "core/value_ranges.hpp"
 #include "render/stop_signal.hpp"
 #include "scenes/render_job.hpp"
 
@@ -21,6 +22,10 @@ void render(const std::string& scene, const std::vector<std::pair<std::string, s
   for (const auto& [key, value] : settings) scenes::apply_setting(request.scene, {key, value, "vibra.render"});
   if (frame_per_step) request.scene.frame_per_step = true;
   request.output = output;
+  // The same table of ranges as the command line's options (-1 and 0: the defaults).
+  if (at) in_range("--at", *at, std::to_string(*at));
+  if (video.crf != -1) in_range("--crf", video.crf, std::to_string(video.crf));
+  if (video.threads != 0) in_range("--threads", video.threads, std::to_string(video.threads));
   request.at = at;
   request.frames_player = frames_player;
   request.quiet = quiet;

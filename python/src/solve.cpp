@@ -6,6 +6,7 @@
 #include "bindings.hpp"
 #include "core/error.hpp"
 #include "core/models/model.hpp"
+#include "core/value_ranges.hpp"
 #include "render/huge_pages.hpp"
 
 namespace vibra::python {
@@ -15,7 +16,7 @@ namespace {
 constexpr long long kSignalCheckSteps = 1 << 16;
 
 std::unique_ptr<Trajectory> build(const std::string& model, const std::vector<std::string>& settings, long long every) {
-  if (every < 1) throw UsageError("every must be >= 1");
+  in_range("every", static_cast<double>(every), std::to_string(every));
   return find_model(model).build(model_settings(model, settings));
 }
 
@@ -97,7 +98,9 @@ class Stream {
 
   /// The next up to `rows` rows as a (rows, columns) array; None at the end.
   py::object next_chunk(long long rows) {
-    if (rows < 1) throw UsageError("chunk must be >= 1");
+    // The table of ranges bounds a chunk: rows * columns * 8 bytes must neither
+    // overflow nor ask for more than a few hundred MB at once.
+    in_range("chunk", static_cast<double>(rows), std::to_string(rows));
     if (finished_) return py::none();
     const size_t width = trajectory_->width(), capacity = static_cast<size_t>(rows);
     TableMemory data = allocate_table(capacity, width);

@@ -1,8 +1,8 @@
 """examples/vibra.ipynb runs from top to bottom (so it cannot rot), and its
 video and still show in the cells."""
 
-import json
 import os
+import subprocess
 import sys
 from pathlib import Path
 
@@ -11,20 +11,22 @@ from nbclient import NotebookClient
 
 
 def test_the_example_notebook_runs(tmp_path, monkeypatch):
-    # A kernel for this very interpreter, whatever python3 the machine's
-    # default kernel names; it inherits PYTHONPATH, so it imports this build.
-    spec = tmp_path / "jupyter" / "kernels" / "vibra-test"
-    spec.mkdir(parents=True)
-    (spec / "kernel.json").write_text(json.dumps({
-        "argv": [sys.executable, "-m", "ipykernel_launcher", "-f", "{connection_file}"],
-        "display_name": "vibra test", "language": "python"}))
-    monkeypatch.setenv("JUPYTER_PATH", str(tmp_path / "jupyter"))
+    # The notebook names the kernel scripts/setup registers for .venv, "vibra"
+    # (in Jupyter's system kernel, vibra is not importable). The test registers
+    # that kernel the same way, for this very interpreter, in a folder of its
+    # own; the kernel inherits PYTHONPATH, so it imports this build.
+    notebook = nbformat.read(Path(os.environ["VIBRA_SOURCE_DIR"]) / "examples" / "vibra.ipynb", as_version=4)
+    assert notebook.metadata.kernelspec.name == "vibra"
+    setup = (Path(os.environ["VIBRA_SOURCE_DIR"]) / "scripts" / "setup").read_text()
+    assert "ipykernel install --user --name vibra" in setup
+    subprocess.run([sys.executable, "-m", "ipykernel", "install", "--prefix", str(tmp_path / "kernels"),
+                    "--name", "vibra", "--display-name", "Python (vibra)"], check=True, capture_output=True)
+    monkeypatch.setenv("JUPYTER_PATH", str(tmp_path / "kernels" / "share" / "jupyter"))
     monkeypatch.setenv("JUPYTER_RUNTIME_DIR", str(tmp_path / "runtime"))
     monkeypatch.setenv("JUPYTER_PLATFORM_DIRS", "1")
-    notebook = nbformat.read(Path(os.environ["VIBRA_SOURCE_DIR"]) / "examples" / "vibra.ipynb", as_version=4)
     work = tmp_path / "work"
     work.mkdir()
-    NotebookClient(notebook, kernel_name="vibra-test", timeout=300,
+    NotebookClient(notebook, kernel_name=notebook.metadata.kernelspec.name, timeout=300,
                    resources={"metadata": {"path": str(work)}}).execute()
 
     outputs = [output for cell in notebook.cells if cell.cell_type == "code" for output in cell.outputs]

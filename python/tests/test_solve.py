@@ -75,7 +75,7 @@ def test_bad_input_raises_the_command_lines_message(cli):
     assert "did you mean 'Theta'" in str(error.value)
     with pytest.raises(ValueError, match="unknown model 'pendulm'.*did you mean 'pendulum'"):
         vibra.solve("pendulm")
-    with pytest.raises(ValueError, match="every must be >= 1"):
+    with pytest.raises(ValueError, match="every=0 must be a whole number 1.."):
         vibra.solve("undamped", every=0)
     with pytest.raises(ValueError, match="vibra.stream"):
         vibra.solve("undamped", T="inf")

@@ -72,5 +72,10 @@ def test_a_blow_up_in_a_later_chunk_raises_solution_error():
 
 
 def test_bad_chunk_size():
-    with pytest.raises(ValueError, match="chunk must be >= 1"):
+    with pytest.raises(ValueError, match="chunk=0 must be a whole number 1..16777216"):
         next(vibra.stream("undamped", chunk=0))
+    # Once a segfault: rows * columns * 8 bytes overflowed to a small buffer.
+    with pytest.raises(ValueError, match="chunk=4611686018427387904 must be a whole number"):
+        next(vibra.stream("undamped", T="inf", chunk=2**62))
+    with pytest.raises(ValueError, match="chunk=-5 must be"):
+        next(vibra.stream("undamped", chunk=-5))

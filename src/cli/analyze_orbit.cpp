@@ -1,5 +1,6 @@
 #include "cli/analyses.hpp"
 #include "cli/analysis_output.hpp"
+#include "cli/option_checks.hpp"
 
 namespace vibra::cli {
 
@@ -20,7 +21,7 @@ void add_orbit_analysis(CLI::App& analyze) {
   CLI::App* cmd = analyze.add_subcommand("orbit", "Position error and CPU time of the circular orbit (Exercise 1.28)");
   cmd->add_option("--scheme", o->experiment.scheme, "Scheme, e.g. pefrl, rk4, euler-cromer")->capture_default_str();
   cmd->add_option("--steps-per-orbit", o->experiment.steps_per_orbit, "Comma-separated steps per orbit")->capture_default_str();
-  cmd->add_option("--orbits", o->experiment.orbits, "Orbits per run")->capture_default_str();
+  cmd->add_option("--orbits", o->experiment.orbits, "Orbits per run")->capture_default_str()->check(ranged("--orbits"));
   cmd->add_flag("--long", o->experiment.long_run,
                 "Also run PEFRL for 100000 orbits per steps-per-orbit value, fit the error growth and extrapolate "
                 "error and CPU time to 1e9 orbits (a second table follows the first after a blank line)");

@@ -14,6 +14,7 @@
 
 #include "app/ascii_plot.hpp"
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "core/error.hpp"
 #include "render/standard_output.hpp"
 #include "render/stop_signal.hpp"
@@ -131,7 +132,8 @@ void add_ascii_command(CLI::App& app) {
                   "default range holds every series over the run (its first million steps if longer)");
   cmd->add_flag("--legend", o->legend, "Start with a line naming each series' symbol (always with --columns)");
   cmd->add_option("--counter", o->counter, "period (t/P, one decimal), time, or none");
-  cmd->add_option("--rate", o->rate, "Lines per second, to watch (the book used 10); default: as fast as it computes");
+  cmd->add_option("--rate", o->rate, "Lines per second, to watch (the book used 10); default: as fast as it computes")
+      ->check(ranged("--rate"));
   cmd->footer(
       "\nExamples:\n  vibra ascii undamped --set scheme=euler-cromer --set T=inf --exact --width 60 --symbols +o --rate 10\n"
       "  vibra ascii pendulum --columns theta,S,D --width auto | less\n"

@@ -7,9 +7,13 @@
 
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/segment_option.hpp"
 #include "core/error.hpp"
 #include "core/expression.hpp"
+#include "core/quoted_value.hpp"
+#include "core/stop_flag.hpp"
+#include "core/value_ranges.hpp"
 #include "scenes/diagram_registry.hpp"
 #include "scenes/render_job.hpp"
 #include "scenes/scene_config.hpp"
@@ -74,9 +78,9 @@ std::string scene_keys_help() {
 /// --at's time, read as --set values are: 3.2, pi/2, 2*pi.
 double still_time(const std::string& text) {
   try {
-    return evaluate_constant("--at", text);
+    return in_range("--at", evaluate_constant("--at", text), text);
   } catch (const UsageError&) {
-    throw UsageError("--at " + text + " is not a time: give a number or an expression, e.g. --at 3.2 or --at pi/2");
+    throw UsageError("--at " + quoted_value(text) + " is not a time: give a number or an expression, e.g. --at 3.2 or --at pi/2");
   }
 }
 
@@ -108,6 +112,7 @@ void run(const RenderOptions& o) {
   request.csv_every = o.every;
   request.command_line = command_line();
   request.quiet = o.quiet;
+  quiet_long_work(o.quiet);
   request.video = o.video;
   if (!o.segment.empty()) request.segment = parse_segment_option(o.segment, [](const char* name) { return std::getenv(name); });
   request.skip_existing = o.skip_existing;
@@ -144,16 +149,17 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--energy-bars", o->energy_bars,
                 "Kinetic, potential and dissipated energy as bars beside the diagram, on one scale over the run");
   cmd->add_flag("--frames-player", o->frames_player, "With -o PAGE.html: PNG frames and a page that steps through them");
-  cmd->add_option("--every", o->every, "With -o PAGE.html: the CSV beside the page keeps every K-th step (and the last)");
+  cmd->add_option("--every", o->every, "With -o PAGE.html: the CSV beside the page keeps every K-th step (and the last)")
+      ->check(ranged("--every"));
   cmd->add_option("--at", o->at, "Render one still at this time (a number or an expression, e.g. 3.2 or pi/2)");
   cmd->add_option("--codec", o->video.codec, "Video codec: h264, vp9, vp8, theora, gif (default from the extension)");
   cmd->add_option("--quality", o->video.quality,
                   "draft, medium, high, or lossless (H.264 or VP9: decodes to exactly the frames drawn)")
       ->capture_default_str();
-  cmd->add_option("--crf", o->video.crf, "Constant rate factor (overrides --quality)");
+  cmd->add_option("--crf", o->video.crf, "Constant rate factor (overrides --quality)")->check(ranged("--crf"));
   cmd->add_option("--preset", o->video.preset, "x264 preset, e.g. veryfast, medium");
   cmd->add_option("--threads", o->video.threads, "Threads for PNG compression and the encoder (default: one per core)")
-      ->check(CLI::Range(1, 64));
+      ->check(ranged("--threads"));
   cmd->add_option("--segment", o->segment,
                   "K/N: only frames [K F/N, (K+1) F/N) of the F frames, to OUT.seg-K-of-N.EXT (video) or the frames' own "
                   "numbers (PNG); auto: K and N of a Slurm job array; auto/N: K from JOB_COMPLETION_INDEX");

@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/model_help.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/wrote_message.hpp"
 #include "core/csv_writer.hpp"
 #include "core/error.hpp"
@@ -103,7 +104,8 @@ void add_solve_command(CLI::App& app) {
   cmd->add_option("--set", options->settings, "KEY=VALUE, repeatable (vibra solve MODEL --help lists keys)")
       ->allow_extra_args(false);
   add_output_option(*cmd, options->output, "CSV file, or a pipe or device (default: standard output)");
-  cmd->add_option("--every", options->every, "Write every K-th step (the last step is always written)");
+  cmd->add_option("--every", options->every, "Write every K-th step (the last step is always written)")
+      ->check(ranged("--every"));
   cmd->add_flag("--energy", options->energy,
                 "Append the energy E (scheme's own velocity) and E_rel = (E - E(0))/|E(0)|");
   cmd->add_flag("-q,--quiet", options->quiet, "No message on stderr after writing a file");

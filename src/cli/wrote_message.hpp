@@ -2,12 +2,15 @@
 #include <cstdio>
 #include <string>
 
+#include "core/quoted_value.hpp"
+
 namespace vibra::cli {
 
 /// The closing line every command that writes files prints on stderr, as
-/// `vibra render` does: "vibra: wrote WHAT". Silent with --quiet.
+/// `vibra render` does: "vibra: wrote WHAT". Silent with --quiet. One line
+/// even for a file name with a newline in it (escaped, never cut).
 inline void say_wrote(bool quiet, const std::string& what) {
-  if (!quiet) std::fprintf(stderr, "vibra: wrote %s\n", what.c_str());
+  if (!quiet) std::fprintf(stderr, "vibra: wrote %s\n", one_line_message(what, what.size() * 4 + 16).c_str());
 }
 
 }  // namespace vibra::cli

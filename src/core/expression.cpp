@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "core/quoted_value.hpp"
 
 namespace vibra {
 
@@ -44,7 +45,7 @@ Expression::Expression(std::string what, std::string text, std::vector<std::stri
     compiled_->parser.SetExpr(text);
     compiled_->parser.Eval();  // compiles now, so errors surface at startup
   } catch (const mu::Parser::exception_type& e) {
-    throw UsageError("cannot read " + what + "='" + text + "': " + one_line(e.GetMsg()) +
+    throw UsageError("cannot read " + what + "='" + quoted_value(text) + "': " + quoted_value(one_line(e.GetMsg()), 80) +
                      " (write a formula in " + (names.empty() ? "numbers" : names) +
                      ", e.g. sin(u) or 3*cos(4*t))");
   }
@@ -60,15 +61,18 @@ const std::string& Expression::text() const { return compiled_->text; }
 double evaluate_constant(const std::string& what, const std::string& text) {
   if (text.find_first_not_of(" \t") == std::string::npos)
     throw UsageError("empty value for " + what + ": give a number, e.g. " + what + "=0.5");
+  // What people try that is not an expression here: say how to write it.
+  const std::string fix = " (write a decimal number or an expression of numbers, pi, e and inf, e.g. 0.5, 1e-3 or 2*pi/40)";
   mu::Parser parser;
   try {
     define_constants(parser);
     parser.SetExpr(text);
     double value = parser.Eval();
-    if (std::isnan(value)) throw UsageError("value of " + what + "='" + text + "' is not a number: give a finite value");
+    if (std::isnan(value)) throw UsageError("value of " + what + "='" + quoted_value(text) + "' is not a number" + fix);
     return value;
   } catch (const mu::Parser::exception_type& e) {
-    throw UsageError("cannot read " + what + "='" + text + "' as a number: " + one_line(e.GetMsg()));
+    throw UsageError("cannot read " + what + "='" + quoted_value(text) + "' as a number: " +
+                     quoted_value(one_line(e.GetMsg()), 60) + fix);
   }
 }
 

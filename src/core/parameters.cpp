@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/quoted_value.hpp"
+#include "core/value_ranges.hpp"
 
 namespace vibra {
 
@@ -58,7 +60,7 @@ const KeySpec& Parameters::spec(const std::string& key) const {
 void Parameters::assign(std::string_view assignment) {
   auto eq = assignment.find('=');
   if (eq == std::string_view::npos || trim(assignment.substr(0, eq)).empty())
-    throw UsageError("'--set " + std::string(assignment) + "' is not KEY=VALUE: write e.g. --set dt=0.05");
+    throw UsageError("'--set " + quoted_value(assignment) + "' is not KEY=VALUE: write e.g. --set dt=0.05");
   set(trim(assignment.substr(0, eq)), trim(assignment.substr(eq + 1)));
 }
 
@@ -68,13 +70,13 @@ void Parameters::set(const std::string& key, const std::string& value) {
   if (s.kind == ValueKind::choice && std::find(s.choices.begin(), s.choices.end(), value) == s.choices.end()) {
     std::string list;
     for (const auto& c : s.choices) list += (list.empty() ? "" : ", ") + c;
-    throw UsageError("'" + value + "' is not a valid " + key + " for " + owner_ + ": choose one of " + list);
+    throw UsageError("'" + quoted_value(value) + "' is not a valid " + key + " for " + owner_ + ": choose one of " + list);
   }
   // Parse now, so a bad value is reported where it was given, and not kept.
   Parameters trial = *this;
   trial.values_[key] = value;
   switch (s.kind) {
-    case ValueKind::number: evaluate_constant(key, value); break;
+    case ValueKind::number: trial.ranged(key); break;
     case ValueKind::angle: trial.angle(key); break;
     case ValueKind::formula: trial.formula(key); break;
     case ValueKind::choice:
@@ -98,16 +100,21 @@ std::string Parameters::text(const std::string& key) const {
   return s.default_value;
 }
 
+double Parameters::ranged(const std::string& key) const {
+  const std::string t = text(key);
+  return in_range(key, evaluate_constant(key, t), t);
+}
+
 double Parameters::number(const std::string& key) const {
-  double value = evaluate_constant(key, text(key));
-  if (std::isinf(value)) throw UsageError(key + " must be finite, not " + text(key));
+  double value = ranged(key);
+  if (std::isinf(value)) throw UsageError(key + " must be finite, not " + quoted_value(text(key)));
   return value;
 }
 
 double Parameters::positive(const std::string& key, bool allow_inf) const {
-  double value = evaluate_constant(key, text(key));
+  double value = ranged(key);
   if (!(value > 0) || (!allow_inf && std::isinf(value)))
-    throw UsageError(key + "=" + text(key) + " must be a positive" + (allow_inf ? "" : " finite") + " number");
+    throw UsageError(key + "=" + quoted_value(text(key)) + " must be a positive" + (allow_inf ? "" : " finite") + " number");
   return value;
 }
 
@@ -124,7 +131,7 @@ double Parameters::angle(const std::string& key) const {
   }
   double value = evaluate_constant(key, t);
   if (!std::isfinite(value)) throw UsageError(key + " must be a finite angle (degrees, or radians with a rad suffix)");
-  return value * scale;
+  return in_range(value_range("angle"), key, value, text(key)) * scale;
 }
 
 Expression Parameters::formula(const std::string& key) const { return Expression(key, text(key), spec(key).variables); }

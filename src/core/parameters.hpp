@@ -56,6 +56,8 @@ class Parameters {
 
  private:
   const KeySpec& spec(const std::string& key) const;
+  /// The number, checked against its row of the ranges (core/value_ranges.hpp).
+  double ranged(const std::string& key) const;
 
   std::string owner_;
   std::vector<KeySpec> specs_;

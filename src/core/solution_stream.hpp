@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/scheme.hpp"
+#include "core/stop_flag.hpp"
 
 namespace vibra {
 
@@ -16,7 +17,9 @@ namespace vibra {
 /// The solution as a stream of samples t_0, t_1, ..., t_steps, one at a time,
 /// in constant memory: observers (CSV rows, frames, ASCII lines, analysis)
 /// consume it as it is computed. A non-finite value stops the stream with a
-/// SolutionError naming the step and time.
+/// SolutionError naming the step and time. Every 65536 steps it looks at
+/// the stop flag, so every loop over a solution (pre-passes, analyses,
+/// convergence studies) ends within a moment of Ctrl-C with Interrupted.
 template <int D>
 class SolutionStream {
  public:
@@ -39,6 +42,7 @@ class SolutionStream {
     current_ = std::visit([](auto& s) { s.step(); return s.current(); }, stepper_);
     ++index_;
     check(current_);
+    poll_stop(index_, steps_);
     return true;
   }
 
@@ -55,6 +59,7 @@ class SolutionStream {
             current_ = s.current();
             ++index_;
             check(current_);
+            poll_stop(index_, steps_);
             if (!observer(current_)) return;
           }
         },

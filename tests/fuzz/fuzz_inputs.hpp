@@ -15,5 +15,10 @@ void scene_file(std::string_view text);
 void set_assignments(std::string_view text);
 /// An expression in u and t, compiled and evaluated; also as a constant.
 void expression(std::string_view text);
+/// A command line, one argument per line (the first names the command), run
+/// in this process as `vibra` runs it, with a tiny picture, files in a
+/// scratch folder, output in memory and a stop after 1.5 s; exit code 0, 2
+/// or 130, and an error must be one line (fuzz_command_line_input.cpp).
+void command_line(std::string_view text);
 
 }  // namespace vibra::fuzz

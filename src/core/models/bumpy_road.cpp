@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "core/error.hpp"
+#include "core/quoted_value.hpp"
 #include "core/models/model.hpp"
 #include "core/road_profile.hpp"
 
@@ -11,6 +12,16 @@ RoadProfile road_of(const Parameters& p, double length) {
   const std::string road = p.text("road");
   const double A = p.number("A"), wavelength = p.positive("wavelength");
   const double dx = p.given("dx") ? p.positive("dx") : wavelength / 100;
+  // The generated road is held as heights every dx: bound their number, so
+  // a fast or long drive asks for a clear refusal, not gigabytes.
+  constexpr double kMostHeights = 2e7;
+  if (road == "sine" || road == "bumps") {
+    const double heights = length / dx;
+    if (!(heights <= kMostHeights))
+      throw UsageError("the road of " + short_number(length) + " m (speed " + quoted_value(p.text("speed")) +
+                       " m/s over the run) sampled every dx = " + short_number(dx) + " m needs " +
+                       short_number(heights) + " heights, more than 2e7: lower speed or T, or raise dx");
+  }
   if (road == "sine") return RoadProfile::sine(A, wavelength, length, dx);
   if (road == "bumps") {
     const double seed = p.number("seed");

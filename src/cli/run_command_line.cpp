@@ -1,0 +1,88 @@
+#include "cli/run_command_line.hpp"
+
+#include <cstdio>
+#include <new>
+#include <sstream>
+#include <string>
+
+#include "cli/command_line.hpp"
+#include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
+#include "core/error.hpp"
+#include "core/quoted_value.hpp"
+#include "render/standard_output.hpp"
+#include "render/stop_signal.hpp"
+
+namespace vibra::cli {
+
+CLI::Option* add_output_option(CLI::App& cmd, std::string& path, const std::string& help) {
+  return cmd.add_option("-o,--output", path, help)->check(CLI::Validator(
+      [](const std::string& value) {
+        return value.empty() ? std::string("the output path is empty: give a file name, e.g. -o out.mp4") : std::string();
+      },
+      "PATH"));
+}
+
+namespace {
+/// --help and CLI11's other exits with code 0: the text goes through the
+/// same checked writes as every other output.
+int print_exit_text(const CLI::App& app, const CLI::Error& e) {
+  std::ostringstream text;
+  const int code = app.exit(e, text);
+  try {
+    render::print_standard_output(text.str());
+  } catch (const render::StandardOutputFailed&) {
+  }
+  return code;
+}
+
+/// The one line of an error: "vibra: error: ...", at most about 240
+/// characters whatever the message quotes (docs/reliability.md, "Messages").
+int report_error(const std::string& message, int code = 2) {
+  std::fprintf(stderr, "vibra: error: %s\n", one_line_message(message).c_str());
+  return code;
+}
+}  // namespace
+
+int run_command_line(int argc, char** argv) {
+  CLI::App app{"vibra: vibration ODEs from Linge & Langtangen chapter 1, solved, drawn, animated"};
+  app.require_subcommand(1);
+  add_solve_command(app);
+  add_render_command(app);
+  add_ascii_command(app);
+  add_plot_command(app);
+  add_analyze_command(app);
+  add_concat_command(app);
+  refuse_empty_values(app);
+  try {
+    if (argc > 1 && argv[1][0] != '-') {
+      std::string names;
+      bool known = false;
+      for (const CLI::App* sub : app.get_subcommands({})) {
+        known |= sub->get_name() == argv[1];
+        names += (names.empty() ? "" : ", ") + sub->get_name();
+      }
+      if (!known)
+        return report_error("unknown command '" + quoted_value(argv[1]) + "': choose one of " + names + " (see vibra --help)");
+    }
+    app.parse(argc, argv);
+    return 0;
+  } catch (const render::StandardOutputFailed&) {
+    return 0;  // recorded: main's check at exit reports it, or not for EPIPE
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return print_exit_text(app, e);  // --help
+    return report_error(std::string(e.what()) + " (see vibra --help)");
+  } catch (const Interrupted& e) {
+    std::fprintf(stderr, "vibra: interrupted by signal %d; %s\n", e.signal, e.outcome);
+    return 128 + e.signal;
+  } catch (const std::bad_alloc&) {
+    // Never the bare "std::bad_alloc": name what asked for the memory.
+    return report_error("out of memory: " + quoted_value(command_line(), 80) +
+                        " needs more memory than this machine gives it: ask for less (a smaller --size, T or "
+                        "periods, a larger dt or --every)");
+  } catch (const std::exception& e) {
+    return report_error(e.what());
+  }
+}
+
+}  // namespace vibra::cli

@@ -1,0 +1,55 @@
+#include "core/stop_flag.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <limits>
+
+namespace vibra {
+
+namespace {
+std::atomic<int> g_stop_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "stored from a signal handler");
+std::atomic<bool> g_quiet{false};
+}  // namespace
+
+void record_stop_signal(int signal) { g_stop_signal.store(signal, std::memory_order_relaxed); }
+
+int stop_signal() { return g_stop_signal.load(std::memory_order_relaxed); }
+
+int take_stop_signal() { return g_stop_signal.exchange(0); }
+
+void throw_if_stop_requested() {
+  if (const int sig = stop_signal()) throw Interrupted{sig};
+}
+
+void quiet_long_work(bool quiet) { g_quiet = quiet; }
+
+void report_long_work(long long done, long long total) {
+  using Clock = std::chrono::steady_clock;
+  // One run at a time is timed: a new one starts when the count goes back.
+  thread_local long long last_done = std::numeric_limits<long long>::max(), first_done = 0;
+  thread_local Clock::time_point start, next_line;
+  const Clock::time_point now = Clock::now();
+  if (done < last_done) {
+    first_done = done;
+    start = now;
+    next_line = now + std::chrono::seconds(2);
+  }
+  last_done = done;
+  if (g_quiet || total == std::numeric_limits<long long>::max() || now < next_line || done <= first_done) return;
+  next_line = now + std::chrono::seconds(10);
+  const double seconds = std::chrono::duration<double>(now - start).count();
+  const double left = seconds * double(total - done) / double(done - first_done);
+  // The estimate in the unit a person reads: 40 s, 12 min, 3.5 h, 9 days, 2.7e+02 years.
+  char estimate[48];
+  if (left < 120) std::snprintf(estimate, sizeof estimate, "%.0f s", left);
+  else if (left < 7200) std::snprintf(estimate, sizeof estimate, "%.0f min", left / 60);
+  else if (left < 2 * 86400) std::snprintf(estimate, sizeof estimate, "%.1f h", left / 3600);
+  else if (left < 365.25 * 86400) std::snprintf(estimate, sizeof estimate, "%.0f days", left / 86400);
+  else std::snprintf(estimate, sizeof estimate, "%.2g years", left / (365.25 * 86400));
+  std::fprintf(stderr, "vibra: step %lld of %lld (%.1f%%), about %s left; Ctrl-C stops it\n", done, total,
+               100.0 * double(done) / double(total), estimate);
+}
+
+}  // namespace vibra

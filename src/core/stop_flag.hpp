@@ -1,0 +1,45 @@
+#pragma once
+// The one stop flag every long loop polls (solver steps, pre-passes,
+// analyses, drawing, encoding, concat): SIGINT and SIGTERM set it
+// (render/stop_signal.hpp installs the handlers), and the loop that sees it
+// throws Interrupted, so the run removes its temporaries and exits with
+// 128 + signal. In core so that the solver itself can look at it.
+
+namespace vibra {
+
+/// Thrown by loops that noticed a stop request; the CLI maps it to 128 + signal.
+struct Interrupted {
+  int signal;
+  const char* outcome = "no partial output was kept";  // what the user finds afterwards
+};
+
+/// Records a stop request (async-signal-safe: one atomic store).
+void record_stop_signal(int signal);
+
+/// The signal number that asked us to stop, or 0.
+int stop_signal();
+
+/// The signal recorded, cleared in the same atomic step (0 if none).
+int take_stop_signal();
+
+/// Throws Interrupted if a stop was requested.
+void throw_if_stop_requested();
+
+/// For long runs of known length: after about 2 s of a run of `total` steps
+/// (1e8 or more; not an endless one), a line on stderr every 10 s or so,
+/// "vibra: step N of M (P%), about S s left", unless quiet_long_work.
+void report_long_work(long long done, long long total);
+/// No progress lines (-q, the Python module, the fuzz targets).
+void quiet_long_work(bool quiet);
+
+/// For hot loops: looks at the flag only every 65536th value of `counter`,
+/// so a loop of tiny steps pays one compare per step; there also reports
+/// the progress of a long run of `total` steps.
+inline void poll_stop(long long counter, long long total = 0) {
+  if ((counter & 0xffff) == 0) [[unlikely]] {
+    throw_if_stop_requested();
+    if (total >= 100'000'000) report_long_work(counter, total);
+  }
+}
+
+}  // namespace vibra

@@ -1,0 +1,254 @@
+// The adversarial matrix (issues 27 and 30): hostile values for every
+// numeric option and key, empty values, paths that are folders, read-only or
+// odd, broken inputs to concat. Each refusal is checked the one way
+// (cli_support.hpp, check_refused): exit code 2, exactly one line on stderr
+// naming the problem, at most about 240 characters, nothing at the output.
+// The odd paths that are valid (spaces, unicode, a newline) must work, and
+// text that reaches a page must arrive escaped.
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "cli_support.hpp"
+
+using vibra::test::check_refused;
+using vibra::test::read_file;
+using vibra::test::run_vibra;
+using vibra::test::ScratchDirectory;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Values no numeric option takes; each case's message must name the option.
+const std::vector<std::string> kBadNumbers = {"''", "nan", "inf", "-inf", "1e308", "1e400", "30abc", "0x10", "'foo(1)'", "-5"};
+
+struct Case {
+  std::string args, expected;
+};
+
+std::size_t longest_line(const std::string& text) {
+  std::size_t longest = 0, start = 0;
+  for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1)
+    longest = std::max(longest, end - start);
+  return std::max(longest, text.size() - start);
+}
+
+}  // namespace
+
+TEST_CASE("adversarial: every numeric render option refuses hostile numbers", "[cli][adversarial]") {
+  // 7 options x 10 values = 70 cases.
+  const std::vector<std::pair<std::string, std::string>> options = {
+      {"--fps", "fps"},         {"--speed", "speed"},     {"--every", "--every"}, {"--threads", "--threads"},
+      {"--crf", "--crf"},       {"--window", "window"},   {"--at", "--at"}};
+  int cases = 0;
+  for (const auto& [option, named] : options)
+    for (const auto& value : kBadNumbers) {
+      const std::string out = option == "--at" ? " -o OUT.png" : " -o OUT.mp4";
+      check_refused("render --set periods=0.2 " + option + " " + value + out, named);
+      ++cases;
+    }
+  CHECK(cases == 70);
+}
+
+TEST_CASE("adversarial: model keys refuse hostile numbers, blamed on the key", "[cli][adversarial]") {
+  // 6 keys x 8 values = 48 cases, through solve; the message names the key.
+  const std::vector<std::string> keys = {"dt", "T", "Theta", "alpha", "periods", "steps_per_period"};
+  const std::vector<std::string> values = {"nan", "1e308", "1e400", "-inf", "30abc", "0x10", "'foo(1)'", "''"};
+  int cases = 0;
+  for (const auto& key : keys)
+    for (const auto& value : values) {
+      check_refused("solve pendulum --set " + key + "=" + value + " -o OUT.csv", key);
+      ++cases;
+    }
+  CHECK(cases == 48);
+}
+
+TEST_CASE("adversarial: empty and malformed values of every kind of option", "[cli][adversarial]") {
+  const Case cases[] = {
+      // An empty value is an error, never the default (10).
+      {"render --size '' -o OUT.mp4", "--size: the value is empty"},
+      {"render --quality '' -o OUT.mp4", "--quality: the value is empty"},
+      {"render --segment '' -o OUT.mp4", "--segment: the value is empty"},
+      {"render --panels '' -o OUT.mp4", "--panels: the value is empty"},
+      {"render --layout '' -o OUT.mp4", "--layout: the value is empty"},
+      {"render --compare '' -o OUT.mp4", "--compare: the value is empty"},
+      {"render --window-mode '' -o OUT.mp4", "--window-mode: the value is empty"},
+      {"render --codec '' -o OUT.mp4", "--codec: the value is empty"},
+      {"render --preset '' -o OUT.mp4", "--preset: the value is empty"},
+      {"render --format '' -o OUT.mp4", "--format: the value is empty"},
+      // Sizes (7).
+      {"render --size 64x -o OUT.mp4", "WxH"},
+      {"render --size 1e9x1e9 -o OUT.mp4", "WxH"},
+      {"render --size -64x36 -o OUT.mp4", "WxH"},
+      {"render --size 0x0 -o OUT.mp4", "1..8192"},
+      {"render --size 64x36x2 -o OUT.mp4", "WxH"},
+      {"render --size 99999999999x1 -o OUT.mp4", "WxH"},
+      {"plot pendulum --size 100000x100000 -o OUT.png", "8192"},
+      // ascii and analyze options (9).
+      {"ascii undamped --width ''", "--width: the value is empty"},
+      {"ascii undamped --width 1e308", "--width"},
+      {"ascii undamped --rate -1", "--rate"},
+      {"ascii undamped --rate nan", "--rate"},
+      {"ascii undamped --rate 1e308", "--rate"},
+      {"analyze orbit --orbits 0", "--orbits"},
+      {"analyze orbit --orbits 1e10", "--orbits"},
+      {"analyze orbit --orbits 30abc", "--orbits"},
+      {"analyze orbit --orbits ''", "empty value for --orbits"},
+      // Parser text gets a fix (5).
+      {"solve pendulum --set dt=nan -o OUT.csv", "write a decimal number or an expression"},
+      {"solve pendulum --set dt=0x10 -o OUT.csv", "write a decimal number or an expression"},
+      {"solve pendulum --set dt=1.0abc -o OUT.csv", "write a decimal number or an expression"},
+      {"solve pendulum --set 'dt=foo(1)' -o OUT.csv", "write a decimal number or an expression"},
+      {"render --fps 30abc -o OUT.mp4", "write a decimal number or an expression"},
+      // An input that overflows is blamed on the input, not on dt (3).
+      {"solve vibration --set I=1e308 -o OUT.csv", "I=1e308 must be a number"},
+      {"solve vibration --set 'F=ln(0)' -o OUT.csv", "an input is infinite or overflows"},
+      {"solve vibration --set 'F=1/0' -o OUT.csv", "an input is infinite or overflows"},
+      // Work without bound is refused with the size it would need (3).
+      {"render bumpy_road --set speed=1e12 -o OUT.mp4", "heights, more than 2e7"},
+      {"render bumpy_road --set dx=1e-12 -o OUT.mp4", "heights, more than 2e7"},
+      {"solve pendulum --set T=1e15 --set dt=1e-9 -o OUT.csv", "too many"},
+      // A window below a time step: once heap corruption, once an endless tick loop (2).
+      {"render --window 1e-300 --at 0.5 -o OUT.png", "narrower than one time step"},
+      {"render --window 1e-16 --set periods=0.2 -o OUT.mp4", "narrower than one time step"},
+  };
+  for (const auto& c : cases) check_refused(c.args, c.expected);
+  CHECK(std::size(cases) == 39);
+}
+
+TEST_CASE("adversarial: long values and newlines are quoted shortened, on one line", "[cli][adversarial]") {
+  ScratchDirectory dir;
+  const std::string huge(100000, '1');
+  for (const std::string& args : {"solve pendulum --set 'dt=" + huge + "x' -o " + (dir / "a.csv"),
+                                  "render --at '" + huge + "+' -o " + (dir / "a.png"),
+                                  "solve pendulum --set \"$(printf 'dt=1\\n2')\" -o " + (dir / "a.csv"),
+                                  "render --at 1e308 -o " + (dir / "a.png"),
+                                  "render --set 'Theta=" + huge + "' -o " + (dir / "a.mp4")}) {
+    INFO(args.substr(0, 200));
+    const auto r = run_vibra(args);
+    CHECK(r.exit_code == 2);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(longest_line(r.err) <= 240);
+    CHECK(r.err.find(std::string(200, '1')) == std::string::npos);
+  }
+  CHECK(dir.empty());
+}
+
+TEST_CASE("adversarial: outputs onto folders and into read-only places", "[cli][adversarial]") {
+  ScratchDirectory dir;
+  fs::create_directory(dir / "folder.csv");
+  fs::create_directory(dir / "folder.mp4");
+  fs::create_directory(dir / "folder.png");
+  fs::create_directory(dir / "folder.html");
+  const Case cases[] = {
+      {"solve pendulum -o " + (dir / "folder.csv"), "is a folder, not a file"},
+      {"render --set periods=0.2 -o " + (dir / "folder.mp4"), "is a folder, not a file"},
+      {"render --at 0.5 -o " + (dir / "folder.png"), "is a folder, not a file"},
+      {"render --set periods=0.2 -o " + (dir / "folder.html"), "is a folder, not a file"},
+      {"plot pendulum -o " + (dir / "folder.png"), "is a folder, not a file"},
+      {"analyze convergence undamped --levels 3 -o " + (dir / "folder.png"), "is a folder, not a file"},
+      // /proc refuses new files even to root.
+      {"solve pendulum -o /proc/vibra_adversarial.csv", "/proc/vibra_adversarial.csv"},
+      {"render --set periods=0.2 -o /proc/vibra_adversarial.mp4", "/proc/vibra_adversarial.mp4"},
+      {"plot pendulum -o /proc/self/vibra_adversarial.png", "'/proc/self' is not writable"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.args);
+    const auto r = run_vibra(c.args);
+    INFO(r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains(c.expected));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+  for (const char* folder : {"folder.csv", "folder.mp4", "folder.png", "folder.html"}) CHECK(fs::is_empty(dir / folder));
+  CHECK_FALSE(fs::exists("/proc/vibra_adversarial.csv"));
+}
+
+TEST_CASE("adversarial: concat of broken parts, or onto a part, writes nothing", "[cli][adversarial][video]") {
+  ScratchDirectory dir;
+  const std::string small = " --size 160x90 --fps 10 --set periods=0.5 -q";
+  for (int k = 0; k < 2; ++k)
+    REQUIRE(run_vibra("render" + small + " --segment " + std::to_string(k) + "/2 -o " + (dir / "p.mp4")).exit_code == 0);
+  const std::string p0 = dir / "p.seg-0-of-2.mp4", p1 = dir / "p.seg-1-of-2.mp4";
+  std::ofstream(dir / "zero.mp4", std::ios::binary).flush();
+  const std::string bytes = read_file(p1);
+  std::ofstream(dir / "truncated.mp4", std::ios::binary) << bytes.substr(0, bytes.size() / 3);
+  // Damaged boxes (the container's structure): bit flips inside the frames'
+  // payload alone would pass, as concat copies packets without decoding them.
+  std::string corrupted = bytes;
+  for (std::size_t i = 8; i < bytes.size(); i += 61) corrupted[i] = static_cast<char>(corrupted[i] ^ 0x5a);
+  std::ofstream(dir / "corrupted.mp4", std::ios::binary) << corrupted;
+  std::ofstream(dir / "text.mp4") << "just some text, not a video\n";
+  std::ofstream(dir / "image.mp4", std::ios::binary) << std::string("\x89PNG\r\n\x1a\n", 8) << std::string(100, '\0');
+  fs::create_directory(dir / "joined_folder.mp4");
+  const std::string out = dir / "joined.mp4";
+  const Case cases[] = {
+      {"concat " + p0 + " " + (dir / "zero.mp4") + " -o " + out, "zero.mp4"},
+      {"concat " + p0 + " " + (dir / "truncated.mp4") + " -o " + out, "truncated.mp4"},
+      {"concat " + p0 + " " + (dir / "corrupted.mp4") + " -o " + out, "corrupted.mp4"},
+      {"concat " + p0 + " " + (dir / "text.mp4") + " -o " + out, "text.mp4"},
+      {"concat " + p0 + " " + (dir / "image.mp4") + " -o " + out, "image.mp4"},
+      {"concat " + p0 + " " + p1 + " -o " + p0, "this run reads it"},
+      {"concat " + p0 + " " + p1 + " -o " + (dir / "joined_folder.mp4"), "is a folder, not a file"},
+      {"concat " + p0 + " " + p1 + " -o ''", "the output path is empty"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.args);
+    const auto r = run_vibra(c.args);
+    INFO(r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains(c.expected));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(fs::exists(out));
+    fs::remove(out);  // so one failure does not fail every case after it
+  }
+  CHECK(read_file(p1) == bytes);  // the parts are untouched
+  CHECK(fs::is_empty(dir / "joined_folder.mp4"));
+}
+
+TEST_CASE("adversarial: odd but valid paths work, and the wrote line stays one line", "[cli][adversarial]") {
+  ScratchDirectory dir;
+  for (const std::string name : {"with space.csv", "unicodé θ ✓.csv", "new\nline.csv"}) {
+    INFO(name);
+    const std::string path = dir / name;
+    std::string quoted = "'";
+    for (char c : path) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    quoted += "'";
+    const auto r = run_vibra("solve undamped --set T=1 -o " + quoted);
+    INFO(r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(fs::is_regular_file(path));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') <= 1);  // "wrote ..." at most, a newline in it escaped
+  }
+}
+
+TEST_CASE("adversarial: markup in names reaches the page escaped", "[cli][adversarial][page]") {
+  ScratchDirectory dir;
+  // A file name and a folder name the page shows (in the command line and
+  // its links): both carry markup that would run if pasted raw.
+  const std::string folder = dir / "x<";
+  const std::string page = folder + "/script><img src=x onerror=alert(1)>.html";
+  const auto r = run_vibra("render --size 160x90 --fps 5 --set periods=0.3 -q --frames-player -o '" + page + "'");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const std::string html = read_file(page);
+  REQUIRE_FALSE(html.empty());
+  CHECK(html.find("<img src=x onerror=alert(1)>") == std::string::npos);
+  CHECK(html.find("x</script>") == std::string::npos);
+}
+
+TEST_CASE("adversarial: a huge amplitude draws its still in bounded time", "[cli][adversarial]") {
+  // Theta = 1e9 degrees once took minutes in Cairo (an arc of 1.7e7 turns);
+  // the bound is a hang guard, far above the ordinary second.
+  ScratchDirectory dir;
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = run_vibra("render --set Theta=1e9 --at 1 -q -o " + (dir / "still.png"));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(seconds < 60);
+  CHECK(vibra::test::png_size(dir / "still.png") == std::pair{1280, 720});
+}
