@@ -169,7 +169,7 @@ TEST_CASE("the new keys refuse bad values with one line", "[schemes][adaptive][c
     vibra::test::check_refused(args, expected);
 }
 
-TEST_CASE("--allow-unstable draws the growth above the stability limit (Fig 1.5)", "[schemes][cli]") {
+TEST_CASE("with --allow-unstable, solve, plot, render and ascii draw the growth above the stability limit (Fig 1.5)", "[schemes][cli]") {
   // dt = 0.3184 is just above 1/pi for w = 2 pi: refused, then run with a warning.
   const std::string run = "undamped --set dt=0.3184 --set T=20";
   vibra::test::check_refused("solve " + run, "or draw the growth with --allow-unstable");
