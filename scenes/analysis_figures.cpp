@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/analysis/fd_accuracy.hpp"
 #include "core/analysis/numerical_frequency.hpp"
 
 namespace vibra::scenes {
@@ -33,22 +34,30 @@ std::string number(const char* format, double x) {
 }
 }  // namespace
 
-render::Figure convergence_figure(const ModelConvergence& study, const std::string& title, int width, int height) {
+render::Figure convergence_figure(const std::vector<ModelConvergence>& studies, const std::string& title, int width,
+                                  int height) {
   render::Figure figure(width, height, title);
-  const auto& levels = study.levels;
   PanelOptions options = log_log("<i>E</i>, discrete L<sub>2</sub> error", "Δ<i>t</i>");
-  for (const auto& level : levels) options.x_ticks.push_back(level.dt);
+  for (const auto& level : studies.front().levels) options.x_ticks.push_back(level.dt);
   const int panel = figure.add_panel(options);
-  const std::string last_rate = levels.size() > 1 ? number("%.2f", levels.back().rate) : "";
-  render::Series& errors = figure.add_points(panel, "<i>E</i>, last rate " + last_rate, data_style(0));
-  for (const auto& level : levels) errors.add(level.dt, level.error);
-  // The reference slope runs parallel to the data at half its height, so both stay visible.
-  const ConvergenceLevel& finest = levels.back();
-  const double c = 0.5 * finest.error / std::pow(finest.dt, study.order);
-  render::Series& slope = figure.add_points(
-      panel, "slope " + std::to_string(study.order) + ", the order of " + study.scheme, reference_style());
-  slope.add(levels.front().dt, c * std::pow(levels.front().dt, study.order));
-  slope.add(finest.dt, c * std::pow(finest.dt, study.order));
+  const bool compare = studies.size() > 1;
+  for (size_t k = 0; k < studies.size(); ++k) {
+    const ModelConvergence& study = studies[k];
+    const auto& levels = study.levels;
+    const std::string last_rate = levels.size() > 1 ? number("%.2f", levels.back().rate) : "";
+    render::Series& errors =
+        figure.add_points(panel, (compare ? study.scheme + ": " : "<i>E</i>, ") + "last rate " + last_rate, data_style(k));
+    for (const auto& level : levels) errors.add(level.dt, level.error);
+    // The reference slope runs parallel to the data at half its height, so both stay visible.
+    const ConvergenceLevel& finest = levels.back();
+    const double c = 0.5 * finest.error / std::pow(finest.dt, study.order);
+    SeriesStyle style = reference_style();
+    if (compare) style.color = series_color(k).with_alpha(0.75);
+    render::Series& slope = figure.add_points(
+        panel, "slope " + std::to_string(study.order) + ", the order of " + study.scheme, style);
+    slope.add(levels.front().dt, c * std::pow(levels.front().dt, study.order));
+    slope.add(finest.dt, c * std::pow(finest.dt, study.order));
+  }
   return figure;
 }
 
@@ -130,6 +139,24 @@ render::Figure frequency_figure(double w, int width, int height) {
   return figure;
 }
 
+render::Figure fd_accuracy_figure(int width, int height) {
+  render::Figure figure(width, height, "Accuracy of the centered difference for <i>u</i>″ (Exercise 1.8)");
+  const int panel = figure.add_panel({"<i>E</i>(<i>p</i>) = [<i>D<sub>t</sub>D<sub>t</sub> u</i>]/<i>u</i>″",
+                                      "<i>p</i> = <i>ω</i>Δ<i>t</i>", AxisScale::linear, AxisScale::linear, false,
+                                      std::make_pair(0.0, M_PI)});
+  render::Series& exact = figure.add_curve(panel, "4 sin<sup>2</sup>(<i>p</i>/2)/<i>p</i><sup>2</sup>",
+                                           {series_color(0), 2.4}, 0, M_PI);
+  render::Series& taylor = figure.add_curve(
+      panel, "1 − <i>p</i><sup>2</sup>/12 + <i>p</i><sup>4</sup>/360", {series_color(1), 2.2, true}, 0, M_PI);
+  const int samples = 400;
+  for (int i = 0; i <= samples; ++i) {
+    const double p = M_PI * i / samples;
+    exact.add(p, fd_accuracy(p));
+    taylor.add(p, fd_accuracy_taylor(p));
+  }
+  return figure;
+}
+
 render::Figure amplitude_figure(const std::vector<LabelledCycles>& runs, double I, const std::string& title, int width,
                                 int height) {
   render::Figure figure(width, height, title);
@@ -156,7 +183,7 @@ render::Figure amplitude_figure(const std::vector<LabelledCycles>& runs, double 
 }
 
 render::Figure orbit_figure(const std::vector<OrbitRun>& runs, const std::vector<OrbitRun>& long_runs,
-                            const std::vector<PowerLaw>& long_fits, const std::string& title, int width, int height) {
+                            const std::vector<Line>& long_fits, const std::string& title, int width, int height) {
   render::Figure figure(width, height, title);
   const long long orbits = runs.empty() || runs[0].blocks.empty() ? 0 : runs[0].blocks.back().orbits;
   PanelOptions options = log_log("max |position error| over " + std::to_string(orbits) + " orbits", "steps per orbit");
@@ -166,16 +193,20 @@ render::Figure orbit_figure(const std::vector<OrbitRun>& runs, const std::vector
   for (const auto& run : runs) errors.add(run.steps_per_orbit, run.max_error);
   if (long_runs.empty()) return figure;
   const long long block = long_runs[0].blocks.front().orbits;
-  const int by_orbits =
-      figure.add_panel(log_log("max |position error| per block of " + std::to_string(block) + " orbits, PEFRL (dashed: least-squares fits)", "orbits"));
+  const int phase = figure.add_panel(
+      linear("angle error atan2(<i>y</i>, <i>x</i>) − <i>t</i> (rad), PEFRL; dashed: least-squares lines", "orbits"));
+  const int energy = figure.add_panel({"max |<i>E</i> − <i>E</i>(0)| per block of " + std::to_string(block) + " orbits",
+                                       "orbits", AxisScale::linear, AxisScale::logarithmic});
   for (size_t k = 0; k < long_runs.size(); ++k) {
     const OrbitRun& run = long_runs[k];
-    render::Series& blocks = figure.add_points(
-        by_orbits, std::to_string(run.steps_per_orbit) + " steps/orbit: ∝ <i>n</i><sup>" + number("%.2f", long_fits[k].exponent) + "</sup>",
-        {series_color(k + 1), 2});
-    for (const auto& b : run.blocks) blocks.add(b.orbits, b.max_error);
-    render::Series& fit = figure.add_points(by_orbits, "", {series_color(k + 1).with_alpha(0.8), 1.6, true});
-    fit.add(run.blocks.front().orbits, long_fits[k](run.blocks.front().orbits));
+    const render::Color color = series_color(k + 1);
+    const std::string name = std::to_string(run.steps_per_orbit) + " steps/orbit";
+    render::Series& data = figure.add_points(
+        phase, name + ": " + number("%.2g", long_fits[k].slope) + " rad per orbit", {color, 2, false, true});
+    render::Series& energies = figure.add_points(energy, name, {color, 2, false, true});
+    for (const auto& b : run.blocks) data.add(b.orbits, b.phase), energies.add(b.orbits, b.energy_error);
+    render::Series& fit = figure.add_points(phase, "", {color.with_alpha(0.8), 1.6, true});
+    fit.add(0, long_fits[k](0));
     fit.add(run.blocks.back().orbits, long_fits[k](run.blocks.back().orbits));
   }
   return figure;

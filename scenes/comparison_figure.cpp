@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "render/stop_signal.hpp"
+#include "scenes/rows_inside_step.hpp"
 #include "scenes/comparison_labels.hpp"
 #include "scenes/plot_panels.hpp"
 #include "scenes/run_caption.hpp"
@@ -98,10 +99,17 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
   }
 
   std::vector<std::vector<double>> last(comparison.size());
+  std::vector<double> between;
   long long samples = 0;
   comparison.advance_to(T, [&](size_t member, std::span<const double> row) {
-    for (const Feed& f : feeds)
-      if (f.member == member) f.series->add(f.x_factor * row[f.x_column], f.y_factor * row[f.y_column]);
+    auto feed = [&](std::span<const double> r) {
+      for (const Feed& f : feeds)
+        if (f.member == member) f.series->add(f.x_factor * r[f.x_column], f.y_factor * r[f.y_column]);
+    };
+    const Trajectory& run = comparison.trajectory(member);
+    between.resize(row.size());
+    if (!last[member].empty()) rows_inside_step(run, last[member][0], inside_step_spacing(run.info().mesh, width), between, feed);
+    feed(row);
     last[member].assign(row.begin(), row.end());
     if ((++samples & 0xffff) == 0) render::throw_if_stop_requested();
   });

@@ -20,7 +20,7 @@ ComparisonPagePlots::ComparisonPagePlots(const ComparisonTrajectory& runs, const
 
 void ComparisonPagePlots::observe(const ComparisonTrajectory& runs, std::span<const double> row) {
   for (size_t i = 0; i < members_.size(); ++i) {
-    if (runs.at_sample(i)) members_[i].observe(columns_[i].slice(row, slice_));
+    if (runs.at_sample(i)) members_[i].observe(runs.comparison().trajectory(i), columns_[i].slice(row, slice_));
   }
 }
 

@@ -32,6 +32,7 @@ PagePlotCollector::PagePlotCollector(const TrajectoryInfo& info, const std::vect
   const std::vector<std::string> order = ordered_plot_panels(info, panels);
   const bool with_exact = std::find(panels.begin(), panels.end(), "exact") != panels.end();
   const TimeMesh& mesh = info.mesh;
+  if (mesh.adaptive()) grid_ = mesh.dt;
   auto data = [&] { return render::PageSeriesData(0, mesh.T, mesh.dt, mesh.steps + 1); };
   for (const auto& name : order) {
     if (name == "phase" || name == "path")
@@ -53,7 +54,16 @@ PagePlotCollector::PagePlotCollector(const TrajectoryInfo& info, const std::vect
   }
 }
 
-void PagePlotCollector::observe(std::span<const double> row) {
+void PagePlotCollector::observe(const Trajectory& run, std::span<const double> row) {
+  if (grid_ <= 0) return add(row);
+  on_grid_.resize(row.size());
+  for (double t; next_ <= run.info().mesh.steps && (t = next_ * grid_) <= row[0]; ++next_) {
+    run.row_at(t, on_grid_);
+    add(on_grid_);
+  }
+}
+
+void PagePlotCollector::add(std::span<const double> row) {
   for (const Feed& f : feeds_) panels_[f.panel].series[f.series].data.add(f.value(row));
 }
 

@@ -29,8 +29,11 @@ class PagePlotCollector {
   PagePlotCollector(const TrajectoryInfo&, const std::vector<std::string>& panels, const std::string& run,
                     std::optional<render::Color> run_color = std::nullopt);
 
-  /// One solver row: t first, then the model's columns, on the mesh t_n = n dt.
-  void observe(std::span<const double> row);
+  /// One solver row of `run`: t first, then the model's columns. A page's
+  /// series lie on the mesh t_n = n dt; an adaptive run's rows fall between
+  /// its points, so it gives the page its rows on the mesh from its dense
+  /// output instead (Trajectory::row_at inside the step just taken).
+  void observe(const Trajectory& run, std::span<const double> row);
 
   /// The panels collected; the collector is spent.
   std::vector<render::PagePanel> take_panels();
@@ -40,8 +43,13 @@ class PagePlotCollector {
     size_t panel, series;
     std::function<double(std::span<const double>)> value;
   };
+  void add(std::span<const double> row);
+
   std::vector<render::PagePanel> panels_;
   std::vector<Feed> feeds_;
+  double grid_ = 0;         ///< the mesh's dt for an adaptive run, 0 when its rows are on the mesh
+  long long next_ = 0;      ///< the next mesh point an adaptive run owes the page
+  std::vector<double> on_grid_;
 };
 
 /// Adds one run's panels to a page's: each curve joins the panel of the same

@@ -391,7 +391,7 @@ void run_render(const RenderRequest& r) {
   }
   HistoryFeed(*pre_pass, *scene, scene->sample_interval()).record_all([&](std::span<const double> row) {
     if (comparison_plots) comparison_plots->observe(*runs, row);
-    if (page_plots) page_plots->observe(row);
+    if (page_plots) page_plots->observe(*pre_pass, row);
     if (page) csv->write(pre_pass->index(), pre_pass->done(), row);
   });
   pre_pass.reset();

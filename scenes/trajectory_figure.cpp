@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "render/stop_signal.hpp"
+#include "scenes/rows_inside_step.hpp"
 
 namespace vibra::scenes {
 
@@ -61,9 +62,16 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
   std::vector<double> row(trajectory.width());
   trajectory.row(row);
   for (const Feed& f : starts) f.series->add(f.x_factor * row[f.x_column], f.y_factor * row[f.y_column]);
+  auto feed = [&](std::span<const double> r) {
+    for (const Feed& f : feeds) f.series->add(f.x_factor * r[f.x_column], f.y_factor * r[f.y_column]);
+  };
+  const double spacing = inside_step_spacing(info.mesh, width);
+  double previous = trajectory.t();
   do {
+    rows_inside_step(trajectory, previous, spacing, row, feed);
     trajectory.row(row);
-    for (const Feed& f : feeds) f.series->add(f.x_factor * row[f.x_column], f.y_factor * row[f.y_column]);
+    feed(row);
+    previous = trajectory.t();
     if ((trajectory.index() & 0xffff) == 0) render::throw_if_stop_requested();
   } while (trajectory.advance());
   return figure;

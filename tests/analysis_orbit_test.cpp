@@ -1,10 +1,10 @@
-// The circular orbit of two-body (Exercise 1.28) and the power-law fit of its error growth.
+// The circular orbit of two-body (Exercise 1.28) and the line fitted to its phase drift.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <ctime>
 
 #include "core/analysis/orbit_error.hpp"
-#include "core/analysis/power_law_fit.hpp"
+#include "core/analysis/line_fit.hpp"
 
 using namespace vibra;
 
@@ -41,11 +41,32 @@ TEST_CASE("an orbit run records the largest error per block of orbits", "[analys
   CHECK(run.cpu_seconds <= spent);
 }
 
-TEST_CASE("the power-law fit recovers c x^p", "[analysis]") {
+TEST_CASE("a long run's blocks follow the phase and the energy error", "[analysis]") {
+  // PEFRL at 100 steps an orbit falls behind by the same angle every orbit
+  // (its 4th-order phase error), while its energy error stays at rounding.
+  const OrbitRun run = circular_orbit_run("pefrl", 100, 40, 4);
+  REQUIRE(run.blocks.size() == 10);
+  std::vector<double> orbits, phases;
+  for (const auto& b : run.blocks) orbits.push_back(b.orbits), phases.push_back(b.phase);
+  const Line fit = fit_line(orbits, phases);
+  INFO("phase drift " << fit.slope << " rad per orbit");
+  CHECK(fit.slope < -1e-7);
+  CHECK(std::abs(fit.intercept) < 0.01 * std::abs(fit.slope) * 40);
+  CHECK(largest_residual(fit, orbits, phases) < 0.01 * std::abs(fit.slope) * 40);
+  CHECK(run.blocks.back().phase / run.blocks.front().phase == Approx(10).epsilon(0.01));
+  for (const auto& b : run.blocks) CHECK(b.energy_error < 1e-11);
+  // The position error is the phase error's chord while the radius holds.
+  CHECK(run.blocks.back().max_error == Approx(std::abs(run.blocks.back().phase)).epsilon(0.01));
+}
+
+TEST_CASE("the line fit recovers a + b x and its largest residual", "[analysis]") {
   std::vector<double> x, y;
-  for (double v = 1e3; v <= 1e5; v *= 1.5) x.push_back(v), y.push_back(3e-7 * std::pow(v, 1.02));
-  const PowerLaw fit = fit_power_law(x, y);
-  CHECK(fit.exponent == Approx(1.02).epsilon(1e-10));
-  CHECK(fit.coefficient == Approx(3e-7).epsilon(1e-8));
-  CHECK(fit(1e9) == Approx(3e-7 * std::pow(1e9, 1.02)).epsilon(1e-8));
+  for (double v = 1e3; v <= 1e5; v += 1e3) x.push_back(v), y.push_back(2e-9 * v - 3e-7);
+  Line fit = fit_line(x, y);
+  CHECK(fit.slope == Approx(2e-9).epsilon(1e-10));
+  CHECK(fit.intercept == Approx(-3e-7).epsilon(1e-8));
+  CHECK(largest_residual(fit, x, y) < 1e-15);
+  y[10] += 1e-6;  // one stray point
+  fit = fit_line(x, y);
+  CHECK(largest_residual(fit, x, y) == Approx(1e-6).epsilon(0.05));
 }

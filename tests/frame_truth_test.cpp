@@ -90,6 +90,13 @@ TEST_CASE("frames are stills across time steps, speeds, layouts and comparisons"
       {"spring_dashpot --size 640x360 --set T=8 --energy-bars --panels u,phase,energy", 30, 1, {7, 50, -1}},
       {"spring --size 320x180 --set T=2 --layout plot", 60, 0.1, {7, 50, -1}},
       {"spring --size 320x180 --set T=2 --layout grid --compare dt=0.2,0.1", 60, 0.1, {7, 50, -1}},
+      // Adaptive schemes: uneven steps, frames from dopri5's dense output
+      // (rkf45's Hermite), a loose tolerance so steps span several frames.
+      {"spring --size 320x180 --set T=6 --set scheme=dopri5 --set rtol=1e-4", 30, 1, {5, 61, -1}},
+      {"pendulum --size 320x180 --set T=8 --set scheme=rkf45 --window 2", 30, 1, {7, 50, -1}},
+      {"spring --size 640x360 --set T=4 --compare scheme=centered,dopri5 --panels u,phase", 30, 1, {7, 50, -1}},
+      {"bouncing_ball --size 320x180 --set T=3 --set scheme=dopri5", 10, 0.25, {3, 17, -1}},
+      {"spring --size 320x180 --set T=2 --set dt=0.05 --set scheme=dopri5 --frame-per-step", 0, 0, {3, 17, -1}, 0.05},
   };
   for (const Case& c : cases)
     SECTION(c.args + " at " + exact(c.fps) + " fps, speed " + exact(c.speed)) { check_frames_are_stills(c); }

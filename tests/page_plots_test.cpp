@@ -146,7 +146,8 @@ TEST_CASE("a short run is kept sample by sample, and many series share the budge
 
 TEST_CASE("runs compared on one page: a curve per run in each panel, a legend key per run", "[page]") {
   std::vector<PagePanel> page;
-  for (const char* scheme : {"rk4", "euler-cromer"}) {
+  // dopri5's uneven steps reach the page on the same mesh as the others'.
+  for (const char* scheme : {"rk4", "euler-cromer", "dopri5"}) {
     const ModelDefinition& model = find_model("pendulum");
     Parameters p = model_parameters(model);
     p.assign(std::string("scheme=") + scheme);
@@ -157,20 +158,30 @@ TEST_CASE("runs compared on one page: a curve per run in each panel, a legend ke
     std::vector<double> row(trajectory->width());
     do {
       trajectory->row(row);
-      collector.observe(row);
+      collector.observe(*trajectory, row);
     } while (trajectory->advance());
     scenes::merge_page_panels(page, collector.take_panels());
   }
   REQUIRE(page.size() == 3);
   CHECK(page[0].label == "θ (°)");
   for (const auto& panel : page) {
-    REQUIRE(panel.series.size() == 2);
+    REQUIRE(panel.series.size() == 3);
     CHECK(panel.series[0].key == "rk4");
     CHECK(panel.series[1].key == "euler-cromer");
+    CHECK(panel.series[2].key == "dopri5");
+    CHECK(panel.series[2].data.samples() == panel.series[0].data.samples());
   }
+  // On the mesh, dopri5's theta (rtol 1e-6) is RK4's (dt = 2 pi/60) to well within a degree.
+  const auto& rk4 = page[0].series[0].data.exact();
+  const auto& dopri5 = page[0].series[2].data.exact();
+  REQUIRE(rk4.size() == dopri5.size());
+  double largest = 0;
+  for (size_t i = 0; i < rk4.size(); ++i) largest = std::max(largest, double(std::abs(rk4[i] - dopri5[i])));
+  CHECK(largest < 0.05);
   // theta is in degrees: Theta's default, 60 degrees, is the largest value.
   CHECK(page[0].series[0].data.hi() == Approx(60).epsilon(1e-12));
   const std::string json = render::page_plots_json(page, render::kPagePlotBudgetBytes);
   CHECK(count(json, "\"key\":\"rk4\"") == 3);
   CHECK(count(json, "\"key\":\"euler-cromer\"") == 3);
+  CHECK(count(json, "\"key\":\"dopri5\"") == 3);
 }

@@ -64,7 +64,7 @@ void bind_analyses(py::module_& m) {
       [](const std::string& model, const std::vector<std::string>& settings, std::optional<int> levels,
          const std::string& figure,
          const std::string& size) {
-        return run(&app::convergence_experiment, app::ConvergenceOptions{model, settings, levels}, figure, size);
+        return run(&app::convergence_experiment, app::ConvergenceOptions{model, settings, levels, ""}, figure, size);
       },
       py::arg("model"), py::arg("settings"), py::arg("levels"), py::arg("figure"), py::arg("size"));
   m.def(

@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "app/experiments.hpp"
+#include "core/analysis/phase_lag.hpp"
 #include "app/list_option.hpp"
 #include "core/analysis/empirical.hpp"
 #include "core/analysis/parameters_with_dt.hpp"
@@ -23,7 +24,7 @@ ExperimentResult empirical_experiment(const EmpiricalOptions& o) {
     for (double dt : positive_list("--dt", o.dt)) runs.push_back(parameters_with_dt(model, o.settings, dt));
 
   const ExtremumTiming timing = o.mesh_extrema ? ExtremumTiming::mesh : ExtremumTiming::fitted;
-  Table table({"dt", "i", "t", "period", "angular_frequency", "amplitude"});
+  Table table({"dt", "i", "t", "period", "angular_frequency", "amplitude", "phase_lag"});
   std::vector<scenes::LabelledCycles> labelled;
   TrajectoryInfo info;
   for (const Parameters& p : runs) {
@@ -38,7 +39,11 @@ ExperimentResult empirical_experiment(const EmpiricalOptions& o) {
                     info.columns[1].c_str(), dt);
       throw UsageError(message);
     }
-    for (const auto& c : cycles) table.add_row({dt, static_cast<long long>(c.i), c.t, c.period, 2 * M_PI / c.period, c.amplitude});
+    // Against the exact solution's maxima where it is known (Exercise 1.2); empty otherwise.
+    const bool exact = info.exact && info.exact_label == "exact" && info.exact_period > 0;
+    for (const auto& c : cycles)
+      table.add_row({dt, static_cast<long long>(c.i), c.t, c.period, 2 * M_PI / c.period, c.amplitude,
+                     exact ? Table::Cell(phase_lag(info.exact, info.exact_period, c.t)) : Table::Cell(std::string())});
     char label[64];
     std::snprintf(label, sizeof label, "Δ<i>t</i> = %g", dt);
     labelled.push_back({label, std::move(cycles)});

@@ -42,6 +42,9 @@ struct ConvergenceOptions {
   /// settle (kAutoMinLevels to kAutoMaxLevels levels). The conclusion says
   /// whether they have.
   std::optional<int> levels;
+  /// "scheme=A,B,...": one study per scheme, in one table (a scheme column
+  /// first) and one log-log figure with a line per scheme (Fig 1.1); "" for one.
+  std::string compare;
 };
 ExperimentResult convergence_experiment(const ConvergenceOptions&);
 
@@ -49,6 +52,9 @@ struct EnergyOptions {
   std::string schemes = "forward-euler,backward-euler,crank-nicolson,rk2,rk4,euler-cromer";
   std::string T = "1,10";
   std::string dt = "0.05,0.025,0.0125";
+  /// Adds the column `rate`: ln(E_{i-1}/E_i) / ln(dt_{i-1}/dt_i) between
+  /// successive dt of a scheme and T (Exercise 1.9).
+  bool rates = false;
 };
 ExperimentResult energy_experiment(const EnergyOptions&);
 
@@ -65,6 +71,11 @@ struct FrequencyOptions {
   std::string steps_per_period = "80,60,40,30,20,15,10,8,6,5,4";
 };
 ExperimentResult frequency_experiment(const FrequencyOptions&);
+
+struct FdAccuracyOptions {
+  int points = 21;  ///< values of p = w dt, evenly from 0 to pi
+};
+ExperimentResult fd_accuracy_experiment(const FdAccuracyOptions&);
 
 struct AmplitudeOptions {
   std::string schemes = "forward-euler,backward-euler,crank-nicolson,rk2,rk4";

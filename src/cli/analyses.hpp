@@ -8,6 +8,7 @@ void add_convergence_analysis(CLI::App& analyze);
 void add_energy_analysis(CLI::App& analyze);
 void add_empirical_analysis(CLI::App& analyze);
 void add_frequency_analysis(CLI::App& analyze);
+void add_fd_accuracy_analysis(CLI::App& analyze);
 void add_amplitude_analysis(CLI::App& analyze);
 void add_orbit_analysis(CLI::App& analyze);
 void add_resonance_analysis(CLI::App& analyze);

@@ -13,6 +13,7 @@ void add_analyze_command(CLI::App& app) {
   add_energy_analysis(*cmd);
   add_empirical_analysis(*cmd);
   add_frequency_analysis(*cmd);
+  add_fd_accuracy_analysis(*cmd);
   add_amplitude_analysis(*cmd);
   add_orbit_analysis(*cmd);
   add_resonance_analysis(*cmd);
@@ -21,7 +22,7 @@ void add_analyze_command(CLI::App& app) {
   // Our own check instead of require_subcommand, so a misspelt experiment is named and corrected.
   auto unknown = std::make_shared<std::string>();
   cmd->add_option("EXPERIMENT", *unknown,
-                  "convergence, energy, empirical, frequency, amplitude, orbit, resonance, period or bounces");
+                  "convergence, energy, empirical, frequency, fd-accuracy, amplitude, orbit, resonance, period or bounces");
   cmd->callback([cmd, unknown] {
     if (!cmd->get_subcommands().empty()) return;
     std::vector<std::string> names;
@@ -41,6 +42,7 @@ void add_analyze_command(CLI::App& app) {
       "  vibra analyze energy --csv\n"
       "  vibra analyze empirical undamped --dt 0.1,0.05,0.025 --set periods=20 -o figure_1_3.png\n"
       "  vibra analyze frequency -o figure_1_4.png\n"
+      "  vibra analyze fd-accuracy --csv\n"
       "  vibra analyze amplitude -o amplitudes.png\n"
       "  vibra analyze orbit --scheme pefrl --orbits 100\n"
       "  vibra analyze period pendulum --set alpha=0 --set Theta=60 --csv\n"

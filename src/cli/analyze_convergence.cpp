@@ -24,8 +24,11 @@ void add_convergence_analysis(CLI::App& analyze) {
   cmd->add_option("--levels", o->experiment.levels,
                   "Number of dt values, each half the one before (default: halve until the last two rates agree "
                   "within 0.05, 4 to 14 levels)");
+  cmd->add_option("--compare", o->experiment.compare,
+                  "scheme=A,B,...: a study per scheme, one table and one log-log figure with a line per scheme");
   add_output_options(*cmd, o->output);
-  cmd->footer("Example:\n  vibra analyze convergence undamped --set scheme=rk4 --set T=4 --levels 6 -o convergence_rk4.png\n");
+  cmd->footer("Examples:\n  vibra analyze convergence undamped --set scheme=rk4 --set T=4 --levels 6 -o convergence_rk4.png\n"
+              "  vibra analyze convergence undamped --compare scheme=centered,centered-adjusted -o figure_1_1.png\n");
   cmd->callback([o] { run(*o); });
 }
 

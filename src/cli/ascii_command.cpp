@@ -126,6 +126,7 @@ void add_ascii_command(CLI::App& app) {
   cmd->add_option("--symbols", o->symbols, "Symbols of the series, in order; later ones draw on top")->capture_default_str();
   cmd->add_option("--ymin", o->ymin, "Lower end of the y axis (with --ymax)");
   cmd->add_option("--ymax", o->ymax, "Upper end of the y axis (with --ymin)");
+  add_allow_unstable_flag(*cmd);
   cmd->add_flag("--exact", o->exact, "Add the exact solution as the last series");
   cmd->add_option("--columns", o->columns,
                   "Series to plot, e.g. theta,S,D (default: the main quantity); a legend line comes first, and the "

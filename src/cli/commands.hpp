@@ -16,4 +16,8 @@ void add_concat_command(CLI::App& app);
 /// same way, and an empty one (-o '') names no file, so it is refused.
 CLI::Option* add_output_option(CLI::App& cmd, std::string& path, const std::string& help);
 
+/// Adds --allow-unstable: a dt above the scheme's stability limit is run with
+/// a warning instead of refused, to draw the growth (Fig 1.5).
+void add_allow_unstable_flag(CLI::App& cmd);
+
 }  // namespace vibra::cli

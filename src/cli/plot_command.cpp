@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -9,6 +10,7 @@
 #include "cli/model_help.hpp"
 #include "cli/wrote_message.hpp"
 #include "core/error.hpp"
+#include "core/error_column.hpp"
 #include "render/figure.hpp"
 #include "scenes/comparison_figure.hpp"
 #include "scenes/comparison_labels.hpp"
@@ -40,7 +42,8 @@ constexpr const char* kUsage =
     "[--size WxH]\n";
 constexpr const char* kExamples =
     "\nPanels: any column of the model but t (against t; neighbours share the t axis), exact (the exact\n"
-    "solution over the main quantity, dashed), phase (main quantity against its velocity), path (y against x,\n"
+    "solution over the main quantity, dashed), error (main quantity - exact solution, where one is known),\n"
+    "phase (main quantity against its velocity), path (y against x,\n"
     "equal aspect; elastic-pendulum and two-body). Defaults: theta,S,D for the pendulums, path for\n"
     "elastic-pendulum and two-body, the main quantity otherwise.\n"
     "\n--compare KEY=V1,V2,... runs the model once per value (up to 8) of one key: scheme, dt,\n"
@@ -69,10 +72,16 @@ render::Figure comparison_plot(const PlotOptions& o, const Parameters& parameter
   return scenes::comparison_figure(comparison, panels, width, height, scenes::comparison_caption(o.model, comparison));
 }
 
+/// `--panels error` plots a column the model does not have: u - u_exact.
+bool wants_error(const std::vector<std::string>& panels) {
+  return std::find(panels.begin(), panels.end(), "error") != panels.end();
+}
+
 render::Figure trajectory_plot(const PlotOptions& o, const Parameters& parameters) {
   std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
   const std::vector<std::string> panels =
       o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : app::word_list("--panels", o.panels);
+  if (wants_error(panels)) trajectory = with_error_column(std::move(trajectory));
   int width = 1280, height = figure_height(panels.size());
   if (!o.size.empty()) scenes::parse_size(o.size, width, height);
   const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);
@@ -85,14 +94,15 @@ void write_figure_page(const PlotOptions& o, const std::filesystem::path& file) 
     throw UsageError("--size sets a picture's size, and a page's plots fit the browser window: drop --size");
   const Parameters parameters = model_settings(o.model, o.settings);
   std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
-  const TrajectoryInfo& info = trajectory->info();
   const std::vector<std::string> panels =
-      o.panels.empty() ? scenes::page_panel_names(info) : app::word_list("--panels", o.panels);
+      o.panels.empty() ? scenes::page_panel_names(trajectory->info()) : app::word_list("--panels", o.panels);
+  if (wants_error(panels)) trajectory = with_error_column(std::move(trajectory));
+  const TrajectoryInfo& info = trajectory->info();
   scenes::PagePlotCollector collector(info, panels, o.model);
   std::vector<double> row(trajectory->width());
   do {
     trajectory->row(row);
-    collector.observe(row);
+    collector.observe(*trajectory, row);
     if ((trajectory->index() & 0xffff) == 0) render::throw_if_stop_requested();
   } while (trajectory->advance());
   render::LecturePage page;
@@ -143,6 +153,7 @@ void add_plot_command(CLI::App& app) {
       ->allow_extra_args(false);
   cmd->add_option("--size", o->size, "Picture size WxH in pixels (default 1280x720, 1280x960 for 3+ panels)");
   cmd->add_flag("--transparent", o->transparent, "No background: PNG with alpha, SVG/PDF without the paper rectangle");
+  add_allow_unstable_flag(*cmd);
   cmd->add_flag("-q,--quiet", o->quiet, "No message on stderr after writing");
   cmd->callback([o] { run_plot(*o); });
 }

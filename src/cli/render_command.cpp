@@ -173,6 +173,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--transparent", o->video.transparent,
                 "No background: PNG with alpha, .webm (VP9 with alpha), .mov (ProRes 4444), SVG/PDF without the "
                 "background rectangle");
+  add_allow_unstable_flag(*cmd);
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or messages");
   cmd->footer(scene_keys_help());
   cmd->callback([o] { run(*o); });

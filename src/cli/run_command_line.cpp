@@ -10,6 +10,7 @@
 #include "cli/option_checks.hpp"
 #include "core/error.hpp"
 #include "core/quoted_value.hpp"
+#include "core/time_mesh.hpp"
 #include "render/standard_output.hpp"
 #include "render/stop_signal.hpp"
 
@@ -21,6 +22,11 @@ CLI::Option* add_output_option(CLI::App& cmd, std::string& path, const std::stri
         return value.empty() ? std::string("the output path is empty: give a file name, e.g. -o out.mp4") : std::string();
       },
       "PATH"));
+}
+
+void add_allow_unstable_flag(CLI::App& cmd) {
+  cmd.add_flag_callback("--allow-unstable", [] { allow_unstable_steps(); },
+                        "Run a dt above the scheme's stability limit (with a warning) instead of refusing it");
 }
 
 namespace {

@@ -108,6 +108,7 @@ void add_solve_command(CLI::App& app) {
       ->check(ranged("--every"));
   cmd->add_flag("--energy", options->energy,
                 "Append the energy E (scheme's own velocity) and E_rel = (E - E(0))/|E(0)|");
+  add_allow_unstable_flag(*cmd);
   cmd->add_flag("-q,--quiet", options->quiet, "No message on stderr after writing a file");
   cmd->callback([options] { run_solve(*options); });
 }

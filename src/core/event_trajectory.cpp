@@ -24,7 +24,8 @@ EventTrajectory::Knot EventTrajectory::knot(const Sample<1>& s) const {
 }
 
 void EventTrajectory::restart(const Sample<1>& from, double step) {
-  stepper_.emplace(make_stepper<1>(info_.mesh.scheme, *law_.system, from.u, from.v, step));
+  // An adaptive scheme ends each of its calls on the mesh, like the others.
+  stepper_.emplace(make_stepper<1>(info_.mesh.scheme, *law_.system, from.u, from.v, step, info_.mesh.control(true)));
   stepper_dt_ = step;
 }
 

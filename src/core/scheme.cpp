@@ -17,10 +17,16 @@ const std::vector<SchemeInfo>& all_schemes() {
       {Scheme::velocity_verlet, "velocity-verlet", 2, "velocity Verlet (Problem 1.6)"},
       {Scheme::pefrl, "pefrl", 4, "PEFRL 4th-order symplectic splitting (1.107)-(1.118)"},
       {Scheme::rk2, "rk2", 2, "2nd-order Runge-Kutta (midpoint)"},
+      {Scheme::rk3, "rk3", 3, "3rd-order Runge-Kutta (Kutta's rule, Odespy's RK3)"},
       {Scheme::rk4, "rk4", 4, "classical 4th-order Runge-Kutta"},
       {Scheme::forward_euler, "forward-euler", 1, "Forward Euler"},
       {Scheme::backward_euler, "backward-euler", 1, "Backward Euler (Newton per step)"},
       {Scheme::crank_nicolson, "crank-nicolson", 2, "Crank-Nicolson (Newton per step)"},
+      {Scheme::ab2, "ab2", 2, "2nd-order Adams-Bashforth, started with RK4"},
+      {Scheme::ab3, "ab3", 3, "3rd-order Adams-Bashforth, started with RK4"},
+      {Scheme::backward2step, "backward2step", 2, "two-step backward difference BDF2 (Newton per step)"},
+      {Scheme::rkf45, "rkf45", 5, "adaptive Runge-Kutta-Fehlberg 4(5): steps from rtol, atol", true},
+      {Scheme::dopri5, "dopri5", 5, "adaptive Dormand-Prince 5(4), dense output: steps from rtol, atol", true},
   };
   return schemes;
 }
@@ -53,6 +59,10 @@ double stability_limit(Scheme scheme, double w) {
     case Scheme::velocity_verlet: return 2 / w;
     // RK4 is stable on the imaginary axis up to |w dt| = 2 sqrt(2).
     case Scheme::rk4: return 2 * std::sqrt(2.0) / w;
+    // RK3 up to sqrt(3), AB3 up to 0.7236 (where its boundary locus crosses
+    // the imaginary axis); AB2, like Forward Euler, grows for every dt.
+    case Scheme::rk3: return std::sqrt(3.0) / w;
+    case Scheme::ab3: return 0.7236 / w;
     default: return 0;
   }
 }

@@ -4,6 +4,9 @@
 #include <variant>
 #include <vector>
 
+#include "core/schemes/adams_bashforth.hpp"
+#include "core/schemes/adaptive_runge_kutta.hpp"
+#include "core/schemes/backward2step.hpp"
 #include "core/schemes/centered.hpp"
 #include "core/schemes/euler_cromer.hpp"
 #include "core/schemes/pefrl.hpp"
@@ -24,10 +27,16 @@ enum class Scheme {
   velocity_verlet,
   pefrl,
   rk2,
+  rk3,
   rk4,
   forward_euler,
   backward_euler,
   crank_nicolson,
+  ab2,             ///< Adams-Bashforth 2, started with RK4
+  ab3,             ///< Adams-Bashforth 3, started with RK4
+  backward2step,   ///< BDF2, started with Crank-Nicolson
+  rkf45,           ///< adaptive Runge-Kutta-Fehlberg 4(5)
+  dopri5,          ///< adaptive Dormand-Prince 5(4) with dense output
 };
 
 struct SchemeInfo {
@@ -35,6 +44,9 @@ struct SchemeInfo {
   std::string_view name;     ///< as typed on the command line
   int order;                 ///< theoretical convergence rate for smooth problems
   std::string_view summary;
+  /// Chooses its own steps from rtol and atol: the samples fall at uneven
+  /// times, and dt only sets the grid of frames and pages.
+  bool adaptive = false;
 };
 
 /// Every scheme, in the order `--help` lists them.
@@ -49,15 +61,18 @@ Scheme parse_scheme(std::string_view name);
 double stability_limit(Scheme, double w);
 
 template <int D>
-using AnyStepper = std::variant<Centered<D>, EulerCromer<D>, Staggered<D>, VelocityVerlet<D>, Pefrl<D>,
-                                ForwardEuler<D>, RungeKutta2<D>, RungeKutta4<D>, ThetaMethod<D>>;
+using AnyStepper =
+    std::variant<Centered<D>, EulerCromer<D>, Staggered<D>, VelocityVerlet<D>, Pefrl<D>, ForwardEuler<D>,
+                 RungeKutta2<D>, RungeKutta3<D>, RungeKutta4<D>, ThetaMethod<D>, AdamsBashforth2<D>,
+                 AdamsBashforth3<D>, Backward2Step<D>, RungeKuttaFehlberg<D>, DormandPrince<D>>;
 
 /// The stepper for `scheme`, starting at u(0) = u0, v(0) = v0. The system must
 /// outlive the stepper. `centered_adjusted` must already be applied to the
 /// system by the model (it changes w); here it is the centered scheme.
+/// `control` matters to the adaptive schemes only.
 template <int D>
 AnyStepper<D> make_stepper(Scheme scheme, const SecondOrderSystem<D>& system, const Vec<D>& u0,
-                           const Vec<D>& v0, double dt) {
+                           const Vec<D>& v0, double dt, const StepControl& control = {}) {
   switch (scheme) {
     case Scheme::centered:
     case Scheme::centered_adjusted: return Centered<D>(system, u0, v0, dt);
@@ -68,10 +83,16 @@ AnyStepper<D> make_stepper(Scheme scheme, const SecondOrderSystem<D>& system, co
     case Scheme::velocity_verlet: return VelocityVerlet<D>(system, u0, v0, dt);
     case Scheme::pefrl: return Pefrl<D>(system, u0, v0, dt);
     case Scheme::rk2: return RungeKutta2<D>(system, u0, v0, dt);
+    case Scheme::rk3: return RungeKutta3<D>(system, u0, v0, dt);
     case Scheme::rk4: return RungeKutta4<D>(system, u0, v0, dt);
     case Scheme::forward_euler: return ForwardEuler<D>(system, u0, v0, dt);
     case Scheme::backward_euler: return ThetaMethod<D>(system, u0, v0, dt, 1.0);
     case Scheme::crank_nicolson: return ThetaMethod<D>(system, u0, v0, dt, 0.5);
+    case Scheme::ab2: return AdamsBashforth2<D>(system, u0, v0, dt);
+    case Scheme::ab3: return AdamsBashforth3<D>(system, u0, v0, dt);
+    case Scheme::backward2step: return Backward2Step<D>(system, u0, v0, dt);
+    case Scheme::rkf45: return RungeKuttaFehlberg<D>(system, u0, v0, dt, control);
+    case Scheme::dopri5: return DormandPrince<D>(system, u0, v0, dt, control);
   }
   return Centered<D>(system, u0, v0, dt);
 }

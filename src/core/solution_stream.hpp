@@ -1,6 +1,7 @@
 #pragma once
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -17,16 +18,18 @@ namespace vibra {
 /// The solution as a stream of samples t_0, t_1, ..., t_steps, one at a time,
 /// in constant memory: observers (CSV rows, frames, ASCII lines, analysis)
 /// consume it as it is computed. A non-finite value stops the stream with a
-/// SolutionError naming the step and time. Every 65536 steps it looks at
-/// the stop flag, so every loop over a solution (pre-passes, analyses,
-/// convergence studies) ends within a moment of Ctrl-C with Interrupted.
+/// SolutionError naming the step and time. An adaptive stepper's stream
+/// ends when its time reaches `end` instead, after however many steps.
+/// Every 65536 steps it looks at the stop flag, so every loop over a
+/// solution (pre-passes, analyses, convergence studies) ends within a
+/// moment of Ctrl-C with Interrupted.
 template <int D>
 class SolutionStream {
  public:
   static constexpr long long unbounded = std::numeric_limits<long long>::max();
 
-  SolutionStream(AnyStepper<D> stepper, long long steps)
-      : stepper_(std::move(stepper)), steps_(steps) {
+  SolutionStream(AnyStepper<D> stepper, long long steps, double end = std::numeric_limits<double>::infinity())
+      : stepper_(std::move(stepper)), steps_(steps), end_(end) {
     current_ = std::visit([](const auto& s) { return s.current(); }, stepper_);
     check(current_);
   }
@@ -34,7 +37,18 @@ class SolutionStream {
   const Sample<D>& current() const { return current_; }
   long long index() const { return index_; }
   long long steps() const { return steps_; }
-  bool done() const { return index_ >= steps_; }
+  bool done() const { return index_ >= steps_ || current_.t >= end_; }
+
+  /// The state at t inside the last step from the stepper's own continuous
+  /// extension (dopri5's dense output), or empty when it has none.
+  std::optional<Sample<D>> dense_at(double t) const {
+    return std::visit(
+        [t](const auto& s) -> std::optional<Sample<D>> {
+          if constexpr (requires { s.dense_at(t); }) return s.dense_at(t);
+          else return std::nullopt;
+        },
+        stepper_);
+  }
 
   /// Moves to the next sample; false (and no change) at the end.
   bool advance() {
@@ -54,7 +68,7 @@ class SolutionStream {
     std::visit(
         [&](auto& s) {
           if (!observer(current_)) return;
-          while (index_ < steps_) {
+          while (index_ < steps_ && current_.t < end_) {
             s.step();
             current_ = s.current();
             ++index_;
@@ -78,6 +92,7 @@ class SolutionStream {
 
   AnyStepper<D> stepper_;
   long long steps_;
+  double end_;
   long long index_ = 0;
   Sample<D> current_;
 };

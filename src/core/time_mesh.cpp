@@ -17,6 +17,8 @@ std::vector<KeySpec> time_keys(const TimeDefaults& defaults) {
       {"steps_per_period", ValueKind::number, defaults.steps_per_period, "", "time steps per small-oscillation period", {}, {}},
       {"T", ValueKind::number, "", "time", "end time, inf for an endless run (overrides periods)", {}, {}},
       {"periods", ValueKind::number, defaults.periods, "", "end time in small-oscillation periods", {}, {}},
+      {"rtol", ValueKind::number, "1e-6", "", "relative tolerance per step of rkf45 and dopri5", {}, {}},
+      {"atol", ValueKind::number, "1e-9", "", "absolute tolerance per step of rkf45 and dopri5 (in u's and v's units)", {}, {}},
   };
 }
 
@@ -26,7 +28,29 @@ std::string g(double x) {
   std::snprintf(buf, sizeof buf, "%.6g", x);
   return buf;
 }
+
+bool unstable_allowed = false;
+
+/// The tolerances, checked: below 1e-15 a step's rounding error is larger
+/// than the tolerance, and the step size would shrink without end.
+void read_tolerances(const Parameters& p, TimeMesh& mesh) {
+  mesh.rtol = p.number("rtol");
+  mesh.atol = p.number("atol");
+  if (!(mesh.rtol >= 1e-15 && mesh.rtol < 1))
+    throw UsageError("rtol=" + p.text("rtol") + " is out of range: give a relative tolerance in [1e-15, 1), e.g. rtol=1e-8");
+  if (!(mesh.atol >= 0 && std::isfinite(mesh.atol)))
+    throw UsageError("atol=" + p.text("atol") + " is out of range: give an absolute tolerance >= 0, e.g. atol=1e-12");
+}
 }  // namespace
+
+void allow_unstable_steps() { unstable_allowed = true; }
+
+void require_even_steps(const TimeMesh& mesh, const std::string& analysis) {
+  if (mesh.adaptive())
+    throw UsageError(analysis + " needs the even steps of a fixed-step scheme, and " +
+                     std::string(scheme_info(mesh.scheme).name) +
+                     " chooses its own: choose another scheme, e.g. scheme=rk4");
+}
 
 TimeMesh resolve_time_mesh(const Parameters& p, double period, double fastest_w) {
   TimeMesh mesh;
@@ -52,12 +76,21 @@ TimeMesh resolve_time_mesh(const Parameters& p, double period, double fastest_w)
     throw UsageError(p.owner() + " has no oscillation period with these parameters: give T");
   }
 
+  read_tolerances(p, mesh);
+
   const double limit = stability_limit(mesh.scheme, fastest_w);
   if (limit > 0 && mesh.dt > limit) {
-    std::string advice = "use dt <= " + g(limit);
-    if (has_period) advice += " (steps_per_period >= " + g(std::ceil(period / limit)) + ")";
-    throw UsageError("dt=" + g(mesh.dt) + " is above the stability limit " + g(limit) + " of scheme " +
-                     std::string(scheme_info(mesh.scheme).name) + " for this problem: " + advice);
+    const std::string problem = "dt=" + g(mesh.dt) + " is above the stability limit " + g(limit) + " of scheme " +
+                                std::string(scheme_info(mesh.scheme).name) + " for this problem";
+    if (unstable_allowed) {
+      static bool warned = false;  // once, though a render builds its runs twice
+      if (!warned) std::fprintf(stderr, "vibra: warning: %s: the solution will grow (--allow-unstable)\n", problem.c_str());
+      warned = true;
+    } else {
+      std::string advice = "use dt <= " + g(limit);
+      if (has_period) advice += " (steps_per_period >= " + g(std::ceil(period / limit)) + ")";
+      throw UsageError(problem + ": " + advice + ", or draw the growth with --allow-unstable");
+    }
   }
 
   if (std::isinf(mesh.T)) {

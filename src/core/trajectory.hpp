@@ -1,5 +1,6 @@
 #pragma once
 #include <functional>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -62,7 +63,8 @@ class Trajectory {
   /// The columns at the current sample.
   virtual void row(std::span<double> out) const = 0;
   /// The columns at time t between the previous and the current sample,
-  /// by quintic Hermite interpolation (core/hermite.hpp).
+  /// by the scheme's dense output where it has one (dopri5), else by
+  /// quintic Hermite interpolation (core/hermite.hpp).
   virtual void row_at(double t, std::span<double> out) const = 0;
 
  protected:
@@ -81,12 +83,15 @@ class SecondOrderTrajectory final : public Trajectory {
                         TrajectoryInfo info, RowFunction to_row)
       : Trajectory(std::move(info)),
         system_(std::move(system)),
-        stream_(make_stepper<D>(info_.mesh.scheme, *system_, u0, v0, info_.mesh.dt), info_.mesh.steps),
+        stream_(make_stepper<D>(info_.mesh.scheme, *system_, u0, v0, info_.mesh.dt, info_.mesh.control()),
+                info_.mesh.adaptive() ? SolutionStream<D>::unbounded : info_.mesh.steps,
+                info_.mesh.adaptive() ? info_.mesh.T : std::numeric_limits<double>::infinity()),
         previous_(stream_.current()),
         to_row_(std::move(to_row)) {}
 
   double t() const override { return stream_.current().t; }
   long long index() const override { return stream_.index(); }
+  bool done() const override { return stream_.done(); }
   bool advance() override {
     previous_ = stream_.current();
     return stream_.advance();
@@ -103,6 +108,7 @@ class SecondOrderTrajectory final : public Trajectory {
     const Sample<D>& b = stream_.current();
     if (b.t - a.t <= 0 || t >= b.t) return b;
     if (t <= a.t) return a;
+    if (auto dense = stream_.dense_at(t)) return *dense;
     return hermite_between<D>(a, system_->acceleration(a.u, a.v, a.t), b, system_->acceleration(b.u, b.v, b.t), t);
   }
 

@@ -41,6 +41,7 @@ std::optional<OscillationCycle> EmpiricalOscillation::add(double t, double u) {
 }
 
 std::vector<OscillationCycle> oscillation_cycles(Trajectory& trajectory, ExtremumTiming timing) {
+  require_even_steps(trajectory.info().mesh, "locating extrema (analyze empirical, amplitude), which fits three evenly spaced samples,");
   EmpiricalOscillation oscillation(timing);
   std::vector<OscillationCycle> cycles;
   std::vector<double> row(trajectory.width());

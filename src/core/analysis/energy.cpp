@@ -8,6 +8,7 @@ namespace vibra {
 double max_relative_energy_error(Trajectory& trajectory, double w, double I, double V) {
   const double E0 = 0.5 * V * V + 0.5 * w * w * I * I;
   const double dt = trajectory.info().mesh.dt;
+  require_even_steps(trajectory.info().mesh, "the energy error (1.49), a centered difference of u,");
   std::vector<double> row(trajectory.width());
   trajectory.row(row);
   double before = row[1];

@@ -12,12 +12,13 @@ ModelConvergence model_convergence(const std::string& model_name, const std::vec
   Parameters base = model_parameters(model);
   for (const auto& s : settings) base.assign(s);
   const TrajectoryInfo info = model.build(base)->info();
+  require_even_steps(info.mesh, "analyze convergence, which halves dt,");
   // A labelled approximation (the pendulum's small-angle solution) would make
   // the error stall at the approximation's own error: it does not count.
   if (!info.exact || info.exact_label != "exact")
     throw UsageError("model " + model_name + " has no exact solution with these settings" +
                      (info.exact ? " (its " + info.exact_label + " solution is an approximation)" : "") +
-                     ": use undamped, vibration with a linear spring and no forcing, resonance, sliding-box released from "
+                     ": use undamped, vibration with a linear spring and no forcing (or undamped with F=A*sin(phi*t)), resonance, sliding-box released from "
                      "rest, or two-body with a circular orbit (its default)");
 
   auto make = [&](double dt) { return model.build(parameters_with_dt(model, settings, dt)); };

@@ -22,20 +22,25 @@ OrbitRun circular_orbit_run(const std::string& scheme, int steps_per_orbit, long
 
   const std::clock_t start = std::clock();
   auto trajectory = model.build(p);
+  require_even_steps(trajectory->info().mesh, "analyze orbit, which counts steps per orbit,");
   OrbitRun run{steps_per_orbit, trajectory->info().mesh.dt, 0, 0, {}};
   const long long steps_per_block = block_orbits * steps_per_orbit;
   std::vector<double> row(trajectory->width());
-  double block_error = 0;
+  double block_error = 0, block_energy = 0, phase = 0;
   do {
     trajectory->row(row);
-    const double dx = row[1] - std::cos(row[0]), dy = row[2] - std::sin(row[0]);
+    const double t = row[0], x = row[1], y = row[2], vx = row[3], vy = row[4];
+    const double dx = x - std::cos(t), dy = y - std::sin(t);
     block_error = std::max(block_error, std::sqrt(dx * dx + dy * dy));
+    block_energy = std::max(block_energy, std::abs(0.5 * (vx * vx + vy * vy) - 1 / std::hypot(x, y) + 0.5));
     const long long n = trajectory->index();
     if (n > 0 && (n % steps_per_block == 0 || trajectory->done())) {
       const long long done = (n + steps_per_orbit - 1) / steps_per_orbit;
-      run.blocks.push_back({done, block_error});
+      // The change since the last block is far below pi: take the nearest branch.
+      phase += std::remainder(std::atan2(y, x) - t - phase, 2 * M_PI);
+      run.blocks.push_back({done, block_error, phase, block_energy});
       run.max_error = std::max(run.max_error, block_error);
-      block_error = 0;
+      block_error = block_energy = 0;
       if (progress) progress(done);
     }
   } while (trajectory->advance());

@@ -5,10 +5,15 @@
 
 namespace vibra {
 
-/// The largest position error over a block of orbits.
+/// What a block of orbits shows of the error.
 struct OrbitBlock {
   long long orbits;  ///< orbits completed at the block's end
-  double max_error;
+  double max_error;  ///< the largest position error in the block
+  /// The angle's error at the block's end, atan2(y, x) - t, followed
+  /// continuously from block to block (radians; positive: ahead).
+  double phase;
+  /// The largest |E - E(0)| in the block, E = |v|^2/2 - 1/|x|, E(0) = -1/2.
+  double energy_error;
 };
 
 /// A run of the circular orbit (Exercise 1.28).
@@ -22,8 +27,8 @@ struct OrbitRun {
 
 /// Model two-body from (1, 0) with velocity (0, 1): the circular orbit
 /// x = cos t, y = sin t of period 2 pi, for `orbits` orbits with the scheme
-/// named `scheme`. Records the largest error per block of `block_orbits`
-/// orbits and calls `progress(orbits done)` after each block. Streams.
+/// named `scheme`. Records each block of `block_orbits` orbits (largest
+/// position error, phase error at its end, largest energy error) and calls `progress(orbits done)` after each block. Streams.
 OrbitRun circular_orbit_run(const std::string& scheme, int steps_per_orbit, long long orbits, long long block_orbits,
                             const std::function<void(long long)>& progress = {});
 

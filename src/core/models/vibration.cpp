@@ -62,7 +62,8 @@ ModelDefinition vibration_model() {
     info.columns = columns;
     info.mesh = resolve_time_mesh(p, w > 0 ? 2 * M_PI / w : 0, w);
     reject_adjusted_scheme(info.mesh, name);
-    if ((info.exact = free_linear_solution(law, I, V))) info.exact_label = "exact";
+    if (!(info.exact = free_linear_solution(law, I, V))) info.exact = sine_forced_solution(law, I, V);
+    if (info.exact) info.exact_label = "exact";
     auto system = law.system();
     info.damped = law.damping != Damping::none;
     // 0.5 m v^2 + P(u), P(u) = integral_0^u s: exact for the linear spring,

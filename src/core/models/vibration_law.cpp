@@ -1,5 +1,7 @@
 #include "core/models/vibration_law.hpp"
 
+#include <regex>
+
 #include "core/error.hpp"
 
 namespace vibra {
@@ -51,6 +53,31 @@ std::function<double(double)> free_linear_solution(const VibrationLaw& law, doub
   return [=](double t) {
     return std::exp(-zeta * w * t) * (I * std::cos(wd * t) + (V + zeta * w * I) / wd * std::sin(wd * t));
   };
+}
+
+std::function<double(double)> sine_forced_solution(const VibrationLaw& law, double I, double V) {
+  if (!law.linear_spring() || !law.F || law.damping != Damping::none || !(law.k > 0)) return {};
+  static const std::regex sine(R"(^\s*(?:(.+?)\s*\*\s*)?sin\s*\(\s*(?:(.+?)\s*\*\s*)?t\s*\)\s*$)");
+  std::smatch parts;
+  const std::string& text = law.F->text();
+  if (!std::regex_match(text, parts, sine)) return {};
+  double A = 1, phi = 1;
+  try {
+    if (parts[1].matched) A = evaluate_constant("F", parts[1].str());
+    if (parts[2].matched) phi = evaluate_constant("F", parts[2].str());
+  } catch (const UsageError&) {
+    return {};  // not constants: some other force
+  }
+  // The pattern read the text as A sin(phi t): hold the formula to it.
+  for (double t : {0.3, 1.7, 2.9})
+    if (std::abs((*law.F)(t) - A * std::sin(phi * t)) > 1e-12 * (1 + std::abs(A))) return {};
+  const double m = law.mass, w = std::sqrt(law.k / m);
+  if (std::abs(phi - w) <= 1e-12 * w) {
+    const double c = A / (2 * m * w);
+    return [=](double t) { return I * std::cos(w * t) + (V + c) / w * std::sin(w * t) - c * t * std::cos(w * t); };
+  }
+  const double c = A / (m * (w * w - phi * phi));
+  return [=](double t) { return I * std::cos(w * t) + (V - c * phi) / w * std::sin(w * t) + c * std::sin(phi * t); };
 }
 
 double VibrationLaw::small_oscillation_stiffness() const {

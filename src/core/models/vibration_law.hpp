@@ -50,4 +50,11 @@ struct VibrationLaw {
 /// empty otherwise.
 std::function<double(double)> free_linear_solution(const VibrationLaw&, double I, double V);
 
+/// The exact solution of the undamped linear spring forced by a sine,
+/// m u'' + k u = A sin(phi t) (Exercise 1.12), with F written as
+/// `A*sin(phi*t)`, `sin(phi*t)` or `A*sin(t)` (A and phi constant
+/// expressions); at resonance, phi = w, the secular term -A t cos(w t)/(2 m w).
+/// Empty for any other law or force.
+std::function<double(double)> sine_forced_solution(const VibrationLaw&, double I, double V);
+
 }  // namespace vibra
