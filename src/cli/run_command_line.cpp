@@ -51,6 +51,7 @@ int report_error(const std::string& message, int code = 2) {
 }  // namespace
 
 int run_command_line(int argc, char** argv) {
+  allow_unstable_steps(false);  // only this command line's --allow-unstable counts
   CLI::App app{"vibra: vibration ODEs from Linge & Langtangen chapter 1, solved, drawn, animated"};
   app.require_subcommand(1);
   add_solve_command(app);

@@ -43,7 +43,7 @@ void read_tolerances(const Parameters& p, TimeMesh& mesh) {
 }
 }  // namespace
 
-void allow_unstable_steps() { unstable_allowed = true; }
+void allow_unstable_steps(bool allowed) { unstable_allowed = allowed; }
 
 void require_even_steps(const TimeMesh& mesh, const std::string& analysis) {
   if (mesh.adaptive())

@@ -39,7 +39,9 @@ std::vector<KeySpec> time_keys(const TimeDefaults&);
 
 /// `--allow-unstable`: from now on a dt above the scheme's stability limit is
 /// run, with a warning on stderr, instead of refused (Fig 1.5 draws such a run).
-void allow_unstable_steps();
+/// A process that runs several command lines (the command-line fuzz target)
+/// clears it with `false` before each.
+void allow_unstable_steps(bool allowed = true);
 
 /// Throws UsageError when the mesh's scheme is adaptive: `analysis` (e.g.
 /// "analyze convergence, which halves dt,") needs the even mesh t_n = n dt.
