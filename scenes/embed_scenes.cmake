@@ -7,7 +7,7 @@ foreach(preset ${presets})
   file(READ "${preset}" text)
   string(APPEND body "      {\"${name}\", R\"vibra_toml(${text})vibra_toml\"},\n")
 endforeach()
-file(WRITE "${OUTPUT}.new" "// Generated from scenes/*.toml by scenes/embed_scenes.cmake: do not edit.
+file(WRITE "${OUTPUT}.new" "// Generated from scenes/presets/*.toml by scenes/embed_scenes.cmake: do not edit.
 #include \"scenes/builtin_scenes.hpp\"
 
 namespace vibra::scenes {

@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scenes/diagram.hpp"
+#include "scenes/diagrams/diagram.hpp"
 
 namespace vibra::scenes {
 

@@ -2,8 +2,8 @@
 #include <optional>
 #include <string>
 
-#include "render/frame_segment.hpp"
-#include "render/frame_sink.hpp"
+#include "render/encode/frame_segment.hpp"
+#include "render/encode/frame_sink.hpp"
 #include "scenes/scene_config.hpp"
 
 namespace vibra::scenes {

@@ -1,6 +1,6 @@
 #include "scenes/run_csv_file.hpp"
 
-#include "render/output_error.hpp"
+#include "render/output/output_error.hpp"
 
 namespace vibra::scenes {
 

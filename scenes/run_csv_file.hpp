@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/csv_writer.hpp"
-#include "render/temporary_file.hpp"
+#include "render/output/temporary_file.hpp"
 
 namespace vibra::scenes {
 

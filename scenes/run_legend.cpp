@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "render/shapes.hpp"
-#include "render/text.hpp"
-#include "scenes/comparison_labels.hpp"
+#include "render/draw/shapes.hpp"
+#include "render/draw/text.hpp"
+#include "scenes/diagrams/comparison_labels.hpp"
 
 namespace vibra::scenes {
 

@@ -1,8 +1,8 @@
 #pragma once
 #include <vector>
 
-#include "render/canvas.hpp"
-#include "scenes/diagram.hpp"
+#include "render/draw/canvas.hpp"
+#include "scenes/diagrams/diagram.hpp"
 
 namespace vibra::scenes {
 

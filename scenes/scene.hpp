@@ -1,8 +1,8 @@
 #pragma once
 #include <span>
 
-#include "render/canvas.hpp"
-#include "render/drawing_record.hpp"
+#include "render/draw/canvas.hpp"
+#include "render/labels/drawing_record.hpp"
 
 namespace vibra::scenes {
 

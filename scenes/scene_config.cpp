@@ -20,7 +20,7 @@
 #include "core/word_list.hpp"
 #include "core/models/model.hpp"
 #include "scenes/builtin_scenes.hpp"
-#include "scenes/diagram_registry.hpp"
+#include "scenes/diagrams/diagram_registry.hpp"
 
 namespace vibra::scenes {
 

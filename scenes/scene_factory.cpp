@@ -4,11 +4,11 @@
 
 #include "core/error.hpp"
 #include "core/quoted_value.hpp"
-#include "scenes/comparison_diagram.hpp"
-#include "scenes/comparison_labels.hpp"
-#include "scenes/diagram_registry.hpp"
-#include "scenes/plot_panels.hpp"
-#include "scenes/plot_scene.hpp"
+#include "scenes/diagrams/comparison_diagram.hpp"
+#include "scenes/diagrams/comparison_labels.hpp"
+#include "scenes/diagrams/diagram_registry.hpp"
+#include "scenes/panels/plot_panels.hpp"
+#include "scenes/figures/plot_scene.hpp"
 #include "scenes/system_scene.hpp"
 
 namespace vibra::scenes {

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "render/text.hpp"
+#include "render/draw/text.hpp"
 
 namespace vibra::scenes {
 

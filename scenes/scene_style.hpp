@@ -2,8 +2,8 @@
 #include <cmath>
 #include <string>
 
-#include "render/canvas.hpp"
-#include "scenes/series_panel.hpp"
+#include "render/draw/canvas.hpp"
+#include "scenes/panels/series_panel.hpp"
 
 namespace vibra::scenes {
 

@@ -3,7 +3,7 @@
 #include <functional>
 #include <optional>
 
-#include "render/canvas.hpp"
+#include "render/draw/canvas.hpp"
 
 namespace vibra::scenes {
 

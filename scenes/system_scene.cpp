@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/caption.hpp"
-#include "render/label_placer.hpp"
-#include "render/text.hpp"
+#include "render/draw/caption.hpp"
+#include "render/labels/label_placer.hpp"
+#include "render/draw/text.hpp"
 
 namespace vibra::scenes {
 

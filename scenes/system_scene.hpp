@@ -4,14 +4,14 @@
 #include <vector>
 
 #include "core/trajectory.hpp"
-#include "render/caption.hpp"
-#include "render/drawing_record.hpp"
-#include "scenes/diagram.hpp"
-#include "scenes/energy_bars.hpp"
-#include "scenes/quantity_panels.hpp"
+#include "render/draw/caption.hpp"
+#include "render/labels/drawing_record.hpp"
+#include "scenes/diagrams/diagram.hpp"
+#include "scenes/panels/energy_bars.hpp"
+#include "scenes/panels/quantity_panels.hpp"
 #include "scenes/run_legend.hpp"
 #include "scenes/scene.hpp"
-#include "scenes/scene_panel.hpp"
+#include "scenes/panels/scene_panel.hpp"
 #include "scenes/scene_style.hpp"
 #include "scenes/static_layer.hpp"
 

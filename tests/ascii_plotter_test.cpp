@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/ascii_plotter.hpp"
+#include "render/plot/ascii_plotter.hpp"
 
 using vibra::render::AsciiPlotter;
 using vibra::render::AsciiPlotterOptions;

@@ -5,8 +5,8 @@
 #include <set>
 #include <string>
 
-#include "render/axis.hpp"
-#include "render/plot_panel.hpp"
+#include "render/plot/axis.hpp"
+#include "render/plot/plot_panel.hpp"
 
 using vibra::render::linear_tick_labels;
 using vibra::render::LinearTickLabels;

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/models/model.hpp"
-#include "render/caption.hpp"
+#include "render/draw/caption.hpp"
 #include "scenes/run_caption.hpp"
 #include "scenes/scene_factory.hpp"
 #include "scenes/system_scene.hpp"

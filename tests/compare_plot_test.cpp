@@ -7,9 +7,9 @@
 
 #include "cli_support.hpp"
 #include "core/comparison.hpp"
-#include "render/color.hpp"
-#include "scenes/comparison_figure.hpp"
-#include "scenes/comparison_labels.hpp"
+#include "render/draw/color.hpp"
+#include "scenes/figures/comparison_figure.hpp"
+#include "scenes/diagrams/comparison_labels.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;

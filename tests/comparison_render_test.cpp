@@ -13,9 +13,9 @@
 
 #include "cli_support.hpp"
 #include "core/comparison_trajectory.hpp"
-#include "render/canvas.hpp"
-#include "scenes/comparison_labels.hpp"
-#include "scenes/pendulum_geometry.hpp"
+#include "render/draw/canvas.hpp"
+#include "scenes/diagrams/comparison_labels.hpp"
+#include "scenes/diagrams/pendulum_geometry.hpp"
 #include "scenes/run_legend.hpp"
 #include "scenes/scene_config.hpp"
 #include "scenes/scene_factory.hpp"

@@ -5,8 +5,8 @@
 #include <fstream>
 
 #include "cli_support.hpp"
-#include "render/created_directory.hpp"
-#include "render/output_error.hpp"
+#include "render/output/created_directory.hpp"
+#include "render/output/output_error.hpp"
 
 using vibra::render::CreatedDirectory;
 using vibra::render::OutputError;

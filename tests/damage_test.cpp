@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/models/model.hpp"
-#include "render/canvas.hpp"
-#include "render/damage.hpp"
+#include "render/draw/canvas.hpp"
+#include "render/draw/damage.hpp"
 #include "scenes/scene_config.hpp"
 #include "scenes/scene_factory.hpp"
 

@@ -4,7 +4,7 @@
 #include <random>
 #include <string>
 
-#include "render/decimal_format.hpp"
+#include "render/draw/decimal_format.hpp"
 
 using vibra::render::format_one_decimal;
 

@@ -7,7 +7,7 @@
 
 #include "cli_support.hpp"
 #include "core/error.hpp"
-#include "scenes/energy_bars.hpp"
+#include "scenes/panels/energy_bars.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <vector>
 
-#include "render/column_envelope.hpp"
-#include "render/envelope_cell.hpp"
-#include "render/rolling_envelope.hpp"
+#include "render/plot/column_envelope.hpp"
+#include "render/plot/envelope_cell.hpp"
+#include "render/plot/rolling_envelope.hpp"
 
 using vibra::render::ColumnEnvelope;
 using vibra::render::EnvelopeCell;

@@ -9,10 +9,10 @@
 #include <memory>
 
 #include "cli_support.hpp"
-#include "render/axis.hpp"
-#include "render/decimated_path.hpp"
-#include "render/figure.hpp"
-#include "render/output_error.hpp"
+#include "render/plot/axis.hpp"
+#include "render/draw/decimated_path.hpp"
+#include "render/plot/figure.hpp"
+#include "render/output/output_error.hpp"
 
 using namespace vibra::render;
 using vibra::test::ScratchDirectory;

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "render/canvas.hpp"
-#include "render/ground_profile.hpp"
+#include "render/draw/canvas.hpp"
+#include "render/draw/ground_profile.hpp"
 
 using namespace vibra::render;
 

@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "cli_support.hpp"
-#include "render/huge_pages.hpp"
+#include "render/encode/huge_pages.hpp"
 
 using vibra::render::advise_huge_pages;
 using vibra::render::HugePageArray;

@@ -5,9 +5,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "render/canvas.hpp"
-#include "render/label_cache.hpp"
-#include "render/text.hpp"
+#include "render/draw/canvas.hpp"
+#include "render/draw/label_cache.hpp"
+#include "render/draw/text.hpp"
 
 using namespace vibra::render;
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "render/canvas.hpp"
-#include "render/drawing_record.hpp"
-#include "render/outline.hpp"
+#include "render/draw/canvas.hpp"
+#include "render/labels/drawing_record.hpp"
+#include "render/labels/outline.hpp"
 #include "scenes/scene_config.hpp"
 #include "scenes/scene_factory.hpp"
 

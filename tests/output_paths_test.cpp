@@ -1,4 +1,4 @@
-// Where outputs go (render/output_path.hpp, docs/reliability.md "Output
+// Where outputs go (render/output/output_path.hpp, docs/reliability.md "Output
 // paths"), through the real executable: a symbolic link stays and its target
 // gets the output; a pipe or device gets a stream; a folder where a file is
 // expected, an input of the run and an empty path are refused before any

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "core/models/model.hpp"
-#include "render/page_plots.hpp"
-#include "scenes/page_plot_collector.hpp"
+#include "render/page/page_plots.hpp"
+#include "scenes/panels/page_plot_collector.hpp"
 
 using namespace vibra;
 using render::ColumnEnvelope;

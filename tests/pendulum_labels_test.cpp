@@ -24,7 +24,7 @@
 #include <cstdlib>
 
 #include "core/models/model.hpp"
-#include "scenes/diagram_registry.hpp"
+#include "scenes/diagrams/diagram_registry.hpp"
 #include "scenes/scene_config.hpp"
 
 using namespace vibra;

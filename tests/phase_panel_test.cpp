@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "scenes/phase_panel.hpp"
+#include "scenes/panels/phase_panel.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;

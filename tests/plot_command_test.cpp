@@ -6,8 +6,8 @@
 
 #include "cli_support.hpp"
 #include "core/error.hpp"
-#include "render/color.hpp"
-#include "scenes/trajectory_figure.hpp"
+#include "render/draw/color.hpp"
+#include "scenes/figures/trajectory_figure.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;

@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <cstring>
 
-#include "render/canvas.hpp"
-#include "render/text.hpp"
+#include "render/draw/canvas.hpp"
+#include "render/draw/text.hpp"
 #include "scenes/scene_style.hpp"
 
 using namespace vibra;

@@ -3,8 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "render/canvas.hpp"
-#include "scenes/series_panel.hpp"
+#include "render/draw/canvas.hpp"
+#include "scenes/panels/series_panel.hpp"
 
 using namespace vibra;
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cli_support.hpp"
-#include "render/temporary_file.hpp"
+#include "render/output/temporary_file.hpp"
 
 using vibra::render::TemporaryFile;
 using vibra::test::ScratchDirectory;

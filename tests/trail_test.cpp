@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <cstring>
 
-#include "render/canvas.hpp"
-#include "render/color.hpp"
-#include "render/trail.hpp"
+#include "render/draw/canvas.hpp"
+#include "render/draw/color.hpp"
+#include "render/draw/trail.hpp"
 
 using vibra::render::Point;
 using vibra::render::Trail;

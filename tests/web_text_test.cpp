@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/web_text.hpp"
+#include "render/page/web_text.hpp"
 
 using namespace vibra::render;
 

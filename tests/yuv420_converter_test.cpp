@@ -11,7 +11,7 @@ extern "C" {
 #include <vector>
 
 #include "argb_image.hpp"
-#include "render/yuv420_converter.hpp"
+#include "render/encode/yuv420_converter.hpp"
 
 using vibra::render::Yuv420Converter;
 using vibra::render::Yuv420Planes;

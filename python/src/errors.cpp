@@ -2,8 +2,8 @@
 // line's one-line message, a blow-up a SolutionError with its step and time.
 #include "bindings.hpp"
 #include "core/error.hpp"
-#include "render/output_error.hpp"
-#include "render/stop_signal.hpp"
+#include "render/output/output_error.hpp"
+#include "render/output/stop_signal.hpp"
 
 namespace vibra::python {
 

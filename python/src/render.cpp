@@ -7,7 +7,7 @@
 #include "core/error.hpp"
 #include "core/input_files.hpp"
 #include "core/value_ranges.hpp"
-#include "render/stop_signal.hpp"
+#include "render/output/stop_signal.hpp"
 #include "scenes/render_job.hpp"
 
 namespace vibra::python {

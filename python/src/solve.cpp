@@ -7,7 +7,7 @@
 #include "core/error.hpp"
 #include "core/models/model.hpp"
 #include "core/value_ranges.hpp"
-#include "render/huge_pages.hpp"
+#include "render/encode/huge_pages.hpp"
 
 namespace vibra::python {
 

@@ -13,7 +13,7 @@ foreach(asset "${PAGE_DIR}/lecture.html.in" "${PAGE_DIR}/page.js" "${PAGE_DIR}/p
   string(APPEND body "  if (name == \"${name}\") return R\"vibra_asset(${text})vibra_asset\";\n")
 endforeach()
 file(WRITE "${OUTPUT}.new" "// Generated from render/page/ and third_party/uplot/ by render/page/embed_page_assets.cmake: do not edit.
-#include \"render/page_assets.hpp\"
+#include \"render/page/page_assets.hpp\"
 
 #include <stdexcept>
 

@@ -3,7 +3,7 @@
 #include "core/analysis/empirical.hpp"
 #include "core/error.hpp"
 #include "core/models/model.hpp"
-#include "scenes/analysis_figures.hpp"
+#include "scenes/figures/analysis_figures.hpp"
 
 namespace vibra::app {
 

@@ -7,8 +7,8 @@
 
 #include "core/error.hpp"
 #include "core/models/model.hpp"
-#include "render/decimal_format.hpp"
-#include "render/stop_signal.hpp"
+#include "render/draw/decimal_format.hpp"
+#include "render/output/stop_signal.hpp"
 
 namespace vibra::app {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/trajectory.hpp"
-#include "render/ascii_plotter.hpp"
+#include "render/plot/ascii_plotter.hpp"
 
 namespace vibra::app {
 

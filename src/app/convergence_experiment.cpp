@@ -5,7 +5,7 @@
 #include "app/list_option.hpp"
 #include "core/analysis/model_convergence.hpp"
 #include "core/error.hpp"
-#include "scenes/analysis_figures.hpp"
+#include "scenes/figures/analysis_figures.hpp"
 
 namespace vibra::app {
 

@@ -8,7 +8,7 @@
 #include "core/analysis/parameters_with_dt.hpp"
 #include "core/error.hpp"
 #include "core/models/model.hpp"
-#include "scenes/analysis_figures.hpp"
+#include "scenes/figures/analysis_figures.hpp"
 
 namespace vibra::app {
 

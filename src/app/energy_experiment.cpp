@@ -3,7 +3,7 @@
 #include "app/experiments.hpp"
 #include "app/list_option.hpp"
 #include "core/analysis/energy_study.hpp"
-#include "scenes/analysis_figures.hpp"
+#include "scenes/figures/analysis_figures.hpp"
 
 namespace vibra::app {
 

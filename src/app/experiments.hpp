@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "app/table.hpp"
-#include "render/figure.hpp"
+#include "render/plot/figure.hpp"
 
 namespace vibra::app {
 

@@ -3,7 +3,7 @@
 #include "app/experiments.hpp"
 #include "core/analysis/fd_accuracy.hpp"
 #include "core/error.hpp"
-#include "scenes/analysis_figures.hpp"
+#include "scenes/figures/analysis_figures.hpp"
 
 namespace vibra::app {
 

@@ -6,7 +6,7 @@
 #include "core/analysis/numerical_frequency.hpp"
 #include "core/error.hpp"
 #include "core/expression.hpp"
-#include "scenes/analysis_figures.hpp"
+#include "scenes/figures/analysis_figures.hpp"
 
 namespace vibra::app {
 

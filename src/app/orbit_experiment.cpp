@@ -10,8 +10,8 @@
 #include "core/analysis/orbit_error.hpp"
 #include "core/analysis/line_fit.hpp"
 #include "core/error.hpp"
-#include "render/stop_signal.hpp"
-#include "scenes/analysis_figures.hpp"
+#include "render/output/stop_signal.hpp"
+#include "scenes/figures/analysis_figures.hpp"
 
 namespace vibra::app {
 

@@ -5,7 +5,7 @@
 #include "core/analysis/period_meter.hpp"
 #include "core/error.hpp"
 #include "core/models/model.hpp"
-#include "scenes/analysis_figures.hpp"
+#include "scenes/figures/analysis_figures.hpp"
 #include "scenes/run_caption.hpp"
 
 namespace vibra::app {

@@ -1,7 +1,7 @@
 #include "app/experiments.hpp"
 #include "app/list_option.hpp"
 #include "core/analysis/resonance.hpp"
-#include "scenes/resonance_figure.hpp"
+#include "scenes/figures/resonance_figure.hpp"
 
 namespace vibra::app {
 

@@ -4,8 +4,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/wrote_message.hpp"
-#include "render/output_path.hpp"
-#include "render/standard_output.hpp"
+#include "render/output/output_path.hpp"
+#include "render/output/standard_output.hpp"
 
 namespace vibra::cli {
 

@@ -16,8 +16,8 @@
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
 #include "core/error.hpp"
-#include "render/standard_output.hpp"
-#include "render/stop_signal.hpp"
+#include "render/output/standard_output.hpp"
+#include "render/output/stop_signal.hpp"
 
 namespace vibra::cli {
 

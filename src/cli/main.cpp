@@ -6,8 +6,8 @@
 
 #include "cli/command_line.hpp"
 #include "cli/run_command_line.hpp"
-#include "render/standard_output.hpp"
-#include "render/stop_signal.hpp"
+#include "render/output/standard_output.hpp"
+#include "render/output/stop_signal.hpp"
 
 namespace {
 /// The command has put its one line on stderr: the check at exit adds no

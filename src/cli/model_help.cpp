@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "render/standard_output.hpp"
+#include "render/output/standard_output.hpp"
 
 namespace vibra::cli {
 

@@ -14,7 +14,7 @@
 #include "core/quoted_value.hpp"
 #include "core/stop_flag.hpp"
 #include "core/value_ranges.hpp"
-#include "scenes/diagram_registry.hpp"
+#include "scenes/diagrams/diagram_registry.hpp"
 #include "scenes/render_job.hpp"
 #include "scenes/scene_config.hpp"
 

@@ -11,8 +11,8 @@
 #include "core/error.hpp"
 #include "core/quoted_value.hpp"
 #include "core/time_mesh.hpp"
-#include "render/standard_output.hpp"
-#include "render/stop_signal.hpp"
+#include "render/output/standard_output.hpp"
+#include "render/output/stop_signal.hpp"
 
 namespace vibra::cli {
 

@@ -2,7 +2,7 @@
 #include <functional>
 #include <string>
 
-#include "render/frame_segment.hpp"
+#include "render/encode/frame_segment.hpp"
 
 namespace vibra::cli {
 

@@ -9,11 +9,11 @@
 #include "cli/wrote_message.hpp"
 #include "core/csv_writer.hpp"
 #include "core/error.hpp"
-#include "render/output_error.hpp"
-#include "render/output_path.hpp"
-#include "render/standard_output.hpp"
-#include "render/stop_signal.hpp"
-#include "render/temporary_file.hpp"
+#include "render/output/output_error.hpp"
+#include "render/output/output_path.hpp"
+#include "render/output/standard_output.hpp"
+#include "render/output/stop_signal.hpp"
+#include "render/output/temporary_file.hpp"
 
 namespace vibra::cli {
 

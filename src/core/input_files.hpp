@@ -7,7 +7,7 @@ namespace vibra {
 
 /// The files a run reads (a scene file, a road profile, the parts vibra
 /// concat joins), noted as they are opened, so that no output of the same run
-/// is written over one of them (render/output_path.hpp asks input_at).
+/// is written over one of them (render/output/output_path.hpp asks input_at).
 struct InputFile {
   std::filesystem::path path;  ///< as the user named it
   std::string role;            ///< what it is, for messages: "the road profile (--set road)"

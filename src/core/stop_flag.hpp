@@ -1,7 +1,7 @@
 #pragma once
 // The one stop flag every long loop polls (solver steps, pre-passes,
 // analyses, drawing, encoding, concat): SIGINT and SIGTERM set it
-// (render/stop_signal.hpp installs the handlers), and the loop that sees it
+// (render/output/stop_signal.hpp installs the handlers), and the loop that sees it
 // throws Interrupted, so the run removes its temporaries and exits with
 // 128 + signal. In core so that the solver itself can look at it.
 

@@ -1,0 +1,136 @@
+#include "render/draw/shapes.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/labels/drawing_record.hpp"
+
+namespace vibra::render {
+
+namespace {
+void apply(Canvas& canvas, const Stroke& s) {
+  cairo_t* cr = canvas.cr();
+  cairo_set_source_rgba(cr, s.color.r, s.color.g, s.color.b, s.color.a);
+  const double width = s.width * canvas.scale();
+  cairo_set_line_width(cr, width);
+  if (s.dashed) {
+    const double dash[] = {4 * width, 3 * width};
+    cairo_set_dash(cr, dash, 2, s.dash_offset);
+  } else {
+    cairo_set_dash(cr, nullptr, 0, 0);
+  }
+}
+
+void move_to(cairo_t* cr, const Point& p) { cairo_move_to(cr, p.x(), p.y()); }
+void line_to(cairo_t* cr, const Point& p) { cairo_line_to(cr, p.x(), p.y()); }
+}  // namespace
+
+void draw_pixel_line(Canvas& canvas, const Point& a, const Point& b, const Stroke& s) {
+  apply(canvas, s);
+  move_to(canvas.cr(), a);
+  line_to(canvas.cr(), b);
+  canvas.stroke();
+}
+
+void draw_pixel_segments(Canvas& canvas, std::span<const std::pair<Point, Point>> segments, const Stroke& s) {
+  if (segments.empty()) return;
+  apply(canvas, s);
+  for (const auto& [a, b] : segments) move_to(canvas.cr(), a), line_to(canvas.cr(), b);
+  canvas.stroke();
+}
+
+void draw_pixel_polyline(Canvas& canvas, std::span<const Point> points, const Stroke& s) {
+  if (points.size() < 2) return;
+  apply(canvas, s);
+  move_to(canvas.cr(), points[0]);
+  for (size_t i = 1; i < points.size(); ++i) line_to(canvas.cr(), points[i]);
+  canvas.stroke();
+}
+
+void fill_pixel_rect(Canvas& canvas, const PixelRect& r, const Color& c) {
+  cairo_set_source_rgba(canvas.cr(), c.r, c.g, c.b, c.a);
+  cairo_rectangle(canvas.cr(), r.x, r.y, r.w, r.h);
+  canvas.fill();
+}
+
+void draw_line(Canvas& canvas, const WorldView& view, const Point& a, const Point& b, const Stroke& s) {
+  draw_pixel_line(canvas, view.to_pixel(a), view.to_pixel(b), s);
+}
+
+void draw_arrow(Canvas& canvas, const WorldView& view, const Point& from, const Point& to, const Stroke& s,
+                double head) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::arrow);
+  const Point a = view.to_pixel(from), b = view.to_pixel(to);
+  const double length = (b - a).norm();
+  if (length < 1e-9) return;
+  const Point along = (b - a) / length, across(-along.y(), along.x());
+  const double head_length = std::min(head * canvas.scale(), 0.6 * length);
+  const double half_width = 0.45 * head_length;
+  const Point base = b - head_length * along;
+  // The shaft stops inside the head so its round cap does not poke out of the tip.
+  draw_pixel_line(canvas, a, b - 0.8 * head_length * along, {s.color, s.width, s.dashed});
+  cairo_t* cr = canvas.cr();
+  move_to(cr, b);
+  line_to(cr, base + half_width * across);
+  line_to(cr, base + 0.25 * head_length * along);
+  line_to(cr, base - half_width * across);
+  cairo_close_path(cr);
+  cairo_set_source_rgba(cr, s.color.r, s.color.g, s.color.b, s.color.a);
+  canvas.fill();
+}
+
+void draw_circle(Canvas& canvas, const WorldView& view, const Point& center, double radius, const Color& fill,
+                 const Stroke& outline) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::body);
+  const Point c = view.to_pixel(center);
+  cairo_t* cr = canvas.cr();
+  cairo_new_path(cr);
+  cairo_arc(cr, c.x(), c.y(), radius * view.zoom(), 0, 2 * M_PI);
+  cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, fill.a);
+  canvas.fill_preserve();
+  apply(canvas, outline);
+  canvas.stroke();
+}
+
+void draw_arc(Canvas& canvas, const WorldView& view, const Point& center, double radius, double a0, double a1,
+              const Stroke& s) {
+  if (std::abs(a1 - a0) < 1e-12 || !std::isfinite(a1 - a0)) return;
+  // A sweep of more than a turn draws as one turn: Cairo makes segments in
+  // proportion to the angle, and a pendulum at Theta = 1e9 degrees would
+  // cost minutes a frame for the same circle.
+  if (std::abs(a1 - a0) > 2 * M_PI) a1 = a0 + std::copysign(2 * M_PI, a1 - a0);
+  const Point c = view.to_pixel(center);
+  cairo_t* cr = canvas.cr();
+  apply(canvas, s);
+  cairo_new_path(cr);
+  // Pixel y points down, so world angles turn the other way.
+  if (a1 > a0)
+    cairo_arc_negative(cr, c.x(), c.y(), radius * view.zoom(), -a0, -a1);
+  else
+    cairo_arc(cr, c.x(), c.y(), radius * view.zoom(), -a0, -a1);
+  canvas.stroke();
+}
+
+void draw_ceiling(Canvas& canvas, const WorldView& view, const Point& center, double half_width, const Stroke& s) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::ground);
+  const Point left = view.to_pixel(center - Point(half_width, 0)), right = view.to_pixel(center + Point(half_width, 0));
+  const double spacing = 12 * canvas.scale(), rise = 12 * canvas.scale();
+  Stroke hatch = s;
+  hatch.width = 0.6 * s.width;
+  cairo_save(canvas.cr());
+  cairo_rectangle(canvas.cr(), left.x(), left.y() - rise, right.x() - left.x(), rise);
+  cairo_clip(canvas.cr());
+  for (double x = left.x() - rise; x < right.x() + spacing; x += spacing)
+    draw_pixel_line(canvas, {x, left.y()}, {x + rise, left.y() - rise}, hatch);
+  cairo_restore(canvas.cr());
+  Stroke thick = s;
+  thick.width = 1.5 * s.width;
+  draw_pixel_line(canvas, left, right, thick);
+  const Point pin = view.to_pixel(center);
+  cairo_new_path(canvas.cr());
+  cairo_arc(canvas.cr(), pin.x(), pin.y(), 4.5 * canvas.scale(), 0, 2 * M_PI);
+  cairo_set_source_rgba(canvas.cr(), s.color.r, s.color.g, s.color.b, s.color.a);
+  canvas.fill();
+}
+
+}  // namespace vibra::render

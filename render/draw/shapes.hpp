@@ -1,0 +1,38 @@
+#pragma once
+#include <utility>
+#include <span>
+
+#include "render/draw/canvas.hpp"
+
+namespace vibra::render {
+
+/// How a line is stroked. Widths are in 720p pixels (scaled by Canvas::scale()).
+struct Stroke {
+  Color color = palette::ink;
+  double width = 2;
+  bool dashed = false;
+  /// Where in the dash pattern the path starts (pixels): a piece of a longer
+  /// path keeps the phase the whole path has there.
+  double dash_offset = 0;
+};
+
+// Shapes in world units through a WorldView. No physics here.
+void draw_line(Canvas&, const WorldView&, const Point& a, const Point& b, const Stroke&);
+/// An arrow from `from` to `to` with a filled head of `head` 720p pixels
+/// (shrunk for short arrows so the head never overshoots the tip).
+void draw_arrow(Canvas&, const WorldView&, const Point& from, const Point& to, const Stroke&, double head = 20);
+void draw_circle(Canvas&, const WorldView&, const Point& center, double radius, const Color& fill, const Stroke& outline);
+/// An arc from angle a0 to a1 (radians, counter-clockwise from +x in the world).
+void draw_arc(Canvas&, const WorldView&, const Point& center, double radius, double a0, double a1, const Stroke&);
+/// A ceiling: a thick line of half-width `half_width` centred at `center`
+/// with hatching above it, and a small pin at the centre.
+void draw_ceiling(Canvas&, const WorldView&, const Point& center, double half_width, const Stroke&);
+
+// Shapes in pixels, for plots.
+void draw_pixel_polyline(Canvas&, std::span<const Point> points, const Stroke&);
+void draw_pixel_line(Canvas&, const Point& a, const Point& b, const Stroke&);
+/// Separate segments a-b in one stroke: one pass of Cairo (and of its clip) for hatching.
+void draw_pixel_segments(Canvas&, std::span<const std::pair<Point, Point>> segments, const Stroke&);
+void fill_pixel_rect(Canvas&, const PixelRect&, const Color&);
+
+}  // namespace vibra::render

@@ -1,0 +1,594 @@
+#include "render/encode/video_writer.hpp"
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/imgutils.h>
+}
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <condition_variable>
+#include <cstring>
+#include <deque>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <map>
+#include <thread>
+
+#include "render/encode/av_error.hpp"
+#include "render/encode/huge_pages.hpp"
+#include "render/output/output_error.hpp"
+#include "render/output/standard_output.hpp"
+#include "render/output/temporary_file.hpp"
+#include "render/encode/yuv420_converter.hpp"
+#include "render/encode/yuva_converter.hpp"
+
+namespace fs = std::filesystem;
+
+namespace vibra::render {
+
+namespace {
+/// Pixels for `frame` (format and size set) in huge pages (huge_pages.hpp).
+/// Unlike av_frame_get_buffer's, the planes follow each other without extra
+/// rows: encoders read width x height, and a guard page right after the
+/// buffer found no reads past it with libx264, libvpx (VP8, VP9), Theora,
+/// FLV1 or GIF. Lines start on 64 bytes, and 64 bytes of slack follow the
+/// last one for SIMD loads.
+int allocate_frame_pixels(AVFrame* frame) {
+  constexpr int kLineAlign = 64, kSlack = 64;
+  const auto format = static_cast<AVPixelFormat>(frame->format);
+  const int size = av_image_get_buffer_size(format, frame->width, frame->height, kLineAlign);
+  if (size < 0) return size;
+  void* pixels = nullptr;
+  try {
+    pixels = allocate_huge_page_memory(std::size_t(size) + kSlack);
+  } catch (const std::bad_alloc&) {
+    return AVERROR(ENOMEM);
+  }
+  frame->buf[0] = av_buffer_create(
+      static_cast<std::uint8_t*>(pixels), size, [](void*, std::uint8_t* data) { free_huge_page_memory(data); },
+      nullptr, 0);
+  if (!frame->buf[0]) {
+    free_huge_page_memory(pixels);
+    return AVERROR(ENOMEM);
+  }
+  const int filled = av_image_fill_arrays(frame->data, frame->linesize, frame->buf[0]->data, format, frame->width,
+                                          frame->height, kLineAlign);
+  return filled < 0 ? filled : 0;
+}
+
+/// New pixels for a frame an encoder still holds (GIF's keeps its last one):
+/// no copy of the old picture, which convert() overwrites whole.
+int renew_frame_pixels(AVFrame* frame) {
+  const int format = frame->format, width = frame->width, height = frame->height;
+  av_frame_unref(frame);
+  frame->format = format;
+  frame->width = width;
+  frame->height = height;
+  return allocate_frame_pixels(frame);
+}
+
+/// How each codec is driven. Quality presets {draft, medium, high}:
+///   h264    crf 28 / 23 / 18  (x264, 0..51, lower is better; 23 is x264's default)
+///   vp9     crf 40 / 32 / 24  (0..63, constant quality: crf with b:v 0)
+///   vp8     crf 20 / 10 / 4   (4..63, constrained quality under a 4 Mb/s cap)
+///   theora  q    5 /  7 / 9   (0..10, higher is better)
+///   flv     q   10 /  5 / 2   (quantizer 2..31, lower is better)
+///   gif     fixed palette, no quality setting
+///   raw     YUV 4:2:0 as it goes to the encoders, no quality setting
+/// Lossless (h264 and vp9 only): x264 at qp 0, VP9 with lossless=1; both
+/// decode to exactly the YUV 4:2:0 frames they were given.
+struct Codec {
+  const char* name;     ///< as in VideoOptions::codec
+  const char* label;    ///< for messages
+  const char* encoder;  ///< FFmpeg encoder name
+  std::array<int, 3> quality;
+  int lowest, highest;  ///< accepted explicit crf
+};
+
+constexpr Codec kCodecs[] = {
+    {"h264", "H.264", "libx264", {28, 23, 18}, 0, 51},
+    {"vp9", "VP9", "libvpx-vp9", {40, 32, 24}, 0, 63},
+    {"vp8", "VP8", "libvpx", {20, 10, 4}, 4, 63},
+    {"theora", "Theora", "libtheora", {5, 7, 9}, 0, 10},
+    {"flv", "FLV1", "flv", {10, 5, 2}, 2, 31},
+    {"gif", "GIF", "gif", {0, 0, 0}, 0, 0},
+    {"raw", "raw YUV 4:2:0", "rawvideo", {0, 0, 0}, 0, 0},
+    {"prores", "ProRes 4444", "prores_ks", {0, 0, 0}, 0, 0},
+};
+
+struct Container {
+  const char* extension;
+  const char* format;  ///< FFmpeg muxer name
+  const char* codec;   ///< default codec
+};
+
+constexpr Container kContainers[] = {
+    {".mp4", "mp4", "h264"},   {".mkv", "matroska", "h264"}, {".webm", "webm", "vp9"},
+    {".ogv", "ogg", "theora"}, {".gif", "gif", "gif"},       {".flv", "flv", "flv"},
+    {".yuv", "rawvideo", "raw"},  // for other encoders: ffmpeg -f rawvideo -pix_fmt yuv420p -s WxH -r FPS -i x.yuv
+    {".mov", "mov", "prores"},    // ProRes 4444 with alpha, for video editors
+    {".nut", "nut", "h264"},      // FFmpeg's own container, good for pipes
+};
+
+/// The codecs that carry alpha, and the pixel format they take it in.
+bool carries_alpha(const std::string& codec) { return codec == "vp9" || codec == "prores"; }
+
+/// A container by its muxer name, for streams (-o - --format nut).
+const Container* container_named(const std::string& format) {
+  for (const Container& c : kContainers)
+    if (format == c.format) return &c;
+  return nullptr;
+}
+
+constexpr const char* kX264Presets[] = {"ultrafast", "superfast", "veryfast", "faster", "fast",
+                                        "medium",    "slow",      "slower",   "veryslow", "placebo"};
+
+const Codec& find_codec(const std::string& name) {
+  for (const Codec& c : kCodecs)
+    if (name == c.name) return c;
+  throw OutputError("unknown video codec '" + name + "': choose h264, vp9, vp8, theora, gif, flv or raw");
+}
+
+const Container* container_for(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  for (const Container& c : kContainers)
+    if (ext == c.extension) return &c;
+  return nullptr;
+}
+
+const Container& find_container(const fs::path& path) {
+  if (const Container* c = container_for(path)) return *c;
+  throw OutputError("cannot tell the video format of '" + path.string() +
+                    "': name it .mp4 (H.264), .webm (VP9), .mkv (H.264), .ogv (Theora), .gif, .flv or .yuv (raw)");
+}
+
+/// A fixed palette suited to line art: a 6x6x6 colour cube (216 colours,
+/// black and white among them) and 40 more greys, because anti-aliased dark
+/// lines on a light background are mostly greys. Nearest colour without
+/// dithering keeps lines and flat areas clean, and a fixed palette lets the
+/// GIF keep one global palette. A 6-bit-per-channel table maps pixels fast.
+struct GifPalette {
+  static constexpr int kGreys = 40;
+  std::array<std::uint32_t, 256> colors{};  ///< 0xAARRGGBB, as AV_PIX_FMT_PAL8 wants
+  std::vector<std::uint8_t> nearest = std::vector<std::uint8_t>(1 << 18);
+
+  GifPalette() {
+    for (int i = 0; i < 216; ++i) colors[i] = argb(i / 36 * 51, i / 6 % 6 * 51, i % 6 * 51);
+    for (int i = 0; i < kGreys; ++i) {
+      const int v = (i + 1) * 255 / (kGreys + 1);
+      colors[216 + i] = argb(v, v, v);
+    }
+    for (int key = 0; key < (1 << 18); ++key) {
+      const int r = expand(key >> 12), g = expand(key >> 6 & 63), b = expand(key & 63);
+      const int cube = (r + 25) / 51 * 36 + (g + 25) / 51 * 6 + (b + 25) / 51;
+      const int mean = (2 * r + 4 * g + 3 * b + 4) / 9;  // the nearest grey under distance()'s weights
+      const int grey = 216 + std::clamp((mean * (kGreys + 1) + 127) / 255 - 1, 0, kGreys - 1);
+      nearest[key] = static_cast<std::uint8_t>(
+          distance(r, g, b, colors[cube]) <= distance(r, g, b, colors[grey]) ? cube : grey);
+    }
+  }
+
+  /// The palette index of a native-endian ARGB32 pixel.
+  std::uint8_t operator()(std::uint32_t pixel) const {
+    return nearest[(pixel >> 6 & 0x3f000) | (pixel >> 4 & 0xfc0) | (pixel >> 2 & 0x3f)];
+  }
+
+ private:
+  static std::uint32_t argb(int r, int g, int b) { return 0xff000000u | r << 16 | g << 8 | b; }
+  static int expand(int six_bits) { return (six_bits * 255 + 31) / 63; }
+  static int distance(int r, int g, int b, std::uint32_t c) {
+    const int dr = r - int(c >> 16 & 255), dg = g - int(c >> 8 & 255), db = b - int(c & 255);
+    return 2 * dr * dr + 4 * dg * dg + 3 * db * db;
+  }
+};
+
+}  // namespace
+
+/// 'NAME', for messages.
+static std::string quoted(const fs::path& path) {
+  std::string text = "'";
+  text += path.string();
+  text += '\'';
+  return text;
+}
+
+struct VideoWriter::Impl {
+  explicit Impl(const fs::path& final_path)
+      : streaming(final_path == VideoWriter::kStandardOutput),
+        target(streaming ? standard_output_name() : quoted(final_path)) {
+    if (!streaming) file.emplace(final_path);
+  }
+  ~Impl();
+
+  bool streaming;      ///< to standard output, through open_standard_output_io
+  std::string target;  ///< for messages
+  std::optional<TemporaryFile> file;  ///< a file, not a stream: removed last, after it is closed
+  /// Streaming: a write to standard output failed, and was recorded there
+  /// (set by check() on either thread; write() and finish() turn the failure
+  /// into StandardOutputFailed, for main's check at exit to report).
+  mutable std::atomic<bool> output_failed = false;
+  AVFormatContext* format = nullptr;
+  AVCodecContext* codec = nullptr;
+  AVStream* stream = nullptr;
+  AVPacket* packet = nullptr;
+  std::unique_ptr<Yuv420Converter> converter;
+  /// Per frame of the queue: which conversion its pixels hold (see Yuv420Converter::convert).
+  std::map<const AVFrame*, std::uint64_t> frame_holds;
+  std::unique_ptr<YuvaConverter> alpha_converter;  ///< transparent VP9 and ProRes, beside the opaque path
+  std::unique_ptr<GifPalette> palette;
+  int width = 0, height = 0;              ///< of the frames passed to write()
+  int coded_width = 0, coded_height = 0;  ///< padded to even for H.264
+  std::int64_t next_pts = 0;
+
+  std::mutex mutex;
+  std::condition_variable changed;
+  /// Converted frames: the caller converts into a free one, the worker
+  /// encodes it and frees it again. Most encoders copy their input, so a
+  /// frame is free once encode() returns; one an encoder still holds (GIF's
+  /// keeps its last frame) gets new pixels in convert().
+  std::vector<AVFrame*> frames, free_frames;
+  std::deque<AVFrame*> queue;  ///< waiting for the worker
+  std::size_t capacity = 3;
+  bool closing = false, stopping = false;
+  std::string failure;  ///< the worker's error, rethrown by write() and finish()
+  std::thread worker;
+
+  /// Throws OutputError unless `code` is a success; `output` says whether the
+  /// step writes the file, so that the fix names the likely cause.
+  void check(int code, const std::string& what, bool output) const;
+  void convert(const std::uint8_t* argb32, int stride, const Damage* changed, AVFrame* into);
+  void encode(AVFrame* input);
+  void work();
+};
+
+VideoWriter::Impl::~Impl() {
+  {
+    std::lock_guard lock(mutex);
+    stopping = true;
+  }
+  changed.notify_all();
+  if (worker.joinable()) worker.join();
+  for (AVFrame*& f : frames) av_frame_free(&f);
+  av_packet_free(&packet);
+  avcodec_free_context(&codec);
+  if (format && streaming) close_standard_output_io(format->pb);
+  else if (format) avio_closep(&format->pb);
+  avformat_free_context(format);
+}
+
+void VideoWriter::Impl::check(int code, const std::string& what, bool output) const {
+  if (code >= 0) return;
+  if (streaming && standard_output_error() != 0) {
+    output_failed = true;
+    throw OutputError("standard output failed");
+  }
+  std::string fix;
+  if (code == AVERROR(ENOSPC) || code == AVERROR(EDQUOT))
+    fix = "free some disk space or choose another directory";
+  else if (code == AVERROR(EFBIG))
+    fix = "the file size limit was reached: raise it (ulimit -f) or lower the quality";
+  else if (output)
+    fix = "check that the disk is writable and has space, or choose another directory";
+  else
+    fix = "try the default quality and preset, or another format";
+  throw OutputError("cannot write video to " + target + ": " + what + " failed (" +
+                    av_error(code) + "): " + fix);
+}
+
+/// Runs on the caller's thread, beside the encoder's: conversion is the
+/// copy of the caller's pixels that is needed anyway.
+void VideoWriter::Impl::convert(const std::uint8_t* argb32, int stride, const Damage* changed, AVFrame* into) {
+  std::uint64_t& holds = frame_holds[into];
+  if (!av_frame_is_writable(into)) {
+    check(renew_frame_pixels(into), "preparing a frame", false);
+    holds = 0;  // new pixels: nothing known of them
+  }
+  if (palette) {
+    for (int y = 0; y < height; ++y) {
+      const auto* in = reinterpret_cast<const std::uint32_t*>(argb32 + std::ptrdiff_t(y) * stride);
+      std::uint8_t* out = into->data[0] + std::ptrdiff_t(y) * into->linesize[0];
+      for (int x = 0; x < width; ++x) out[x] = (*palette)(in[x]);
+    }
+    std::memcpy(into->data[1], palette->colors.data(), sizeof palette->colors);
+  } else if (alpha_converter) {
+    alpha_converter->convert(argb32, stride,
+                             {{into->data[0], into->data[1], into->data[2], into->data[3]},
+                              {into->linesize[0], into->linesize[1], into->linesize[2], into->linesize[3]}});
+  } else {
+    converter->convert(argb32, stride,
+                       {{into->data[0], into->data[1], into->data[2]},
+                        {into->linesize[0], into->linesize[1], into->linesize[2]}},
+                       changed, &holds);
+  }
+  into->pts = next_pts++;
+}
+
+/// Sends one frame (nullptr: flush) and writes every packet that comes out.
+void VideoWriter::Impl::encode(AVFrame* input) {
+  check(avcodec_send_frame(codec, input), "encoding", false);
+  for (;;) {
+    const int got = avcodec_receive_packet(codec, packet);
+    if (got == AVERROR(EAGAIN) || got == AVERROR_EOF) return;
+    check(got, "encoding", false);
+    packet->duration = 1;  // one tick of 1/fps, so the last frame lasts as long as the others
+    av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
+    packet->stream_index = stream->index;
+    check(av_interleaved_write_frame(format, packet), "writing a frame", true);
+  }
+}
+
+void VideoWriter::Impl::work() {
+  std::unique_lock lock(mutex);
+  for (;;) {
+    changed.wait(lock, [&] { return stopping || closing || !queue.empty(); });
+    if (stopping || queue.empty()) return;  // abandoned, or closing with everything encoded
+    AVFrame* frame = queue.front();
+    queue.pop_front();
+    lock.unlock();
+    changed.notify_all();  // room in the queue
+    try {
+      encode(frame);
+    } catch (const std::exception& e) {
+      lock.lock();
+      failure = e.what();
+      changed.notify_all();
+      return;
+    }
+    lock.lock();
+    free_frames.push_back(frame);
+  }
+}
+
+std::string VideoWriter::codec_for_path(const fs::path& path) { return find_container(path).codec; }
+
+bool VideoWriter::is_video_path(const fs::path& path) { return container_for(path) != nullptr; }
+
+std::string VideoWriter::alpha_problem(const fs::path& path, const std::string& codec) {
+  const Container* container = container_for(path);
+  if (!container || carries_alpha(codec.empty() ? container->codec : codec)) return "";
+  return (codec.empty() ? path.extension().string() + " video" : "--codec " + codec) +
+         " cannot be transparent: write .webm (VP9 with alpha), .mov (ProRes 4444 with alpha) or PNG frames such as "
+         "frames/tmp_%04d.png";
+}
+
+VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
+  av_log_set_level(AV_LOG_ERROR);  // x264 and the muxers are chatty
+  if (o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192)
+    throw OutputError("video size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
+                      " is out of range: width and height must be 1..8192");
+  if (o.fps < 1 || o.fps > 240)
+    throw OutputError("video fps " + std::to_string(o.fps) + " is out of range: choose 1..240");
+  const bool streaming = final_path == kStandardOutput;
+  const Container* named = streaming ? container_named(o.format) : nullptr;
+  if (streaming && (!named || o.format == "rawvideo" || o.format == "gif"))
+    throw OutputError("-o - streams a video to standard output: add --format y4m, nut or matroska");
+  const Container& container = streaming ? *named : find_container(final_path);
+  const Codec& codec = find_codec(o.codec.empty() ? container.codec : o.codec);
+  const std::string codec_name = codec.name;
+  const AVCodec* encoder = avcodec_find_encoder_by_name(codec.encoder);
+  if (!encoder)
+    throw OutputError(std::string("this FFmpeg has no ") + codec.encoder +
+                      " encoder: install libavcodec-extra or choose " + (codec_name == "h264" ? ".webm" : ".mp4"));
+  const AVOutputFormat* muxer = av_guess_format(container.format, nullptr, nullptr);
+  if (!muxer || avformat_query_codec(muxer, encoder->id, FF_COMPLIANCE_NORMAL) != 1)
+    throw OutputError(std::string(container.extension) + " files cannot hold " + codec.label +
+                      " video: choose another codec or extension");
+  const bool is_gif = codec_name == "gif", has_quality = codec.highest > 0;
+  if (o.crf >= 0 && has_quality && (o.crf < codec.lowest || o.crf > codec.highest))
+    throw OutputError("crf " + std::to_string(o.crf) + " is out of range for " + codec.label + ": choose " +
+                      std::to_string(codec.lowest) + ".." + std::to_string(codec.highest));
+  if (!o.preset.empty() && codec_name == "h264" &&
+      std::find_if(std::begin(kX264Presets), std::end(kX264Presets), [&](const char* p) { return o.preset == p; }) ==
+          std::end(kX264Presets))
+    throw OutputError("unknown x264 preset '" + o.preset +
+                      "': choose ultrafast, superfast, veryfast, faster, fast, medium, slow, slower or veryslow");
+  const bool lossless = o.quality == VideoQuality::lossless;
+  if (lossless && codec_name != "h264" && codec_name != "vp9")
+    throw OutputError(std::string("--quality lossless needs H.264 or VP9, not ") + codec.label +
+                      ": write .mp4, .mkv or .webm");
+  if (lossless && o.crf >= 0) throw OutputError("--quality lossless and --crf exclude each other: give one of them");
+  if (!o.preset.empty() && codec_name != "h264") notes_.push_back("the preset applies to H.264 only: ignored");
+  if (!has_quality && o.crf >= 0) notes_.push_back(std::string(codec.label) + " has no quality setting: crf ignored");
+  const bool alpha = o.transparent || codec_name == "prores";  // ProRes 4444 always has an alpha plane
+  if (o.transparent && !carries_alpha(codec_name))
+    throw OutputError(std::string(codec.label) +
+                      " video cannot be transparent: write .webm (VP9 with alpha), .mov (ProRes 4444 with alpha) or "
+                      "PNG frames such as frames/tmp_%04d.png");
+  if (is_gif && o.fps > 50) notes_.push_back("GIF viewers slow down frames shorter than 0.02 s: use 50 fps or less");
+
+  impl_ = std::make_unique<Impl>(final_path);  // checks that the directory is writable
+  Impl& m = *impl_;
+  m.width = o.width;
+  m.height = o.height;
+  // x264 refuses odd sizes in 4:2:0; the other encoders take them as they are.
+  const bool even = codec_name == "h264";
+  m.coded_width = even ? (o.width + 1) & ~1 : o.width;
+  m.coded_height = even ? (o.height + 1) & ~1 : o.height;
+  if (m.coded_width != o.width || m.coded_height != o.height)
+    notes_.push_back(std::string(codec.label) + " needs even sizes: " + std::to_string(o.width) + "x" +
+                     std::to_string(o.height) + " encoded as " + std::to_string(m.coded_width) + "x" +
+                     std::to_string(m.coded_height));
+  // Bounded queue: a few frames, fewer when frames are huge.
+  const std::size_t frame_bytes = std::size_t(m.coded_width) * m.coded_height * 4;
+  m.capacity = frame_bytes > (64u << 20) ? 1 : 3;
+
+  m.check(avformat_alloc_output_context2(&m.format, muxer, nullptr, m.streaming ? nullptr : m.file->path().c_str()),
+          "setting up the container", false);
+  m.stream = avformat_new_stream(m.format, nullptr);
+  m.codec = avcodec_alloc_context3(encoder);
+  m.packet = av_packet_alloc();
+  if (!m.stream || !m.codec || !m.packet) m.check(AVERROR(ENOMEM), "setting up the encoder", false);
+
+  AVCodecContext* c = m.codec;
+  c->width = m.coded_width;
+  c->height = m.coded_height;
+  c->time_base = AVRational{1, o.fps};  // pts = frame index
+  c->framerate = AVRational{o.fps, 1};
+  c->gop_size = 5 * o.fps;  // seeking stays quick; key frames, the bulk of a line-art video, stay few
+  c->pix_fmt = is_gif                   ? AV_PIX_FMT_PAL8
+               : codec_name == "prores" ? AV_PIX_FMT_YUVA444P10LE
+               : alpha                  ? AV_PIX_FMT_YUVA420P
+                                        : AV_PIX_FMT_YUV420P;
+  m.stream->time_base = c->time_base;  // a hint: the muxer may choose another in write_header
+  m.stream->avg_frame_rate = c->framerate;
+  if (!is_gif) {  // the tags say what the conversion below does
+    c->color_range = AVCOL_RANGE_MPEG;
+    c->colorspace = AVCOL_SPC_BT709;
+    c->color_primaries = AVCOL_PRI_BT709;
+    c->color_trc = AVCOL_TRC_BT709;
+  }
+  const int q = o.crf >= 0 ? o.crf : lossless ? 0 : codec.quality[static_cast<int>(o.quality)];
+  const std::string crf = std::to_string(q);
+  AVDictionary* settings = nullptr;
+  if (codec_name == "h264") {
+    // The default, measured on the pendulum diagram at 1280x720 (encoder
+    // alone, 2 threads, crf 23, 300 frames; PSNR and SSIM against the source):
+    //   medium                          2.30 s CPU  202 KiB  52.98 dB  0.99969
+    //   veryfast                        1.50 s      209 KiB  51.08 dB  0.99952
+    //   veryfast, no B-frames, me dia   1.13 s      230 KiB  51.38 dB  0.99954
+    //     + subme 1                     1.05 s      241 KiB  51.29 dB  0.99951
+    //     + subme 1, 4x4 transforms     1.06 s      239 KiB  51.34 dB  0.99953  <- default
+    //     + subme 0, 4x4 transforms     0.94 s      269 KiB  51.25 dB  0.99952
+    // B-frames buy little where most of the picture stands still, the
+    // diamond search finds a diagram's small motions as well as hex, one
+    // sub-pixel pass is enough for them, and the sharp edges of line art code
+    // no worse in 4x4 transforms than 8x8 (on the diagram with plot as well).
+    // tune animation gave the same SSIM per byte as no tune, so none is set.
+    // A --preset given by the user is x264's own preset, untouched.
+    av_dict_set(&settings, "preset", o.preset.empty() ? "veryfast" : o.preset.c_str(), 0);
+    if (o.preset.empty()) av_dict_set(&settings, "x264-params", "bframes=0:me=dia:subme=1:8x8dct=0", 0);
+    // A ceiling: x264 signals the lowest profile its tools need (Main for
+    // the default, High from superfast up, Constrained Baseline for ultrafast).
+    // Lossless coding (qp 0) is High 4:4:4 Predictive's alone, even in 4:2:0.
+    av_dict_set(&settings, "profile", lossless ? "high444" : "high", 0);
+    av_dict_set(&settings, lossless ? "qp" : "crf", crf.c_str(), 0);
+  } else if (codec_name == "vp9") {
+    av_dict_set(&settings, lossless ? "lossless" : "crf", lossless ? "1" : crf.c_str(), 0);
+    c->bit_rate = 0;  // with crf: constant quality
+    av_dict_set(&settings, "row-mt", "1", 0);
+    av_dict_set(&settings, "deadline", "realtime", 0);
+    av_dict_set(&settings, "cpu-used", "8", 0);
+    c->thread_count = 2;
+  } else if (codec_name == "vp8") {
+    av_dict_set(&settings, "crf", crf.c_str(), 0);
+    c->bit_rate = 4'000'000;  // VP8's crf is constrained quality: it needs a cap
+    av_dict_set(&settings, "deadline", "realtime", 0);
+    av_dict_set(&settings, "cpu-used", "8", 0);
+    c->thread_count = 1;  // libvpx's VP8 threads busy-wait: on two cores one thread is faster
+  } else if (codec_name == "prores") {
+    av_dict_set(&settings, "profile", "4444", 0);
+    av_dict_set(&settings, "vendor", "apl0", 0);  // as Apple's encoder tags it: some editors look for it
+    c->thread_count = 0;  // one slice thread per core: ProRes costs about 0.12 s of CPU per 720p frame
+  } else if (codec_name == "theora" || codec_name == "flv") {
+    c->flags |= AV_CODEC_FLAG_QSCALE;
+    c->global_quality = FF_QP2LAMBDA * q;
+  }
+  if (o.threads > 0) c->thread_count = o.threads;
+  if (m.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  const int opened = avcodec_open2(c, encoder, &settings);
+  av_dict_free(&settings);
+  m.check(opened, std::string("opening the ") + codec.encoder + " encoder", false);
+  m.check(avcodec_parameters_from_context(m.stream->codecpar, c), "setting up the stream", false);
+
+  // The queue, one frame with the worker and one being converted.
+  for (std::size_t i = 0; i < m.capacity + 2; ++i) {
+    AVFrame* frame = av_frame_alloc();
+    if (!frame) m.check(AVERROR(ENOMEM), "allocating a frame", false);
+    m.frames.push_back(frame);
+    frame->format = c->pix_fmt;
+    frame->width = c->width;
+    frame->height = c->height;
+    m.check(allocate_frame_pixels(frame), "allocating a frame", false);
+    m.free_frames.push_back(frame);
+  }
+  if (is_gif)
+    m.palette = std::make_unique<GifPalette>();
+  else if (alpha)
+    m.alpha_converter = std::make_unique<YuvaConverter>(
+        codec_name == "prores" ? YuvaConverter::Layout::yuva444p10 : YuvaConverter::Layout::yuva420p, m.width, m.height);
+  else
+    m.converter = std::make_unique<Yuv420Converter>(m.width, m.height, m.coded_width, m.coded_height);
+
+  for (const auto& [key, value] : o.metadata)
+    m.check(av_dict_set(&m.format->metadata, key.c_str(), value.c_str(), 0), "setting metadata", false);
+  if (m.streaming) {
+    m.format->pb = open_standard_output_io();
+    if (!m.format->pb) m.check(AVERROR(ENOMEM), "opening standard output", true);
+  } else {
+    m.check(avio_open(&m.format->pb, m.file->path().c_str(), AVIO_FLAG_WRITE), "opening the file", true);
+  }
+  AVDictionary* header = nullptr;
+  if (codec_name == "h264" && std::string(container.format) == "mp4")
+    av_dict_set(&header, "movflags", "+faststart", 0);  // index first: browsers play while loading
+  const int written = avformat_write_header(m.format, &header);
+  av_dict_free(&header);
+  m.check(written, "writing the header", true);
+  m.next_pts = o.first_frame;
+  m.worker = std::thread([&m] { m.work(); });
+}
+
+VideoWriter::~VideoWriter() = default;
+
+fs::path VideoWriter::file() const { return impl_ && impl_->file ? impl_->file->final_path() : fs::path(); }
+
+void VideoWriter::write(const std::uint8_t* argb32, int stride, const Damage* changed) {
+  if (finished_) throw std::logic_error("VideoWriter::write after finish");
+  Impl& m = *impl_;
+  AVFrame* frame = nullptr;
+  {
+    std::unique_lock lock(m.mutex);
+    m.changed.wait(lock, [&] { return m.queue.size() < m.capacity || !m.failure.empty(); });
+    if (m.output_failed) throw StandardOutputFailed{};
+    if (!m.failure.empty()) throw OutputError(m.failure);
+    frame = m.free_frames.back();  // never empty: see frames
+    m.free_frames.pop_back();
+  }
+  try {
+    m.convert(argb32, stride, changed, frame);
+  } catch (...) {
+    std::lock_guard lock(m.mutex);
+    m.free_frames.push_back(frame);
+    throw;
+  }
+  {
+    std::lock_guard lock(m.mutex);
+    m.queue.push_back(frame);
+  }
+  m.changed.notify_all();
+  ++frames_;
+}
+
+void VideoWriter::finish() {
+  if (finished_) throw std::logic_error("VideoWriter::finish called twice");
+  Impl& m = *impl_;
+  {
+    std::lock_guard lock(m.mutex);
+    m.closing = true;
+  }
+  m.changed.notify_all();
+  if (m.worker.joinable()) m.worker.join();
+  try {
+    if (!m.failure.empty()) throw OutputError(m.failure);
+    m.encode(nullptr);  // flush: encoders hold back frames for look-ahead
+    m.check(av_write_trailer(m.format), "writing the trailer", true);
+    if (m.streaming) {
+      m.check(close_standard_output_io(m.format->pb), "writing", true);
+    } else {
+      m.check(avio_closep(&m.format->pb), "closing the file", true);
+      m.file->commit();
+    }
+  } catch (const OutputError&) {
+    if (m.output_failed) throw StandardOutputFailed{};
+    throw;
+  }
+  finished_ = true;
+}
+
+}  // namespace vibra::render

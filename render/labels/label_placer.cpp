@@ -1,0 +1,125 @@
+#include "render/labels/label_placer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/labels/drawing_record.hpp"
+#include "render/labels/occupancy_grid.hpp"
+#include "render/draw/shapes.hpp"
+
+namespace vibra::render {
+
+namespace {
+constexpr int kTurns = 8;            ///< directions tried each side of the preferred one, 22.5 degrees apart
+constexpr double kTurnCost = 9;      ///< 720p pixels a turn of 22.5 degrees costs, against pushing out
+constexpr double kStep = 2;          ///< 720p pixels between the distances tried along a direction
+constexpr double kFarthest = 180;    ///< 720p pixels a label may be pushed beyond its gap
+constexpr double kLeaderAfter = 10;  ///< 720p pixels pushed out (or a turn) beyond which a leader line is drawn
+
+struct Candidate {
+  int turn;   ///< signed, in steps of 22.5 degrees
+  int steps;  ///< pushed out by steps * kStep
+  double cost;
+};
+
+/// Every spot tried, cheapest first; the same for every label.
+const std::vector<Candidate>& candidates() {
+  static const std::vector<Candidate> all = [] {
+    std::vector<Candidate> out;
+    const int farthest = static_cast<int>(kFarthest / kStep);
+    for (int turn = -kTurns + 1; turn <= kTurns; ++turn)
+      for (int steps = 0; steps <= farthest; ++steps)
+        out.push_back({turn, steps, steps * kStep + std::abs(turn) * kTurnCost});
+    // Ties: the smaller turn, then counter-clockwise on screen first, so the
+    // order never depends on the sort's whims.
+    std::stable_sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
+      if (a.cost != b.cost) return a.cost < b.cost;
+      if (std::abs(a.turn) != std::abs(b.turn)) return std::abs(a.turn) < std::abs(b.turn);
+      return a.turn > b.turn;
+    });
+    return out;
+  }();
+  return all;
+}
+
+PixelRect box_at(const Point& centre, const Point& size) {
+  return {centre.x() - 0.5 * size.x(), centre.y() - 0.5 * size.y(), size.x(), size.y()};
+}
+
+bool within(const PixelRect& inner, const PixelRect& outer) {
+  return inner.x >= outer.x && inner.y >= outer.y && inner.x + inner.w <= outer.x + outer.w &&
+         inner.y + inner.h <= outer.y + outer.h;
+}
+
+Point nearest_on_box(const PixelRect& box, const Point& p) {
+  return {std::clamp(p.x(), box.x, box.x + box.w), std::clamp(p.y(), box.y, box.y + box.h)};
+}
+}  // namespace
+
+std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelRequest>& requests, Outline& outline,
+                                      const PixelRect& bounds) {
+  const double scale = canvas.scale();
+  OccupancyGrid grid(bounds, 2 * scale, 1.5 * scale);
+  for (const OutlineShape& shape : outline.shapes()) grid.add(shape);
+  std::vector<PlacedLabel> placed;
+  for (const LabelRequest& request : requests) {
+    const Point size = text_size(canvas, request.markup, request.style) +
+                       Point::Constant(2 * halo_reach(request.style, scale));
+    const double n = request.direction.norm();
+    const Point preferred = n > 1e-12 ? Point(request.direction / n) : Point(1, 0);
+    auto box_for = [&](const Candidate& c) {
+      const double angle = c.turn * M_PI / kTurns;
+      const Point d(std::cos(angle) * preferred.x() + std::sin(angle) * preferred.y(),
+                    -std::sin(angle) * preferred.x() + std::cos(angle) * preferred.y());
+      return box_at(label_beyond(request.anchor, d, size, request.gap + c.steps * kStep * scale), size);
+    };
+    const Candidate* chosen = nullptr;
+    const Candidate* least_covered = nullptr;
+    long long least = -1;
+    for (const Candidate& c : candidates()) {
+      const PixelRect box = box_for(c);
+      if (!within(box, bounds)) continue;
+      const long long taken = grid.taken(box);
+      if (taken == 0) {
+        chosen = &c;
+        break;
+      }
+      if (least < 0 || taken < least) least = taken, least_covered = &c;
+    }
+    const Candidate& c = chosen ? *chosen : least_covered ? *least_covered : candidates().front();
+    PlacedLabel label{request, box_for(c), chosen != nullptr, false};
+    label.leader = c.steps * kStep > kLeaderAfter || std::abs(c.turn) * kTurnCost > kLeaderAfter;
+    grid.add_box(label.box);
+    outline.add_box(label.box, OutlineKind::label, request.markup);
+    placed.push_back(std::move(label));
+  }
+  return placed;
+}
+
+void draw_placed_labels(Canvas& canvas, const std::vector<PlacedLabel>& labels) {
+  const double scale = canvas.scale();
+  for (const PlacedLabel& label : labels) {
+    if (!label.leader) continue;
+    // From just off the anchor to just short of the box, under every label.
+    const Point end = nearest_on_box(label.box, label.request.anchor);
+    const Point d = end - label.request.anchor;
+    const double length = d.norm();
+    if (length < 6 * scale) continue;
+    const Point along = d / length;
+    draw_pixel_line(canvas, label.request.anchor + 3 * scale * along, end - 2 * scale * along,
+                    {label.request.style.color.with_alpha(0.7), 1.2});
+  }
+  for (const PlacedLabel& label : labels)
+    draw_text(canvas, label.box.center(), label.request.markup, label.request.style);
+}
+
+void request_label(Canvas& canvas, const LabelRequest& request) {
+  if (DrawingRecord* record = canvas.record()) {
+    record->labels.push_back(request);
+    return;
+  }
+  Outline nothing;
+  draw_placed_labels(canvas, place_labels(canvas, {request}, nothing, {0, 0, double(canvas.width()), double(canvas.height())}));
+}
+
+}  // namespace vibra::render

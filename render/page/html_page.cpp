@@ -1,0 +1,139 @@
+#include "render/page/html_page.hpp"
+
+#include <cstdio>
+#include <map>
+
+#include "render/output/output_error.hpp"
+#include "render/page/page_assets.hpp"
+#include "render/output/temporary_file.hpp"
+#include "render/page/web_text.hpp"
+
+namespace vibra::render {
+
+namespace {
+std::string mime_type(const std::string& source) {
+  const std::string ext = std::filesystem::path(source).extension().string();
+  if (ext == ".mp4") return "video/mp4";
+  if (ext == ".webm") return "video/webm";
+  if (ext == ".ogv") return "video/ogg";
+  return "video/x-matroska";
+}
+
+std::string href(const std::string& file) { return html_escape(url_path_escape(file)); }
+
+std::string media_html(const PageMedia& m) {
+  const std::string size = " width=\"" + std::to_string(m.width) + "\" height=\"" + std::to_string(m.height) + "\"";
+  switch (m.kind) {
+    case PageMedia::Kind::none: return "";
+    case PageMedia::Kind::frames:
+      return "<div id=\"media\"><img id=\"frames\"" + size + " alt=\"a frame of the animation\"></div>";
+    case PageMedia::Kind::video: break;
+  }
+  std::string out = "<div id=\"media\"><video id=\"video\" preload=\"auto\" playsinline muted loop" + size + ">\n";
+  for (const auto& s : m.videos) out += "  <source src=\"" + href(s) + "\" type=\"" + mime_type(s) + "\">\n";
+  if (!m.videos.empty())
+    out += "  Your browser plays none of these videos: download <a href=\"" + href(m.videos.front()) + "\">" +
+           html_escape(m.videos.front()) + "</a>.\n";
+  return out + "</video></div>";
+}
+
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
+std::string data_json(const LecturePage& page) {
+  const PageMedia& m = page.media;
+  std::string out = "{\"media\":";
+  switch (m.kind) {
+    case PageMedia::Kind::none: out += "{\"kind\":\"none\"},\"clock\":null"; break;
+    case PageMedia::Kind::video: out += "{\"kind\":\"video\"}"; break;
+    case PageMedia::Kind::frames:
+      out += "{\"kind\":\"frames\",\"prefix\":" + json_string(url_path_escape(m.frames_prefix)) +
+             ",\"digits\":" + std::to_string(m.digits) + "}";
+      break;
+  }
+  if (m.kind != PageMedia::Kind::none)
+    out += ",\"clock\":{\"fps\":" + number(m.fps) + ",\"frames\":" + std::to_string(m.frames) +
+           ",\"interval\":" + number(m.frame_interval) + "}";
+  return out + ",\"plots\":" + page_plots_json(page.panels, kPagePlotBudgetBytes) + "}";
+}
+
+std::string facts_rows(const PageFacts& facts) {
+  std::string out;
+  for (const auto& [name, value] : facts)
+    out += "<tr><td>" + html_escape(name) + "</td><td>" + html_escape(value) + "</td></tr>\n";
+  return out;
+}
+
+std::string downloads_html(const std::vector<PageDownload>& downloads) {
+  if (downloads.empty()) return "";
+  std::string out = "<p class=\"downloads\">Download:";
+  for (size_t i = 0; i < downloads.size(); ++i)
+    out += std::string(i ? " &middot;" : "") + " <a href=\"" + href(downloads[i].file) + "\" download>" +
+           html_escape(downloads[i].label) + "</a>";
+  return out + "</p>";
+}
+
+/// Replaces each @NAME@ of the template by its value, in one pass: values
+/// (scripts, data) are never searched for names themselves.
+std::string fill(std::string_view text, const std::map<std::string, std::string>& values) {
+  std::string out;
+  size_t at = 0;
+  while (true) {
+    const size_t open = text.find('@', at);
+    const size_t close = open == std::string_view::npos ? open : text.find('@', open + 1);
+    if (close == std::string_view::npos) break;
+    const auto value = values.find(std::string(text.substr(open + 1, close - open - 1)));
+    if (value == values.end()) {
+      out += text.substr(at, close - at);
+      at = close;
+      continue;
+    }
+    out += text.substr(at, open - at);
+    out += value->second;
+    at = close + 1;
+  }
+  return out += text.substr(at);
+}
+}  // namespace
+
+std::string lecture_page_html(const LecturePage& page) {
+  const bool has_media = page.media.kind != PageMedia::Kind::none;
+  const std::string hint =
+      has_media ? "Space plays or pauses; &#8592; and &#8594; step one frame; Home and End go to the ends. Click or drag "
+                  "in a plot to seek. The wheel zooms the time axis; Shift+drag, or a drag on the time axis, pans; "
+                  "a double-click shows the whole run."
+                : "Click in a plot to mark a time. The wheel zooms the time axis; Shift+drag, or a drag on the time "
+                  "axis, pans; a double-click shows the whole run.";
+  return fill(page_asset("lecture.html.in"),
+              {{"TITLE", html_escape(page.title)},
+               {"UPLOT_CSS", std::string(page_asset("uPlot.min.css"))},
+               {"PAGE_CSS", std::string(page_asset("page.css"))},
+               {"MEDIA", media_html(page.media)},
+               {"CONTROLS_CLASS", has_media ? "" : "hidden"},
+               {"HINT", hint},
+               {"FACTS", facts_rows(page.facts)},
+               {"COMMAND", html_escape(page.command_line)},
+               {"DOWNLOADS", downloads_html(page.downloads)},
+               {"DATA", data_json(page)},
+               {"UPLOT_JS", std::string(page_asset("uPlot.iife.min.js"))},
+               {"PAGE_JS", std::string(page_asset("page.js"))}});
+}
+
+void write_text(const TemporaryFile& file, const std::string& text) {
+  const std::string path = file.final_path().string();
+  std::FILE* f = std::fopen(file.path().c_str(), "wb");
+  if (!f) throw OutputError("cannot write '" + path + "': choose a writable path");
+  const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  if (std::fclose(f) != 0 || !ok) throw OutputError("writing '" + path + "' failed (disk full?)");
+}
+
+void write_text_file(const std::filesystem::path& path, const std::string& text) {
+  TemporaryFile file(path);
+  write_text(file, text);
+  file.commit();
+}
+
+}  // namespace vibra::render

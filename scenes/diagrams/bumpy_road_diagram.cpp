@@ -1,0 +1,98 @@
+#include "scenes/diagrams/bumpy_road_diagram.hpp"
+
+#include <cmath>
+
+#include "core/models/model.hpp"
+#include "render/draw/annotations.hpp"
+#include "render/draw/ground_profile.hpp"
+#include "render/draw/machine_elements.hpp"
+#include "scenes/diagrams/diagram_registry.hpp"
+
+namespace vibra::scenes {
+
+BumpyRoadDiagram::BumpyRoadDiagram(std::shared_ptr<const RoadProfile> road, Vehicle vehicle, SceneColors colors)
+    : road_(std::move(road)), vehicle_(vehicle), colors_(colors) {
+  body_width_ = 3.2 * vehicle_.R, body_height_ = 0.9 * vehicle_.R;
+  half_width_ = 1.4 * (vehicle_.R + vehicle_.L + body_height_);
+}
+
+std::vector<PanelSpec> BumpyRoadDiagram::panels() const {
+  auto column = [](int i) { return [i](std::span<const double> r) { return r[i]; }; };
+  PanelSpec forces{"forces on the body (N)", {}};
+  forces.series.push_back({"spring −<i>ku</i>", colors_.gravity, [k = vehicle_.k](std::span<const double> r) { return -k * r[1]; }});
+  if (vehicle_.b > 0)
+    forces.series.push_back({"damper −<i>bu</i>′", colors_.drag, [b = vehicle_.b](std::span<const double> r) { return -b * r[2]; }});
+  return {{"<i>u</i> (m)  body over its rest height", {{"", colors_.bob, column(1)}}},
+          {"road <i>h</i>(<i>st</i>) (m)", {{"", colors_.wire, column(4)}}},
+          std::move(forces)};
+}
+
+void BumpyRoadDiagram::record(std::span<const double> row, WorldBox&) {
+  scale_.see(vehicle_.k * row[1]);
+  scale_.see(vehicle_.b * row[2]);
+  low_ = std::min(low_, row[4]);
+  high_ = std::max(high_, body_bottom(row) + body_height_);
+}
+
+void BumpyRoadDiagram::finish_recording(WorldBox& world) {
+  scale_.set_longest(0.9 * vehicle_.L);
+  const double reach = scale_.length(scale_.largest());
+  low_ -= 0.35 * vehicle_.R;
+  high_ += std::max(0.4 * vehicle_.R, reach - 0.5 * body_height_ + 0.3 * vehicle_.R);
+  world.extend(Point(-half_width_, low_));
+  world.extend(Point(half_width_, high_));
+  // The ground reaches below the view: a pale band under the road, hatched.
+  ground_.emplace([road = road_](double s) { return road->height(s); }, road_->dx(), 0.3 * vehicle_.R + (high_ - low_),
+                  render::Stroke{colors_.wire, 2.2});
+}
+
+std::optional<WorldBox> BumpyRoadDiagram::view_at(std::span<const double> row) const {
+  return WorldBox(Point(row[3] - half_width_, low_), Point(row[3] + half_width_, high_));
+}
+
+std::array<Arrow, 2> BumpyRoadDiagram::force_arrows(std::span<const double> row) const {
+  const Point c(row[3], body_bottom(row) + 0.5 * body_height_);
+  const double dx = 0.28 * body_width_;
+  return {Arrow{c - Point(dx, 0), c + Point(-dx, scale_.length(-vehicle_.k * row[1]))},
+          Arrow{c + Point(dx, 0), c + Point(dx, scale_.length(-vehicle_.b * row[2]))}};
+}
+
+void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
+  const double x = row[3];
+  const render::Stroke ink{colors_.wire, 2.2};
+  // The road across the visible part (the scene clips it to the diagram's area).
+  if (!ghost()) ground_->draw(canvas, view);
+
+  const Point a = axle(row);
+  const double bottom = body_bottom(row);
+  // The wheel first: the axle's bar, the spring and the damper go over it.
+  render::draw_wheel(canvas, view, a, vehicle_.R, -x / vehicle_.R, colors_.background, {colors_.wire, 2});
+  render::SpringShape spring;
+  spring.width = 0.45 * vehicle_.R, spring.lead = 0.18 * vehicle_.L, spring.coils = 6;
+  render::draw_spring(canvas, view, a + Point(-0.25 * body_width_, 0), Point(x - 0.25 * body_width_, bottom), spring, ink);
+  render::DashpotShape dashpot;
+  dashpot.width = 0.4 * vehicle_.R, dashpot.rest_length = vehicle_.L, dashpot.cylinder = 0.45;
+  render::draw_dashpot(canvas, view, a + Point(0.25 * body_width_, 0), Point(x + 0.25 * body_width_, bottom), dashpot, ink);
+  render::draw_line(canvas, view, a + Point(-0.25 * body_width_, 0), a + Point(0.25 * body_width_, 0), {colors_.wire, 3});
+  render::draw_box(canvas, view, Point(x - 0.5 * body_width_, bottom), Point(x + 0.5 * body_width_, bottom + body_height_),
+                   colors_.bob.with_alpha(0.85), {colors_.wire, 1.8});
+  if (ghost()) return;
+
+  const auto arrows = force_arrows(row);
+  render::draw_force_arrow(canvas, view, {arrows[0].from, arrows[0].to, colors_.gravity, "−<i>ku</i>"}, colors_.background);
+  render::draw_force_arrow(canvas, view, {arrows[1].from, arrows[1].to, colors_.drag, "−<i>bu</i>′"}, colors_.background);
+}
+
+DiagramKind bumpy_road_diagram_kind() {
+  return {"bumpy_road", "vehicle on a bumpy road: road profile, rolling wheel, spring and damper, view following (section 1.12.8)",
+          {"bumpy-road"}, [](const DiagramInput& in) {
+            const Parameters& p = in.parameters;
+            const double distance = p.number("speed") * in.info.mesh.T;
+            auto road = std::make_shared<const RoadProfile>(road_of(p, distance + 2 * p.positive("wavelength")));
+            return std::make_unique<BumpyRoadDiagram>(
+                road, BumpyRoadDiagram::Vehicle{p.number("k"), p.number("b"), p.number("R"), p.number("L")},
+                in.config.colors);
+          }};
+}
+
+}  // namespace vibra::scenes

@@ -1,0 +1,43 @@
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "scenes/diagrams/diagram.hpp"
+#include "scenes/member_columns.hpp"
+
+namespace vibra::scenes {
+
+/// The members of a comparison in one diagram: the first drawn solid with its
+/// forces, the others as ghosts (their bodies only, in their own colours,
+/// faint, under the first, so that the first stays clear). Each
+/// member's diagram reads its own columns of the comparison's rows. A member
+/// whose columns turn NaN (it blew up) is drawn no more.
+class ComparisonDiagram final : public Diagram {
+ public:
+  struct Member {
+    std::unique_ptr<Diagram> diagram;
+    MemberColumns columns;
+    LegendEntry entry;
+  };
+  /// `shared_exact`: the members solve one problem, so the first member's
+  /// exact solution stands for all; otherwise each has its own.
+  ComparisonDiagram(std::vector<Member>, bool shared_exact, std::string exact_label);
+
+  void record(std::span<const double> row, WorldBox&) override;
+  void finish_recording(WorldBox&) override;
+  std::optional<WorldBox> view_at(std::span<const double> row) const override;
+  void draw_static(render::Canvas&, const render::WorldView&) const override;
+  void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
+  /// Each panel of the first member's diagram, with one curve per member in
+  /// its colour (the first curve of that panel), and the exact solution dashed.
+  std::vector<PanelSpec> panels() const override;
+  std::vector<LegendEntry> legend() const override;
+
+ private:
+  std::vector<Member> members_;
+  bool shared_exact_;
+  std::string exact_label_;
+  mutable std::vector<double> slice_;
+};
+
+}  // namespace vibra::scenes

@@ -1,0 +1,108 @@
+#include "scenes/panels/plot_panels.hpp"
+#include "scenes/diagrams/pendulum_diagram.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "render/draw/annotations.hpp"
+#include "render/labels/label_placer.hpp"
+#include "render/draw/shapes.hpp"
+#include "render/draw/text.hpp"
+#include "scenes/diagrams/diagram_registry.hpp"
+
+namespace vibra::scenes {
+
+using render::Canvas;
+using render::Color;
+using render::TextStyle;
+
+namespace {
+std::string magnification_label(double m) {
+  if (m == 1) return "<i>D</i>";
+  char text[64];
+  std::snprintf(text, sizeof text, m == std::round(m) ? "%.0f" : "%g", m);
+  return std::string("<i>D</i> \u00d7") + text;
+}
+
+PendulumState state_of(std::span<const double> row) { return {row[0], row[1], row[2], row[3], row[4]}; }
+}  // namespace
+
+PendulumDiagram::PendulumDiagram(PendulumDiagramOptions options, SceneColors colors)
+    : options_(options), colors_(colors) {}
+
+std::vector<PanelSpec> PendulumDiagram::panels() const {
+  auto column = [](int i, double factor) { return [i, factor](std::span<const double> row) { return factor * row[i]; }; };
+  // theta is shown in degrees, the forces in units of m g.
+  return {{quantity_markup("theta"), {{"", colors_.bob, column(1, display_factor("theta"))}}},
+          {"<i>S</i> / <i>mg</i>  wire force", {{"", colors_.wire_force, column(3, 1)}}},
+          {"<i>D</i> / <i>mg</i>  air drag", {{"", colors_.drag, column(4, 1)}}}};
+}
+
+void PendulumDiagram::record(std::span<const double> row, WorldBox& world) {
+  const PendulumGeometry g = pendulum_geometry(state_of(row), options_);
+  const double r = options_.bob_radius;
+  for (const Point& p : {Point(g.bob + Point(r, r)), Point(g.bob - Point(r, r)), g.gravity_tip, g.wire_force_tip,
+                         g.drag_tip})
+    world.extend(p);
+}
+
+void PendulumDiagram::finish_recording(WorldBox& world) {
+  // The ceiling, the dashed vertical and the angle label always fit; the
+  // pivot on the frame's centre line.
+  world.extend(Point(-0.35, 0.12));
+  world.extend(Point(0.35, -options_.vertical_length));
+  center_horizontally_on(world, 0);
+}
+
+void PendulumDiagram::draw_static(Canvas& canvas, const render::WorldView& view) const {
+  draw_ceiling(canvas, view, Point::Zero(), 0.3, {colors_.wire, 2.2});
+}
+
+void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
+  const PendulumState state = state_of(row);
+  const auto& o = options_;
+  const auto& c = colors_;
+  const PendulumGeometry g = pendulum_geometry(state, o);
+  const double scale = canvas.scale();
+
+  if (ghost()) {
+    draw_line(canvas, view, g.pivot, g.bob, {c.wire, 2.2});
+    draw_circle(canvas, view, g.bob, o.bob_radius, c.bob, {c.wire, 1.6});
+    return;
+  }
+  draw_line(canvas, view, g.pivot, g.vertical_end, {c.wire.with_alpha(0.6), 1.6, true});
+  draw_line(canvas, view, g.pivot, g.bob, {c.wire, 2.2});
+  draw_arc(canvas, view, g.pivot, o.arc_radius, g.arc_from, g.arc_to, {c.wire, 1.6});
+  draw_circle(canvas, view, g.bob, o.bob_radius, c.bob, {c.wire, 1.6});
+
+  // S runs along the wire toward the pivot, where a label beyond its tip
+  // would sit on the wire and the angle arc: it goes beside the shaft instead,
+  // away from the vertical and the arc.
+  const Point outward(std::cos(state.theta), -std::sin(state.theta));  // i_theta in pixels (y down)
+  const double side = state.theta >= 0 ? 1 : -1;
+  const render::ForceArrow forces[] = {
+      {g.bob, g.gravity_tip, c.gravity, "<i>mg</i>"},
+      {g.bob, g.wire_force_tip, c.wire_force, "<i>S</i>", render::LabelPlace::beside, side * outward},
+      {g.bob, g.drag_tip, c.drag, magnification_label(o.drag_magnification)}};
+  for (const auto& f : forces) draw_force_arrow(canvas, view, f, c.background);
+
+  // The angle's label beyond the middle of its arc, placed like the arrows' labels.
+  if (std::abs(state.theta) > 0.02) {
+    TextStyle label{24, c.wire};
+    label.halo = true, label.halo_color = c.background;
+    const Point at = view.to_pixel(g.pivot + o.arc_radius * g.theta_label_direction);
+    const Point direction(g.theta_label_direction.x(), -g.theta_label_direction.y());
+    render::request_label(canvas, {"<i>θ</i>", label, at, direction, 4 * scale});
+  }
+}
+
+DiagramKind pendulum_diagram_kind() {
+  return {"pendulum", "free-body diagram of the pendulum: wire, bob, angle arc, arrows mg, S and the magnified drag D",
+          {"pendulum", "physical-pendulum"}, [](const DiagramInput& in) {
+            PendulumDiagramOptions options;
+            options.drag_magnification = in.config.drag_magnification;
+            return std::make_unique<PendulumDiagram>(options, in.config.colors);
+          }};
+}
+
+}  // namespace vibra::scenes

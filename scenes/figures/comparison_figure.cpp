@@ -1,0 +1,130 @@
+#include "scenes/figures/comparison_figure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.hpp"
+#include "render/output/stop_signal.hpp"
+#include "scenes/panels/rows_inside_step.hpp"
+#include "scenes/diagrams/comparison_labels.hpp"
+#include "scenes/panels/plot_panels.hpp"
+#include "scenes/run_caption.hpp"
+
+namespace vibra::scenes {
+
+namespace {
+const render::SeriesStyle kExactStyle{render::palette::ink.with_alpha(0.75), 1.8, true, false};
+
+/// A member's series in one panel, fed from two columns of its rows.
+struct Feed {
+  size_t member;
+  int panel;
+  render::Series* series;
+  int x_column, y_column;
+  double x_factor = 1, y_factor = 1;  ///< display_factor of each column
+};
+
+/// The exact solution over [0, T]: finer than the mesh (its envelope keeps every peak) and 4 samples per pixel column.
+void add_exact_curve(render::Series& series, const TrajectoryInfo& info, double T, long long steps, int width) {
+  const long long samples = std::max(4LL * width, steps);
+  const double f = display_factor(info.columns[1]);
+  for (long long i = 0; i <= samples; ++i) series.add(T * i / samples, f * info.exact(T * i / samples));
+}
+
+/// The exact solution in the phase plane, its velocity by a centered
+/// difference (error ~1e-10, far below a pixel), over one period or [0, T].
+void add_exact_phase(render::Series& series, const TrajectoryInfo& info, double T) {
+  const double period = info.exact_period > 0 ? info.exact_period : info.mesh.period;
+  const double span = period > 0 ? std::min(T, period) : T, h = 1e-5 * span;
+  for (int i = 0; i <= 2000; ++i) {
+    const double t = span * i / 2000;
+    series.add(display_factor(info.columns[1]) * info.exact(t),
+               display_factor(info.columns[velocity_column(info)]) * (info.exact(t + h) - info.exact(t - h)) / (2 * h));
+  }
+}
+}  // namespace
+
+std::vector<std::string> default_comparison_panels(const TrajectoryInfo& info) {
+  if (column_index(info, "x") > 0 && column_index(info, "y") > 0) return {"path"};
+  return {info.columns[1], "phase"};
+}
+
+render::Figure comparison_figure(Comparison& comparison, const std::vector<std::string>& panels, int width, int height,
+                                 const std::string& title) {
+  const TrajectoryInfo& first = comparison.trajectory(0).info();
+  const std::vector<std::string> order = panel_order(first, panels);
+  const double T = comparison.end_time();
+  if (!std::isfinite(T)) throw UsageError("a plot needs a finite end time: give T or periods");
+  long long steps = 0;
+  for (size_t m = 0; m < comparison.size(); ++m) steps = std::max(steps, comparison.trajectory(m).info().mesh.steps);
+  comparison.set_view_limits();
+  // Comparing schemes or time steps: one problem, one exact solution. Comparing
+  // a model key: each member has its own, dashed in its colour.
+  const bool shared_exact = comparison.same_problem();
+
+  render::Figure figure(width, height, title);
+  std::vector<Feed> feeds;
+  std::vector<std::vector<render::Series*>> labelled(comparison.size());  // the legend's entries, per member
+  for (const auto& name : order) {
+    const bool time_panel = name != "path" && name != "phase";
+    const int x = name == "path" ? column_index(first, "x") : time_panel ? 0 : 1;
+    const int y = name == "path" ? column_index(first, "y") : name == "phase" ? velocity_column(first) : column_index(first, name);
+    render::PanelOptions options{quantity_markup(first.columns[y]), quantity_markup(first.columns[x]),
+                                 render::AxisScale::linear, render::AxisScale::linear, name == "path"};
+    if (time_panel) options.x_range = std::make_pair(0.0, T);
+    const int p = figure.add_panel(options);
+    const bool legend = p == 0;  // the colours are the same in every panel
+    for (size_t m = 0; m < comparison.size(); ++m) {
+      const render::SeriesStyle style{render::palette::series(m), 2.2};
+      render::Series& s = time_panel ? figure.add_curve(p, legend ? member_markup(comparison, m) : "", style, 0, T)
+                                     : figure.add_path(p, legend ? member_markup(comparison, m) : "", style);
+      feeds.push_back({m, p, &s, x, y, display_factor(first.columns[x]), display_factor(first.columns[y])});
+      if (legend) labelled[m].push_back(&s);
+    }
+    const bool main_quantity = name == first.columns[1] || name == "phase";
+    if (!main_quantity) continue;
+    for (size_t m = 0; m < comparison.size(); ++m) {
+      const TrajectoryInfo& info = comparison.trajectory(m).info();
+      if (!info.exact || (shared_exact && m > 0)) continue;
+      render::SeriesStyle style = kExactStyle;
+      if (!shared_exact) style.color = render::palette::series(m).with_alpha(0.8), style.line_width = 1.4;
+      const std::string label = legend && (shared_exact || m == 0) ? info.exact_label + " (dashed)" : "";
+      render::Series& exact = time_panel ? figure.add_curve(p, shared_exact ? label : "", style, 0, T)
+                                         : figure.add_path(p, shared_exact ? label : "", style);
+      if (!shared_exact && !label.empty()) figure.add_points(p, label, kExactStyle);  // a legend entry only
+      if (time_panel) add_exact_curve(exact, info, T, steps, width);
+      else add_exact_phase(exact, info, T);
+    }
+  }
+
+  std::vector<std::vector<double>> last(comparison.size());
+  std::vector<double> between;
+  long long samples = 0;
+  comparison.advance_to(T, [&](size_t member, std::span<const double> row) {
+    auto feed = [&](std::span<const double> r) {
+      for (const Feed& f : feeds)
+        if (f.member == member) f.series->add(f.x_factor * r[f.x_column], f.y_factor * r[f.y_column]);
+    };
+    const Trajectory& run = comparison.trajectory(member);
+    between.resize(row.size());
+    if (!last[member].empty()) rows_inside_step(run, last[member][0], inside_step_spacing(run.info().mesh, width), between, feed);
+    feed(row);
+    last[member].assign(row.begin(), row.end());
+    if ((++samples & 0xffff) == 0) render::throw_if_stop_requested();
+  });
+
+  // Where a member left the view or blew up: a dot at its last point and a note in the legend.
+  for (size_t m = 0; m < comparison.size(); ++m) {
+    if (!comparison.blew_up(m)) continue;
+    for (render::Series* s : labelled[m])
+      s->set_label(s->label() + ": " + early_end_note(comparison.early_end(m), comparison.blow_up_time(m)));
+    for (const Feed& f : feeds)
+      if (f.member == m && !last[m].empty())
+        figure.add_points(f.panel, "", {render::palette::series(m), 0, false, true})
+            .add(f.x_factor * last[m][f.x_column], f.y_factor * last[m][f.y_column]);
+  }
+  return figure;
+}
+
+}  // namespace vibra::scenes

@@ -1,0 +1,95 @@
+#include "scenes/panels/phase_panel.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vibra::scenes {
+
+PhasePanel::PhasePanel(const render::PixelRect& outer, double scale, std::string x_label, std::string y_label,
+                       std::vector<PhaseCurveSpec> curves, double trail)
+    : panel_(outer, scale),
+      x_label_(std::move(x_label)),
+      y_label_(std::move(y_label)),
+      curves_(std::move(curves)),
+      trail_(trail > 0 ? trail : 1),
+      trails_(curves_.size()) {}
+
+void PhasePanel::record(std::span<const double> row) {
+  for (const auto& c : curves_) {
+    const double x = c.x(row), y = c.y(row);
+    if (!std::isfinite(x) || !std::isfinite(y)) continue;
+    x_lo_ = std::min(x_lo_, x), x_hi_ = std::max(x_hi_, x);
+    y_lo_ = std::min(y_lo_, y), y_hi_ = std::max(y_hi_, y);
+  }
+}
+
+void PhasePanel::observe(std::span<const double> row) {
+  const double t = row[0];
+  // At most kTrailPoints over the trail's duration: a point only when enough
+  // time has passed since the last one kept.
+  const double spacing = trail_ / kTrailPoints;
+  for (size_t i = 0; i < curves_.size(); ++i) {
+    auto& trail = trails_[i];
+    if (!trail.empty() && t < trail.back().t) trail.clear();  // a new pass from the start
+    if (!trail.empty() && t - trail.back().t < spacing) continue;
+    const double x = curves_[i].x(row), y = curves_[i].y(row);
+    if (!std::isfinite(x) || !std::isfinite(y)) continue;
+    trail.push_back({t, x, y});
+    while (trail.size() > 1 && trail.front().t < t - trail_) trail.pop_front();
+    while (trail.size() > kTrailPoints + 1) trail.pop_front();
+  }
+}
+
+void PhasePanel::finish_recording() {
+  if (x_lo_ > x_hi_) x_lo_ = -1, x_hi_ = 1, y_lo_ = -1, y_hi_ = 1;
+  if (x_hi_ - x_lo_ < 1e-12 * std::max(1.0, std::abs(x_lo_))) x_lo_ -= 1e-3, x_hi_ += 1e-3;
+  const double pad = 0.05 * (x_hi_ - x_lo_);
+  panel_.set_x_range(x_lo_ - pad, x_hi_ + pad);
+  panel_.set_y_range(y_lo_, y_hi_);
+}
+
+void PhasePanel::draw_static(render::Canvas& canvas, bool) const {
+  panel_.draw_axes(canvas, y_label_, x_label_);
+  std::vector<render::PlotPanel::LegendItem> legend;
+  for (const auto& c : curves_)
+    if (!c.label.empty()) legend.push_back({c.label, c.color});
+  if (legend.size() > 1) panel_.draw_legend(canvas, legend);
+}
+
+void PhasePanel::draw(render::Canvas& canvas, double t, std::span<const double> row, bool) const {
+  const render::PixelRect& area = panel_.area();
+  cairo_t* cr = canvas.cr();
+  cairo_save(cr);
+  cairo_rectangle(cr, area.x, area.y, area.w, area.h);
+  cairo_clip(cr);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_set_line_width(cr, 2.4 * canvas.scale());
+  for (size_t i = 0; i < curves_.size(); ++i) {
+    const render::Color& c = curves_[i].color;
+    const double x = curves_[i].x(row), y = curves_[i].y(row);
+    // The trail up to the frame's time (the solver may have stepped past it),
+    // ending at the current point; older pieces are fainter.
+    std::vector<TrailPoint> points;
+    for (const auto& p : trails_[i])
+      if (p.t < t && p.t >= t - trail_) points.push_back(p);
+    if (std::isfinite(x) && std::isfinite(y)) points.push_back({t, x, y});
+    for (size_t k = 1; k < points.size(); ++k) {
+      const double age = (t - points[k].t) / trail_;
+      const render::Point a = panel_.to_pixel(points[k - 1].x, points[k - 1].y), b = panel_.to_pixel(points[k].x, points[k].y);
+      cairo_move_to(cr, a.x(), a.y());
+      cairo_line_to(cr, b.x(), b.y());
+      cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a * std::clamp(1 - age, 0.05, 1.0));
+      canvas.stroke();
+    }
+    if (std::isfinite(x) && std::isfinite(y)) {
+      const render::Point p = panel_.to_pixel(x, y);
+      cairo_new_path(cr);
+      cairo_arc(cr, p.x(), p.y(), 5.5 * canvas.scale(), 0, 2 * M_PI);
+      cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
+      canvas.fill();
+    }
+  }
+  cairo_restore(cr);
+}
+
+}  // namespace vibra::scenes

@@ -1,0 +1,37 @@
+#pragma once
+#include <span>
+
+#include "render/draw/canvas.hpp"
+#include "scenes/static_layer.hpp"
+
+namespace vibra::scenes {
+
+/// One panel beside a diagram (layout fbd+plot), whatever it plots: curves
+/// against time (SeriesPanel) or the phase plane (PhasePanel). SystemScene
+/// feeds every panel the same solution rows (t first, then the model's
+/// columns) in the order a Scene gets them.
+class ScenePanel {
+ public:
+  virtual ~ScenePanel() = default;
+  /// Pre-pass over every solver row of the run: fixed ranges (and, for a
+  /// whole-run plot, its curves).
+  virtual void record(std::span<const double> row) = 0;
+  /// Live, for every solver step up to the frame being drawn.
+  virtual void observe(std::span<const double> row) = 0;
+  /// Simulated time per pixel column of its curves; 0 when not against time.
+  virtual double time_per_column() const { return 0; }
+  /// After the pre-pass: fixes the ranges.
+  virtual void finish_recording() = 0;
+  /// Whether the horizontal axis is time (shared by the stacked time panels:
+  /// only the lowest labels it).
+  virtual bool against_time() const { return true; }
+  /// What never changes per frame, drawn once under every frame.
+  virtual void draw_static(render::Canvas&, bool time_labels) const = 0;
+  /// Extends what the layer under the frames keeps up to time t (from t = 0
+  /// when the layer is new); nothing for a panel without such a layer.
+  virtual void draw_progress(LayerGrowth& growth, double t) { (void)growth, (void)t; }
+  /// The dynamic part at time t; `row` is the solution at t.
+  virtual void draw(render::Canvas&, double t, std::span<const double> row, bool time_labels) const = 0;
+};
+
+}  // namespace vibra::scenes
