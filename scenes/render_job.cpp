@@ -11,23 +11,23 @@
 
 #include "core/comparison_trajectory.hpp"
 #include "core/error.hpp"
-#include "core/quoted_value.hpp"
 #include "core/models/model.hpp"
+#include "core/quoted_value.hpp"
 #include "render/draw/canvas.hpp"
-#include "render/page/html_page.hpp"
-#include "render/output/output_path.hpp"
+#include "render/draw/text.hpp"
 #include "render/encode/png_sequence.hpp"
+#include "render/encode/video_concat.hpp"
 #include "render/output/output_error.hpp"
+#include "render/output/output_path.hpp"
 #include "render/output/progress.hpp"
 #include "render/output/standard_output.hpp"
 #include "render/output/stop_signal.hpp"
 #include "render/output/temporary_file.hpp"
-#include "render/draw/text.hpp"
-#include "render/encode/video_concat.hpp"
-#include "scenes/frame_clock.hpp"
-#include "scenes/panels/history_feed.hpp"
+#include "render/page/html_page.hpp"
 #include "scenes/diagrams/comparison_labels.hpp"
+#include "scenes/frame_clock.hpp"
 #include "scenes/panels/comparison_page_plots.hpp"
+#include "scenes/panels/history_feed.hpp"
 #include "scenes/panels/page_plot_collector.hpp"
 #include "scenes/run_caption.hpp"
 #include "scenes/run_csv_file.hpp"
@@ -40,22 +40,6 @@ std::string extension_of(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(c));
   return ext;
-}
-
-/// Pango markup without its tags, for file metadata.
-std::string plain_text(const std::string& markup) {
-  std::string out;
-  bool in_tag = false;
-  for (char c : markup) {
-    if (c == '<') in_tag = true;
-    else if (c == '>') in_tag = false;
-    else if (!in_tag) out += c;
-  }
-  // The entities run_caption escapes, back to their characters.
-  for (const auto& [entity, c] : {std::pair{"&lt;", '<'}, {"&gt;", '>'}, {"&amp;", '&'}})
-    for (size_t at = 0; (at = out.find(entity, at)) != std::string::npos; ++at)
-      out.replace(at, std::string_view(entity).size(), 1, c);
-  return out;
 }
 
 /// A hash (FNV-1a) of everything that shapes a render's frames and their
@@ -405,7 +389,7 @@ void run_render(const RenderRequest& r) {
   auto row_at = [&](double t) { return history.row_at(t); };
   if (still) return write_still(r, target, *scene, row_at(*r.at));
 
-  std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name}, {"comment", plain_text(caption)}};
+  std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name}, {"comment", render::markup_plain_text(caption)}};
   if (r.segment) metadata["description"] = segment.tag();  // what vibra concat checks
   if (stream) render::send_standard_output_to(target);  // a pipe or device: written as -o - is
   std::vector<std::unique_ptr<render::FrameSink>> sinks;

@@ -15,10 +15,10 @@
 #include "core/comparison.hpp"
 #include "core/error.hpp"
 #include "core/input_files.hpp"
+#include "core/models/model.hpp"
 #include "core/quoted_value.hpp"
 #include "core/value_ranges.hpp"
 #include "core/word_list.hpp"
-#include "core/models/model.hpp"
 #include "scenes/builtin_scenes.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 

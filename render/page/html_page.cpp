@@ -4,8 +4,8 @@
 #include <map>
 
 #include "render/output/output_error.hpp"
-#include "render/page/page_assets.hpp"
 #include "render/output/temporary_file.hpp"
+#include "render/page/page_assets.hpp"
 #include "render/page/web_text.hpp"
 
 namespace vibra::render {
