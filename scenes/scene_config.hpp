@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/parameters.hpp"
+#include "scenes/pacing.hpp"
 #include "scenes/scene_style.hpp"
 
 namespace vibra::scenes {
@@ -36,6 +37,8 @@ struct SceneConfig {
   SceneColors colors;
   /// "KEY=V1,V2,...": one run per value, drawn together; "" = one run.
   std::string compare;
+  /// Slow motion and pauses (keys slow and pause, --slow, --pause).
+  Pacing pacing;
 };
 
 /// The keys a scene has besides its model's (shown by `vibra render --help`).

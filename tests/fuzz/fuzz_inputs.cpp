@@ -7,6 +7,8 @@
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "core/models/model.hpp"
+#include "scenes/frame_clock.hpp"
+#include "scenes/lecture/storyboard.hpp"
 #include "scenes/scene_config.hpp"
 
 namespace vibra::fuzz {
@@ -57,6 +59,22 @@ void scene_file(std::string_view text) {
     read_every_key(parameters);
     build_and_step(model, parameters);
     (void)scenes::window_width(config, 1.0);
+  });
+}
+
+void storyboard(std::string_view text) {
+  expecting_user_errors([&] {
+    const scenes::Storyboard board = scenes::parse_storyboard(std::string(text), "fuzz.toml");
+    for (const scenes::Shot& shot : board.shots) {
+      if (shot.is_card) continue;
+      expecting_user_errors([&] {
+        const Parameters parameters = scenes::model_parameters_of(shot.scene);
+        read_every_key(parameters);
+        build_and_step(find_model(shot.scene.model), parameters);
+        // The pacing against a short run, as the lecture plans it.
+        if (!shot.scene.pacing.empty()) (void)scenes::FrameClock::paced(100, shot.scene.fps, 1, shot.scene.pacing);
+      });
+    }
   });
 }
 
