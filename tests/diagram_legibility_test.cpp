@@ -13,6 +13,7 @@
 #include "render/plot/plot_panel.hpp"
 #include "scenes/diagrams/force_key.hpp"
 #include "scenes/scene_config.hpp"
+#include "scene_run_support.hpp"
 #include "scenes/scene_factory.hpp"
 
 using vibra::render::Canvas;
@@ -49,18 +50,12 @@ DrawingRecord frame_at(const std::string& scene_name, const std::vector<vibra::s
                        double moment) {
   vibra::scenes::SceneConfig config = vibra::scenes::load_scene(scene_name);
   for (const auto& s : settings) vibra::scenes::apply_setting(config, s);
-  auto pre_pass = vibra::scenes::build_scene_runs(config);
-  auto scene = vibra::scenes::make_scene_for(config, *pre_pass, "a legibility test");
-  std::vector<double> row(pre_pass->width());
   long long steps = 0;
-  do {
-    pre_pass->row(row);
-    scene->record(row);
-    ++steps;
-  } while (pre_pass->advance());
+  auto scene = vibra::test::scene_after_pre_pass(config, steps);
   const long long wanted = std::llround(moment * (steps - 1));
   Canvas canvas = Canvas::image(config.width, config.height);
   auto runs = vibra::scenes::build_scene_runs(config);
+  std::vector<double> row(runs->width());
   for (long long step = 0;; ++step) {
     runs->row(row);
     scene->observe(row);

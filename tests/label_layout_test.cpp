@@ -12,6 +12,7 @@
 #include "render/labels/drawing_record.hpp"
 #include "render/labels/outline.hpp"
 #include "scenes/scene_config.hpp"
+#include "scene_run_support.hpp"
 #include "scenes/scene_factory.hpp"
 
 using vibra::render::Canvas;
@@ -62,20 +63,14 @@ Verdict check_layout(const Setup& setup) {
   vibra::scenes::SceneConfig config = vibra::scenes::load_scene(setup.scene);
   for (const auto& [key, value] : setup.settings) vibra::scenes::apply_setting(config, {key, value, "test"});
   config.width = setup.width, config.height = setup.height;
-  auto pre_pass = vibra::scenes::build_scene_runs(config);
-  auto scene = vibra::scenes::make_scene_for(config, *pre_pass, "a layout test");
-  std::vector<double> row(pre_pass->width());
   long long steps = 0;
-  do {
-    pre_pass->row(row);
-    scene->record(row);
-    ++steps;
-  } while (pre_pass->advance());
+  auto scene = vibra::test::scene_after_pre_pass(config, steps);
 
   std::vector<long long> moments;
   for (int k = 0; k < 24; ++k) moments.push_back(k * (steps - 1) / 23);
   Canvas canvas = Canvas::image(setup.width, setup.height);
   auto runs = vibra::scenes::build_scene_runs(config);
+  std::vector<double> row(runs->width());
   Verdict verdict;
   long long step = 0;
   size_t next = 0;
