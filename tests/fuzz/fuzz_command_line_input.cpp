@@ -15,6 +15,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "cli/command_line.hpp"
@@ -27,15 +28,39 @@ namespace vibra::fuzz {
 namespace {
 
 constexpr auto kBudget = std::chrono::milliseconds(1500);
+// How long a run may go on after the stop flag is raised (Ctrl-C promises
+// an exit within a second); below libFuzzer's -timeout of 10 s, so the
+// finding says which promise broke.
+constexpr auto kStopGrace = std::chrono::seconds(6);
 constexpr std::size_t kMaxArguments = 24, kMaxArgumentLength = 512;
 
-/// Raises the stop flag (SIGINT) unless the run ends within kBudget.
+/// Standard error as the process started: copied before libFuzzer's
+/// -close_fd_mask or InMemory point descriptor 2 elsewhere, so a finding's
+/// explanation is never written into memory that is thrown away.
+const int real_stderr = ::dup(2);
+
+void report(const std::string& text) {
+  const std::string line = "vibra fuzz: " + text + "\n";
+  for (std::size_t done = 0; done < line.size();) {
+    const ssize_t n = ::write(real_stderr, line.data() + done, line.size() - done);
+    if (n <= 0) return;
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+/// Raises the stop flag (SIGINT) unless the run ends within kBudget, and
+/// aborts, naming the command line, if it is still running kStopGrace later.
 class Watchdog {
  public:
-  Watchdog()
-      : thread_([this] {
+  explicit Watchdog(std::string command_line)
+      : command_line_(std::move(command_line)), thread_([this] {
           std::unique_lock lock(mutex_);
-          if (!done_cv_.wait_for(lock, kBudget, [this] { return done_; })) record_stop_signal(SIGINT);
+          if (done_cv_.wait_for(lock, kBudget, [this] { return done_; })) return;
+          record_stop_signal(SIGINT);
+          if (done_cv_.wait_for(lock, kStopGrace, [this] { return done_; })) return;
+          report("still running " + std::to_string(kStopGrace.count()) + " s after the stop flag (Ctrl-C): " +
+                 command_line_);
+          std::abort();
         }) {}
   ~Watchdog() {
     {
@@ -48,6 +73,7 @@ class Watchdog {
   }
 
  private:
+  std::string command_line_;
   std::mutex mutex_;
   std::condition_variable done_cv_;
   bool done_ = false;
@@ -165,10 +191,12 @@ void command_line(std::string_view text) {
     ScratchFolder folder;
     InMemory out(1), err(2);
     forget_input_files();
-  quiet_long_work(true);
+    quiet_long_work(true);
     cli::remember_command_line(static_cast<int>(argv.size() - 1), argv.data());
     {
-      Watchdog watchdog;
+      std::string shown = "vibra";
+      for (const auto& a : args) shown += " '" + a + "'";
+      Watchdog watchdog(shown);
       code = cli::run_command_line(static_cast<int>(argv.size() - 1), argv.data());
     }
     messages = err.text();
@@ -177,7 +205,7 @@ void command_line(std::string_view text) {
   }
   // What every run must keep: a known exit code, and an error is one line.
   if (code != 0 && code != 2 && code != 128 + SIGINT) {
-    std::fprintf(stderr, "exit code %d: %s\n", code, messages.c_str());
+    report("exit code " + std::to_string(code) + ": " + messages);
     std::abort();
   }
   if (code == 2) {
@@ -185,7 +213,7 @@ void command_line(std::string_view text) {
     const bool one_line = last != std::string::npos && messages.find('\n', last) == messages.size() - 1 &&
                           messages.size() - last <= 320;
     if (!one_line) {
-      std::fprintf(stderr, "not one error line: %s\n", messages.c_str());
+      report("not one error line: " + messages);
       std::abort();
     }
   }
