@@ -11,9 +11,10 @@ namespace vibra::scenes {
 /// A user's text made safe inside Pango markup (formulas may hold < or &).
 std::string markup_escaped(const std::string& text);
 
-/// One line of Pango markup describing a run: model, scheme, dt and the
-/// settings the user gave (time keys aside, as dt stands for them), e.g.
-/// "pendulum · rk4 · Δt = 0.1047 · Theta=40".
+/// One line of Pango markup describing a run: the settings given (time
+/// keys aside, as dt stands for them) with their units, dt and the scheme,
+/// e.g. "m = 1 kg · k = 4 N/m · Δt = 0.05 s · rk4" ("Θ = 40° · α = 0.4 ·
+/// Δt = 0.1047 · rk4" for the scaled pendulum, whose time has no unit).
 std::string run_caption(const std::string& model, const Parameters&, const TimeMesh&);
 
 /// The same run as (name, value) rows for a page's table, each key once:

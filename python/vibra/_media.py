@@ -80,8 +80,9 @@ class Image(_Output):
 
 
 def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=None, speed=None,
-           window=None, window_mode=None, compare=None, frame_per_step=False, frames_player=False,
-           codec="", quality="medium", crf=-1, preset="", threads=0, transparent=False, quiet=True, **keys):
+           window=None, window_mode=None, compare=None, title=None, equation=False, notes=None,
+           frame_per_step=False, frames_player=False, codec="", quality="medium", crf=-1, preset="", threads=0,
+           transparent=False, quiet=True, **keys):
     """Renders a scene as `vibra render` does: a video (out="name.mp4", .webm,
     .mkv, .ogv or .gif; default SCENE.mp4), or with at=T one still (out=
     "name.png", .svg or .pdf; default SCENE.png). PNG frame patterns
@@ -92,6 +93,10 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
     "rk4"]} (or "scheme=forward-euler,rk4") draws one run per value together, as
     --compare does. transparent=True draws no background (PNG with alpha, .webm
     VP9 with alpha, .mov ProRes 4444, SVG/PDF without the background rectangle).
+    title="The damped pendulum" puts a title across the top, equation=True the
+    model's equation of motion under it (and, comparing schemes, each scheme's
+    update formula in the legend); notes=["2-4: drag takes energy out @theta"]
+    adds callouts, as --title, --equation and --note do.
     Returns a Video or an Image.
     """
     settings = []
@@ -99,6 +104,14 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
                        ("window", window), ("window_mode", window_mode), ("compare", comparison_text(compare))):
         if value is not None:
             settings.append((key, size_text(value) if key == "size" else value_text(key, value)))
+    if title is not None:
+        settings.append(("title", str(title)))
+    if equation:
+        settings.append(("equation", "true"))
+    if isinstance(notes, str):
+        notes = [notes]
+    for note in notes or []:
+        settings.append(("notes", str(note)))
     settings += [tuple(a.split("=", 1)) for a in assignments(keys)]
     if out is None:
         out = Path(scene).stem + (".png" if at is not None else ".mp4")
