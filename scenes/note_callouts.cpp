@@ -8,6 +8,7 @@
 #include "render/labels/label_placer.hpp"
 #include "render/typeset/formula_layout.hpp"
 #include "render/typeset/formula_parser.hpp"
+#include "scenes/run_caption.hpp"
 
 namespace vibra::scenes {
 
@@ -30,13 +31,7 @@ std::string latin(const std::string& text) {
 std::vector<std::string> panel_names(size_t index, const std::string& given, const std::string& label_markup) {
   std::vector<std::string> names = {std::to_string(index + 1)};
   if (!given.empty()) names.push_back(given);
-  std::string plain;
-  bool tag = false;
-  for (char c : label_markup) {
-    if (c == '<') tag = true;
-    else if (c == '>') tag = false;
-    else if (!tag) plain += c;
-  }
+  const std::string plain = plain_text(label_markup);
   const size_t end = plain.find_first_of(" (/");
   std::string first = latin(plain.substr(0, end));
   if (!first.empty()) names.push_back(first);
@@ -137,14 +132,14 @@ void NoteCallouts::draw_panel_notes(render::Canvas& canvas, double t,
     std::vector<render::Point> pixels;
     for (const render::Point& tv : course)
       if (tv.x() >= plot->x0() && tv.x() <= plot->x1()) pixels.push_back(clamped(plot->to_pixel(tv.x(), tv.y())));
-    for (size_t i = 1; i < pixels.size(); ++i) {
-      cairo_new_path(canvas.cr());
-      cairo_move_to(canvas.cr(), pixels[i - 1].x(), pixels[i - 1].y());
-      cairo_line_to(canvas.cr(), pixels[i].x(), pixels[i].y());
-      cairo_set_line_width(canvas.cr(), 3 * canvas.scale());
-      curve.add_stroke(canvas.cr(), render::OutlineKind::drawing);
-    }
-    cairo_new_path(canvas.cr());
+    cairo_t* cr = canvas.cr();
+    cairo_save(cr);  // the outline is made with the canvas's context, which draws nothing here
+    cairo_set_line_width(cr, 3 * canvas.scale());
+    cairo_new_path(cr);
+    for (const render::Point& p : pixels) cairo_line_to(cr, p.x(), p.y());
+    if (pixels.size() > 1) curve.add_stroke(cr, render::OutlineKind::drawing);
+    cairo_new_path(cr);
+    cairo_restore(cr);
     render::LabelRequest r = request(c, clamped(plot->to_pixel(c.note.from, c.value)));
     // Up and to the right of the point, where the curve has not been yet.
     r.direction = render::Point(1, -1);

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/expression.hpp"
+#include "core/comparison.hpp"
 #include "core/models/model.hpp"
 #include "render/draw/caption.hpp"
 
@@ -18,6 +19,20 @@ std::string markup_escaped(const std::string& text) {
     else if (c == '>') out += "&gt;";
     else out += c;
   }
+  return out;
+}
+
+std::string plain_text(const std::string& markup) {
+  std::string out;
+  bool in_tag = false;
+  for (char c : markup) {
+    if (c == '<') in_tag = true;
+    else if (c == '>') in_tag = false;
+    else if (!in_tag) out += c;
+  }
+  for (const auto& [entity, c] : {std::pair{"&lt;", '<'}, {"&gt;", '>'}, {"&amp;", '&'}})
+    for (size_t at = 0; (at = out.find(entity, at)) != std::string::npos; ++at)
+      out.replace(at, std::string_view(entity).size(), 1, c);
   return out;
 }
 
@@ -71,20 +86,29 @@ std::string fact(const KeySpec& spec, const std::string& value) {
 }
 }  // namespace
 
-std::string run_caption(const std::string& model, const Parameters& p, const TimeMesh& mesh) {
-  std::string caption;
+std::string setting_facts(const Parameters& p, const std::string& except) {
+  std::string facts;
   for (const auto& a : p.given_assignments()) {
     const std::string key = a.substr(0, a.find('='));
-    if (key == "scheme" || key == "dt" || key == "steps_per_period" || key == "T" || key == "periods") continue;
+    if (key == except || is_time_key(key)) continue;
     for (const KeySpec& spec : p.specs())
-      if (spec.name == key) caption += (caption.empty() ? "" : render::kCaptionSeparator) + fact(spec, a.substr(a.find('=') + 1));
+      if (spec.name == key) facts += (facts.empty() ? "" : render::kCaptionSeparator) + fact(spec, a.substr(a.find('=') + 1));
   }
+  return facts;
+}
+
+std::string dt_fact(const std::string& model, double dt) {
   std::string time_unit;
   for (const auto& m : all_models())
     if (m.name == model && !m.time_unit.empty()) time_unit = " " + m.time_unit;
-  char dt[64];
-  std::snprintf(dt, sizeof dt, "Δ<i>t</i> = %.4g%s", mesh.dt, time_unit.c_str());
-  caption += (caption.empty() ? "" : render::kCaptionSeparator) + std::string(dt);
+  char text[64];
+  std::snprintf(text, sizeof text, "Δ<i>t</i> = %.4g%s", dt, time_unit.c_str());
+  return text;
+}
+
+std::string run_caption(const std::string& model, const Parameters& p, const TimeMesh& mesh) {
+  std::string caption = setting_facts(p);
+  caption += (caption.empty() ? "" : render::kCaptionSeparator) + dt_fact(model, mesh.dt);
   return caption + render::kCaptionSeparator + std::string(scheme_info(mesh.scheme).name);
 }
 

@@ -2,6 +2,7 @@
 // geometry is known in advance, the ink inside the reported boxes, and one
 // line naming the problem and the fix for bad input.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -123,7 +124,8 @@ TEST_CASE("a fraction's bar spans the wider part and both parts sit centred abov
   for (const char* source : {R"(\frac{a + b + c}{2})", R"(\frac{1}{x + y + z})", R"(\frac{\Delta t}{2})"}) {
     INFO(source);
     Point at;
-    const MathBox* fraction = find(set(source), Role::fraction, {0, 0}, &at);
+    const MathBox tree1 = set(source);
+    const MathBox* fraction = find(tree1, Role::fraction, {0, 0}, &at);
     REQUIRE(fraction);
     const MathBox& num = child_of(*fraction, Role::numerator);
     const MathBox& den = child_of(*fraction, Role::denominator);
@@ -150,7 +152,8 @@ TEST_CASE("a fraction's bar spans the wider part and both parts sit centred abov
 TEST_CASE("superscripts are raised above the baseline, subscripts lowered, and both keep apart", "[typeset]") {
   const double em = 30;
   Point at;
-  const MathBox* up = find(set("u^2"), Role::scripts, {0, 0}, &at);
+  const MathBox tree2 = set("u^2");
+  const MathBox* up = find(tree2, Role::scripts, {0, 0}, &at);
   REQUIRE(up);
   const MathBox& sup = child_of(*up, Role::superscript);
   CHECK(-sup.at.y() >= 0.35 * em);                           // its baseline well above the base's
@@ -158,12 +161,14 @@ TEST_CASE("superscripts are raised above the baseline, subscripts lowered, and b
   CHECK(glyph_leaves(sup).front()->size < em);                 // smaller than the base
   CHECK(sup.at.x() >= child_of(*up, Role::base).width - 1e-9);  // to the right of the base
 
-  const MathBox* down = find(set("u_n"), Role::scripts, {0, 0}, &at);
+  const MathBox tree3 = set("u_n");
+  const MathBox* down = find(tree3, Role::scripts, {0, 0}, &at);
   REQUIRE(down);
   const MathBox& sub = child_of(*down, Role::subscript);
   CHECK(sub.at.y() >= 0.1 * em);  // its baseline below the base's
 
-  const MathBox* both = find(set("u^{n+1}_{i}"), Role::scripts, {0, 0}, &at);
+  const MathBox tree4 = set("u^{n+1}_{i}");
+  const MathBox* both = find(tree4, Role::scripts, {0, 0}, &at);
   REQUIRE(both);
   const MathBox& s = child_of(*both, Role::superscript);
   const MathBox& b = child_of(*both, Role::subscript);
@@ -176,7 +181,8 @@ TEST_CASE("\\left and \\right delimiters are at least as tall as their content",
                              R"(\left[ \sqrt{x^2 + y^2} \right])", R"(\left( x \right))"}) {
     INFO(source);
     Point at;
-    const MathBox* d = find(set(source), Role::delimited, {0, 0}, &at);
+    const MathBox tree5 = set(source);
+    const MathBox* d = find(tree5, Role::delimited, {0, 0}, &at);
     REQUIRE(d);
     const MathBox& content = child_of(*d, Role::base);
     int delimiters = 0;
@@ -210,7 +216,7 @@ TEST_CASE("multi-line formulas stack their lines, the first baseline at the orig
   REQUIRE(box.children.size() == 2);
   CHECK(box.children[0].at.y() == 0);
   CHECK(box.children[1].at.y() - box.children[1].ascent > box.children[0].descent);  // no overlap
-  CHECK(box.descent > box.children[1].at.y());
+  CHECK(box.descent >= box.children[1].at.y());
 }
 
 TEST_CASE("nothing is clipped: the ink drawn lies inside the box reported, which is not much larger", "[typeset]") {
@@ -238,13 +244,13 @@ TEST_CASE("nothing is clipped: the ink drawn lies inside the box reported, which
         CHECK(ink.y0 >= reported.y - 1e-9);
         CHECK(ink.x1 <= reported.x + reported.w + 1e-9);
         CHECK(ink.y1 <= reported.y + reported.h + 1e-9);
-        // At most two pixels of slack each side (the pixel added for anti-aliasing, and rounding).
-        CHECK(ink.x0 - reported.x <= 2.5);
-        CHECK(ink.y0 - reported.y <= 2.5);
-        CHECK(reported.x + reported.w - ink.x1 <= 2.5);
-        CHECK(reported.y + reported.h - ink.y1 <= 2.5);
-        // The layout's own ink box agrees with the pixels.
-        CHECK(box.ink.y0 + 20 + box.ascent <= ink.y0 + 1.5);
+        // At most three pixels of slack each side (the pixel added for anti-aliasing, and rounding).
+        CHECK(ink.x0 - reported.x <= 3);
+        CHECK(ink.y0 - reported.y <= 3);
+        CHECK(reported.x + reported.w - ink.x1 <= 3);
+        CHECK(reported.y + reported.h - ink.y1 <= 3);
+        // The layout's own ink box agrees with the pixels (without a halo, which reaches beyond it).
+        if (!halo) CHECK(std::abs(box.ink.y0 + 20 + box.ascent - ink.y0) <= 1.5);
       }
     }
   }

@@ -35,6 +35,15 @@ double atom_space(Atom left, Atom right, bool script) {
 
 bool is_italic_glyphs(const MathBox& b) { return b.role == Role::glyphs && b.font == MathFont::italic; }
 
+/// Appends `item` to a row or line with its origin at x on the baseline.
+void append_at(MathBox& row, MathBox item, double x) {
+  item.at = Point(x, 0);
+  row.ascent = std::max(row.ascent, item.ascent);
+  row.descent = std::max(row.descent, item.descent);
+  row.ink.add(item.ink.moved(item.at));
+  row.children.push_back(std::move(item));
+}
+
 class Typesetter {
  public:
   Typesetter(cairo_t* cr, double em, const char* family, bool bold_text = false)
@@ -154,12 +163,9 @@ class Typesetter {
         // An italic letter leans into what follows unless that is italic too.
         if (is_italic_glyphs(*last) && !is_italic_glyphs(item)) x += last->italic_correction;
       }
-      item.at = Point(x, 0);
-      x += item.width;
-      box.ascent = std::max(box.ascent, item.ascent);
-      box.descent = std::max(box.descent, item.descent);
-      box.ink.add(item.ink.moved(item.at));
-      box.children.push_back(std::move(item));
+      const double width = item.width;
+      append_at(box, std::move(item), x);
+      x += width;
       if (box.children.back().role != Role::space) last = &box.children.back();
     }
     box.width = std::max(0.0, x);
@@ -515,12 +521,9 @@ MathBox layout_rich_text(Canvas& canvas, const std::vector<RichRun>& runs, const
         for (++i; i < line.size() && !line[i]->word.empty(); ++i) phrase += (line[i]->space_before ? " " : "") + line[i]->word;
         item = setter.glyphs(phrase, MathFont::text, em, Atom::ord);
       }
-      item.at = Point(at, 0);
-      at += item.width;
-      box.ascent = std::max(box.ascent, item.ascent);
-      box.descent = std::max(box.descent, item.descent);
-      box.ink.add(item.ink.moved(item.at));
-      box.children.push_back(std::move(item));
+      const double width = item.width;
+      append_at(box, std::move(item), at);
+      at += width;
     }
     box.width = at;
     boxes.push_back(std::move(box));
