@@ -1,13 +1,16 @@
 #pragma once
 #include <cmath>
+#include <optional>
 
 #include "core/error.hpp"
+#include "scenes/time_map.hpp"
 
 namespace vibra::scenes {
 
 /// When each video frame happens in simulated time. Frame k shows
 /// t_k = k * speed / fps for k = 0, 1, ... while t_k <= T; with one frame per
-/// solver step, t_k = k * dt.
+/// solver step, t_k = k * dt. With pacing (slow motion, pauses), frame k
+/// shows the time map's simulated time at k / fps seconds of video.
 class FrameClock {
  public:
   /// More frames than any sensible video (about 39 days at 30 fps).
@@ -19,10 +22,24 @@ class FrameClock {
     return FrameClock(speed / fps, std::floor(T / (speed / fps) * (1 + 1e-12)) + 1);
   }
   static FrameClock per_step(double dt, long long steps) { return FrameClock(dt, double(steps) + 1); }
+  /// by_speed with slow motion and pauses; without them exactly by_speed.
+  static FrameClock paced(double T, double fps, double speed, const Pacing& pacing) {
+    if (pacing.empty()) return by_speed(T, fps, speed);
+    TimeMap map(T, speed, pacing);
+    FrameClock clock(speed / fps, std::floor(map.duration() * fps * (1 + 1e-12)) + 1);
+    clock.fps_ = fps;
+    clock.map_.emplace(std::move(map));
+    return clock;
+  }
 
   long long frames() const { return frames_; }
-  double time(long long k) const { return k * interval_; }
+  double time(long long k) const { return map_ ? map_->simulated(double(k) / fps_) : k * interval_; }
+  /// Simulated time per frame at the steady speed (outside slow motion).
   double interval() const { return interval_; }
+  /// Whether frame k shows the same time as frame k - 1 (a pause): the same picture.
+  bool repeats(long long k) const { return map_ && k > 0 && time(k) == time(k - 1); }
+  /// The pacing's time map; nullopt for a steady clock.
+  const std::optional<TimeMap>& time_map() const { return map_; }
 
  private:
   FrameClock(double interval, double frames) : interval_(interval), frames_(checked(frames)) {}
@@ -34,6 +51,8 @@ class FrameClock {
   }
   double interval_;
   long long frames_;
+  double fps_ = 0;
+  std::optional<TimeMap> map_;
 };
 
 }  // namespace vibra::scenes

@@ -11,23 +11,23 @@
 
 #include "core/comparison_trajectory.hpp"
 #include "core/error.hpp"
-#include "core/quoted_value.hpp"
 #include "core/models/model.hpp"
+#include "core/quoted_value.hpp"
 #include "render/draw/canvas.hpp"
-#include "render/page/html_page.hpp"
-#include "render/output/output_path.hpp"
+#include "render/draw/text.hpp"
 #include "render/encode/png_sequence.hpp"
+#include "render/encode/video_concat.hpp"
 #include "render/output/output_error.hpp"
+#include "render/output/output_path.hpp"
 #include "render/output/progress.hpp"
 #include "render/output/standard_output.hpp"
 #include "render/output/stop_signal.hpp"
 #include "render/output/temporary_file.hpp"
-#include "render/draw/text.hpp"
-#include "render/encode/video_concat.hpp"
-#include "scenes/frame_clock.hpp"
-#include "scenes/panels/history_feed.hpp"
+#include "render/page/html_page.hpp"
 #include "scenes/diagrams/comparison_labels.hpp"
+#include "scenes/frame_clock.hpp"
 #include "scenes/panels/comparison_page_plots.hpp"
+#include "scenes/panels/history_feed.hpp"
 #include "scenes/panels/page_plot_collector.hpp"
 #include "scenes/run_caption.hpp"
 #include "scenes/run_csv_file.hpp"
@@ -63,7 +63,7 @@ std::uint64_t render_fingerprint(const RenderRequest& r, const std::string& capt
     text += numbers;
   }
   text += '\n' + c.window + '\n' + r.video.codec + '\n' + r.video.quality + '\n' + std::to_string(r.video.crf) + '\n' +
-          r.video.preset + (r.video.transparent ? "\ntransparent" : "");
+          r.video.preset + (r.video.transparent ? "\ntransparent" : "") + '\n' + c.pacing.describe();
   std::uint64_t hash = 14695981039346656037ull;
   for (unsigned char byte : text) hash = (hash ^ byte) * 1099511628211ull;
   return hash;
@@ -78,40 +78,6 @@ struct Outputs {
   std::string frames_prefix;         ///< player pages: frame name prefix relative to the page
   int digits = 4;
 };
-
-/// A page's companions (videos or frames, and the CSV) go in a folder of
-/// their own beside it, PAGE_files/ (as browsers save a page), so the page
-/// never writes over a file the user did not name.
-fs::path companion_folder(const std::string& page) {
-  const fs::path p(page);
-  return p.parent_path() / (p.stem().string() + "_files");
-}
-
-/// Whether `name` is one that vibra writes in the companion folder of a page `stem`.html.
-bool is_companion_name(const std::string& name, const std::string& stem) {
-  if (name == stem + ".mp4" || name == stem + ".webm" || name == stem + ".csv") return true;
-  if (!name.starts_with("frame_") || !name.ends_with(".png") || name.size() <= 10) return false;
-  return std::all_of(name.begin() + 6, name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
-}
-
-/// A page's companion folder may be replaced when vibra wrote it for a page
-/// of that name (it holds only such companions), or with --force; it never
-/// holds a file the run reads.
-void check_companion_folder(const fs::path& folder, const std::string& stem, bool force) {
-  std::error_code ec;
-  const fs::file_status status = fs::symlink_status(folder, ec);
-  if (!fs::exists(status)) return;
-  bool ours = fs::is_directory(status);
-  render::refuse_input_as_output(folder);
-  for (const auto& entry : fs::directory_iterator(ours ? folder : fs::path(), ec)) {
-    render::refuse_input_as_output(entry.path());
-    ours = ours && is_companion_name(entry.path().filename().string(), stem) && entry.is_regular_file(ec) &&
-           !entry.is_symlink(ec);
-  }
-  if (!ours && !force)
-    throw render::OutputError("'" + folder.string() + "' exists and was not written by vibra for this page: move it "
-                              "away, or add --force to replace it");
-}
 
 /// A segment's file may be overwritten when vibra wrote it (it carries a
 /// segment tag: a restart, or another split of the same output), or with --force.
@@ -134,7 +100,11 @@ void check_frame_names(const std::string& target, const render::FrameSegment& se
 Outputs plan_outputs(const RenderRequest& r, const render::FrameSegment& segment, bool stream, const fs::path& staged) {
   if (stream) return {{"-"}, {}, "", 4};
   if (r.segment && render::is_video_path(r.output)) return {{segment.file_name(r.output)}, {}, "", 4};
-  if (staged.empty()) return {{r.output}, {}, "", 4};
+  if (staged.empty()) {
+    Outputs outputs{{r.output}, {}, "", 4};
+    outputs.targets.insert(outputs.targets.end(), r.also_outputs.begin(), r.also_outputs.end());
+    return outputs;
+  }
   const std::string stem = fs::path(r.output).stem().string();
   const std::string folder = companion_folder(r.output).filename().string() + "/";
   if (!r.frames_player)
@@ -195,6 +165,7 @@ render::PageFacts page_facts(const RenderRequest& r, long long frames, const Par
                                    format("%.3g", frames / r.scene.fps) + " s of video)");
   facts.emplace_back("speed", r.scene.frame_per_step ? "one frame per step"
                                                      : format("%.4g", speed) + " time units per second of video");
+  if (!r.scene.pacing.empty()) facts.emplace_back("pacing", r.scene.pacing.describe());
   facts.emplace_back("size", std::to_string(r.scene.width) + "x" + std::to_string(r.scene.height));
   if (r.scene.equation) facts.emplace_back("equation", model_equation(find_model(r.scene.model), p));
   for (const std::string& note : r.scene.notes) facts.emplace_back("note", note);
@@ -212,6 +183,11 @@ std::string page_html(const RenderRequest& r, const Outputs& outputs, const Fram
   media.frames = clock.frames();
   media.fps = r.scene.fps;
   media.frame_interval = clock.interval();
+  if (clock.time_map())
+    for (const TimePiece& piece : clock.time_map()->pieces())
+      media.time_map.push_back({piece.video, piece.simulated, piece.rate});
+  if (clock.time_map())  // the end: the run's last time, held
+    media.time_map.push_back({clock.time_map()->duration(), clock.time_map()->end(), 0});
   if (r.frames_player) {
     media.kind = render::PageMedia::Kind::frames;
     media.frames_prefix = outputs.frames_prefix;
@@ -266,7 +242,55 @@ void write_still(const RenderRequest& r, const render::OutputTarget& target, Sce
   file.commit();
   if (!r.quiet) std::fprintf(stderr, "vibra: wrote %s (t = %g)\n", one_line_message(target.shown(), 4096).c_str(), row[0]);
 }
+
+double steady_speed(const SceneConfig& scene, const TimeMesh& mesh) {
+  return scene.speed > 0 ? scene.speed : (mesh.period > 0 ? mesh.period / 2 : 1);
+}
 }  // namespace
+
+/// A page's companions (videos or frames, and the CSV) go in a folder of
+/// their own beside it, PAGE_files/ (as browsers save a page), so the page
+/// never writes over a file the user did not name.
+fs::path companion_folder(const std::string& page) {
+  const fs::path p(page);
+  return p.parent_path() / (p.stem().string() + "_files");
+}
+
+/// Whether `name` is one that vibra writes in the companion folder of a page `stem`.html.
+static bool is_companion_name(const std::string& name, const std::string& stem) {
+  if (name == stem + ".mp4" || name == stem + ".webm" || name == stem + ".csv" || name == stem + ".vtt") return true;
+  if (!name.starts_with("frame_") || !name.ends_with(".png") || name.size() <= 10) return false;
+  return std::all_of(name.begin() + 6, name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
+}
+
+/// A page's companion folder may be replaced when vibra wrote it for a page
+/// of that name (it holds only such companions), or with --force; it never
+/// holds a file the run reads.
+void check_companion_folder(const fs::path& folder, const std::string& stem, bool force) {
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(folder, ec);
+  if (!fs::exists(status)) return;
+  bool ours = fs::is_directory(status);
+  render::refuse_input_as_output(folder);
+  for (const auto& entry : fs::directory_iterator(ours ? folder : fs::path(), ec)) {
+    render::refuse_input_as_output(entry.path());
+    ours = ours && is_companion_name(entry.path().filename().string(), stem) && entry.is_regular_file(ec) &&
+           !entry.is_symlink(ec);
+  }
+  if (!ours && !force)
+    throw render::OutputError("'" + folder.string() + "' exists and was not written by vibra for this page: move it "
+                              "away, or add --force to replace it");
+}
+
+double video_rate_of(const SceneConfig& scene, const TimeMesh& mesh) {
+  return scene.frame_per_step ? mesh.dt * scene.fps : steady_speed(scene, mesh);
+}
+
+FrameClock frame_clock_of(const SceneConfig& scene, const TimeMesh& mesh) {
+  if (!scene.frame_per_step) return FrameClock::paced(mesh.T, scene.fps, steady_speed(scene, mesh), scene.pacing);
+  if (scene.pacing.empty()) return FrameClock::per_step(mesh.dt, mesh.steps);
+  return FrameClock::paced(double(mesh.steps) * mesh.dt, scene.fps, video_rate_of(scene, mesh), scene.pacing);
+}
 
 void run_render(const RenderRequest& r) {
   const std::string ext = extension_of(r.output);
@@ -325,9 +349,9 @@ void run_render(const RenderRequest& r) {
     throw UsageError("--at " + std::to_string(*r.at) + " is outside the run [0, " + std::to_string(mesh.T) +
                      "]: choose a time inside it, or a longer T");
 
-  const double speed = r.scene.speed > 0 ? r.scene.speed : (mesh.period > 0 ? mesh.period / 2 : 1);
-  const FrameClock clock =
-      r.scene.frame_per_step ? FrameClock::per_step(mesh.dt, mesh.steps) : FrameClock::by_speed(mesh.T, r.scene.fps, speed);
+  if (still) r.scene.pacing.check_inside(mesh.T);  // a still's pacing is checked, though it shows one time
+  const double speed = steady_speed(r.scene, mesh);
+  const FrameClock clock = frame_clock_of(r.scene, mesh);
   const auto* runs = dynamic_cast<const ComparisonTrajectory*>(pre_pass.get());
   const std::string caption =
       runs ? comparison_caption(r.scene.model, runs->comparison()) : run_caption(r.scene.model, parameters, mesh);
@@ -394,8 +418,9 @@ void run_render(const RenderRequest& r) {
   auto row_at = [&](double t) { return history.row_at(t); };
   if (still) return write_still(r, target, *scene, row_at(*r.at));
 
-  std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name}, {"comment", plain_text(caption)}};
+  std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name}, {"comment", render::markup_plain_text(caption)}};
   if (r.segment) metadata["description"] = segment.tag();  // what vibra concat checks
+  if (!r.description.empty()) metadata["description"] = r.description;
   if (stream) render::send_standard_output_to(target);  // a pipe or device: written as -o - is
   std::vector<std::unique_ptr<render::FrameSink>> sinks;
   for (const auto& output : outputs.targets)
@@ -414,9 +439,15 @@ void run_render(const RenderRequest& r) {
     if ((k & 0xff) == 0) render::throw_if_stop_requested();
     scene->skip(canvas, row_at(clock.time(k)));
   }
-  render::Progress progress("vibra render", segment.frames(), r.quiet);
+  render::Progress progress(r.progress_label, segment.frames(), r.quiet);
+  const render::Damage unchanged(r.scene.width, r.scene.height);
   for (long long k = segment.first(); k < segment.end(); ++k) {
     render::throw_if_stop_requested();
+    if (k > segment.first() && clock.repeats(k)) {  // a pause: the same picture again, no solver work, no drawing
+      sink->write(canvas.data(), canvas.stride(), &unchanged);
+      progress.update(k + 1 - segment.first());
+      continue;
+    }
     canvas.begin_frame();
     scene->draw(canvas, row_at(clock.time(k)));
     canvas.flush();
@@ -434,7 +465,7 @@ void run_render(const RenderRequest& r) {
     staged->replace(companions);  // the earlier companions go only now, with the page's
     page_file->commit();
   }
-  if (!r.quiet)
+  if (!r.quiet && r.report_written)
     std::fprintf(stderr, "vibra: wrote %s\n",  // one line, a newline in a file name escaped
                  one_line_message(page ? page_written(r, target, clock.frames()) : sink->description(), 4096).c_str());
 }

@@ -1,9 +1,13 @@
 #pragma once
+#include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "render/encode/frame_segment.hpp"
 #include "render/encode/frame_sink.hpp"
+#include "core/time_mesh.hpp"
+#include "scenes/frame_clock.hpp"
 #include "scenes/scene_config.hpp"
 
 namespace vibra::scenes {
@@ -29,6 +33,15 @@ struct RenderRequest {
   /// The command that asked for the render, shown on a page.
   std::string command_line;
   bool quiet = false;
+  /// What the progress bar calls the work ("vibra render", a lecture's shot name).
+  std::string progress_label = "vibra render";
+  /// More videos drawn from the same frames (a lecture's MP4 and WebM):
+  /// video outputs only, without a segment.
+  std::vector<std::string> also_outputs;
+  /// Replaces the video's "description" metadata (a lecture's shot tag).
+  std::string description;
+  /// Whether to end with "vibra: wrote ..." (a lecture reports its own output instead).
+  bool report_written = true;
 };
 
 /// Solves the scene's model, draws every frame and writes the output. Throws
@@ -36,5 +49,24 @@ struct RenderRequest {
 /// them nothing is left at the output paths, and earlier output there is as
 /// it was.
 void run_render(const RenderRequest&);
+
+/// The frame clock a render of `scene` uses for a run with this mesh: its
+/// speed (or one small-oscillation period in 2 s), fps, pacing, or one frame
+/// per step. Throws UsageError when the pacing reaches outside the run.
+FrameClock frame_clock_of(const SceneConfig& scene, const TimeMesh& mesh);
+
+/// A page's companions (videos or frames, the CSV, subtitles) go in a
+/// folder of their own beside it, PAGE_files/ (as browsers save a page), so
+/// the page never writes over a file the user did not name.
+std::filesystem::path companion_folder(const std::string& page);
+
+/// A page's companion folder may be replaced when vibra wrote it for a page
+/// of that name (it holds only such companions), or with `force`; it never
+/// holds a file the run reads. Throws OutputError otherwise.
+void check_companion_folder(const std::filesystem::path& folder, const std::string& stem, bool force);
+
+/// Simulated time per second of video outside slow motion: the scene's
+/// speed, one small-oscillation period in 2 s, or one step per frame.
+double video_rate_of(const SceneConfig& scene, const TimeMesh& mesh);
 
 }  // namespace vibra::scenes

@@ -2,6 +2,8 @@
 
 #include <toml++/toml.h>
 
+#include "scenes/scene_table.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -15,10 +17,10 @@
 #include "core/comparison.hpp"
 #include "core/error.hpp"
 #include "core/input_files.hpp"
+#include "core/models/model.hpp"
 #include "core/quoted_value.hpp"
 #include "core/value_ranges.hpp"
 #include "core/word_list.hpp"
-#include "core/models/model.hpp"
 #include "render/typeset/formula_parser.hpp"
 #include "scenes/builtin_scenes.hpp"
 #include "scenes/note.hpp"
@@ -76,14 +78,41 @@ std::string scalar_text(const toml::node& node) {
   return "";
 }
 
-void collect(const toml::table& table, const std::string& prefix, const std::string& file,
-             std::vector<Setting>& out) {
+bool pacing_key(const std::string& key) { return key == "slow" || key == "pause"; }
+
+/// One item of a slow or pause list as --slow / --pause take it: a string
+/// ("2-4:4", "3:1") or a table ({ from = 2, to = 4, factor = 4 }, { at = 3, seconds = 1 }).
+std::string pacing_text(const std::string& key, const toml::node& item, const std::string& origin) {
+  if (item.is_string()) return *item.value<std::string>();
+  const toml::table* fields = item.as_table();
+  const std::vector<std::string> names =
+      key == "slow" ? std::vector<std::string>{"from", "to", "factor"} : std::vector<std::string>{"at", "seconds"};
+  const std::string form = key == "slow" ? "\"2-4:4\" or { from = 2, to = 4, factor = 4 }" : "\"3:1\" or { at = 3, seconds = 1 }";
+  if (!fields || fields->size() != names.size())
+    throw UsageError(origin + ": each " + key + " is " + form);
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const toml::node* field = fields->get(names[i]);
+    if (!field || !(field->is_integer() || field->is_floating_point())) throw UsageError(origin + ": each " + key + " is " + form);
+    text += (i == 0 ? "" : key == "slow" && i == 1 ? "-" : ":") + scalar_text(*field);
+  }
+  return text;
+}
+
+void collect(const toml::table& table, const std::string& prefix, const std::string& file, const std::string& where,
+             const std::vector<std::string>& skip, std::vector<Setting>& out) {
   for (auto&& [key, node] : table) {
     const std::string name = prefix + std::string(key.str());
-    const std::string origin = file + ":" + std::to_string(node.source().begin.line);
+    if (std::find(skip.begin(), skip.end(), name) != skip.end()) continue;
+    const std::string origin =
+        file + ":" + std::to_string(node.source().begin.line) + (where.empty() ? "" : ": " + where + ", " + name);
     if (const toml::table* inner = node.as_table()) {
       if (!prefix.empty()) throw UsageError(origin + ": table '" + name + "' is nested too deeply (one level, e.g. [colors])");
-      collect(*inner, name + ".", file, out);
+      collect(*inner, name + ".", file, where, {}, out);
+      continue;
+    }
+    if (const toml::array* list = node.as_array(); list && pacing_key(name)) {
+      for (const toml::node& item : *list) out.push_back({name, pacing_text(name, item, origin), origin});
       continue;
     }
     if (const toml::array* list = node.as_array(); list && name == "notes") {
@@ -110,6 +139,13 @@ bool sets_same_thing(const std::string& a, const std::string& b) {
 }
 }  // namespace
 
+std::vector<Setting> table_settings(const toml::table& table, const std::string& file, const std::string& where,
+                                    const std::vector<std::string>& skip) {
+  std::vector<Setting> settings;
+  collect(table, "", file, where, skip, settings);
+  return settings;
+}
+
 const std::vector<KeySpec>& scene_keys() {
   static const std::vector<KeySpec> keys = {
       {"model", ValueKind::choice, "pendulum", "", "model (with a diagram: any layout; others: layout plot)", {}, {}},
@@ -125,6 +161,8 @@ const std::vector<KeySpec>& scene_keys() {
       {"window_mode", ValueKind::choice, "movement", "", "drawing, movement or jumps (the moving plot window)", {"drawing", "movement", "jumps"}, {}},
       {"panels", ValueKind::choice, "", "", "fbd+plot panels: columns, phase, energy, error, period", {}, {}},
       {"energy_bars", ValueKind::choice, "false", "", "kinetic, potential, dissipated energy beside the diagram", {"true", "false"}, {}},
+      {"slow", ValueKind::text, "", "", "T0-T1:FACTOR: simulated [T0, T1] FACTOR times slower (4: a quarter speed), repeatable", {}, {}},
+      {"pause", ValueKind::text, "", "", "T:SECONDS: hold simulated time T for SECONDS of video, repeatable", {}, {}},
       {"drag_magnification", ValueKind::number, "5", "", "drag arrow drawn this many times longer", {}, {}},
       {"title", ValueKind::text, "", "", "a title across the top (text; $math$ in the LaTeX subset)", {}, {}},
       {"equation", ValueKind::choice, "false", "", "the model's equation of motion under the title", {"true", "false"}, {}},
@@ -215,6 +253,12 @@ void apply_setting(SceneConfig& c, const Setting& s) {
     }
   } else if (k == "energy_bars") {
     c.energy_bars = parse_bool(s);
+  } else if (pacing_key(k)) {
+    try {
+      k == "slow" ? c.pacing.add_slow(s.value) : c.pacing.add_pause(s.value);
+    } catch (const UsageError& e) {
+      throw UsageError(s.origin + ": " + e.what());
+    }
   } else if (k == "drag_magnification") {
     c.drag_magnification = parse_number(s);
   } else if (k == "title") {
@@ -357,8 +401,7 @@ SceneConfig parse_scene(const std::string& text, const std::string& file) {
   }
   if (table.empty())
     throw UsageError(file + ": the scene file sets nothing: give at least model = \"pendulum\" (vibra render --help lists the keys)");
-  std::vector<Setting> settings;
-  collect(table, "", file, settings);
+  const std::vector<Setting> settings = table_settings(table, file);
   SceneConfig config;
   config.name = std::filesystem::path(file).stem().string();
   // The model comes first: the other keys are checked against it.

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/parameters.hpp"
+#include "scenes/pacing.hpp"
 #include "scenes/scene_style.hpp"
 
 namespace vibra::scenes {
@@ -44,6 +45,8 @@ struct SceneConfig {
   /// Callouts "T0-T1: TEXT" (TEXT may hold $math$; "@PANEL" points at a
   /// panel's curve), each added by a `notes` setting.
   std::vector<std::string> notes;
+  /// Slow motion and pauses (keys slow and pause, --slow, --pause).
+  Pacing pacing;
 };
 
 /// The keys a scene has besides its model's (shown by `vibra render --help`).

@@ -8,8 +8,8 @@
 #include "scenes/diagrams/comparison_diagram.hpp"
 #include "scenes/diagrams/comparison_labels.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
-#include "scenes/panels/plot_panels.hpp"
 #include "scenes/figures/plot_scene.hpp"
+#include "scenes/panels/plot_panels.hpp"
 #include "scenes/system_scene.hpp"
 
 namespace vibra::scenes {

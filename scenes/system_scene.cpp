@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "render/draw/caption.hpp"
-#include "render/labels/label_placer.hpp"
 #include "render/draw/text.hpp"
+#include "render/labels/label_placer.hpp"
 
 namespace vibra::scenes {
 
@@ -46,7 +46,9 @@ SystemScene::SystemScene(int width, int height, const TrajectoryInfo& info, Scen
   }
   // Room for arrow labels and the read-out at the top; the caption's line at
   // the bottom comes below the lowest arrow's label.
-  const double side = 48 * scale, top = 56 * scale, bottom = (style_.caption.empty() ? 52 : 80) * scale;
+  // A diagram with force arrows keeps a line for its force scale's key above the caption.
+  const double key_line = diagram_->force_key() ? 24 * scale : 0;
+  const double side = 48 * scale, top = 56 * scale, bottom = (style_.caption.empty() ? 52 : 80) * scale + key_line;
   // A legend too wide for a small frame overlaps the drawing rather than squeeze it away.
   const double view_width = std::max(diagram_area_.w - 2 * side - legend_.width(), 0.3 * diagram_area_.w);
   view_area_ = {diagram_area_.x + side, diagram_area_.y + top, view_width, diagram_area_.h - top - bottom};
@@ -126,10 +128,15 @@ void SystemScene::draw_static(render::Canvas& canvas) {
   heading_.draw(canvas, style_.colors.wire);
   diagram_->draw_static(canvas, *view_);
   if (!legend_.empty()) legend_.draw_static(canvas, legend_corner(canvas.scale()));
-  if (caption_)
-    render::draw_caption(
-        canvas, {diagram_area_.x + 16 * canvas.scale(), diagram_area_.y + diagram_area_.h - 12 * canvas.scale()},
-        *caption_);
+  const double scale = canvas.scale();
+  double bottom = diagram_area_.y + diagram_area_.h - 12 * scale;
+  if (caption_) {
+    render::draw_caption(canvas, {diagram_area_.x + 16 * scale, bottom}, *caption_);
+    bottom -= caption_->height() + 8 * scale;
+  }
+  if (const std::optional<ForceKey> key = diagram_->force_key())
+    draw_force_key(canvas, *key, view_->zoom(), {diagram_area_.x + 16 * scale, bottom},
+                   style_.colors.wire.with_alpha(0.75));
   canvas.record_into(nullptr);
   static_outline_ = std::move(record.outline);
 }

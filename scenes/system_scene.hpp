@@ -11,9 +11,9 @@
 #include "scenes/note_callouts.hpp"
 #include "scenes/panels/energy_bars.hpp"
 #include "scenes/panels/quantity_panels.hpp"
+#include "scenes/panels/scene_panel.hpp"
 #include "scenes/run_legend.hpp"
 #include "scenes/scene.hpp"
-#include "scenes/panels/scene_panel.hpp"
 #include "scenes/scene_style.hpp"
 #include "scenes/static_layer.hpp"
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <ctime>
 
-#include "core/analysis/orbit_error.hpp"
 #include "core/analysis/line_fit.hpp"
+#include "core/analysis/orbit_error.hpp"
 
 using namespace vibra;
 

@@ -8,8 +8,8 @@
 #include "cli_support.hpp"
 #include "core/comparison.hpp"
 #include "render/draw/color.hpp"
-#include "scenes/figures/comparison_figure.hpp"
 #include "scenes/diagrams/comparison_labels.hpp"
+#include "scenes/figures/comparison_figure.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;

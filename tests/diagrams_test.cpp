@@ -17,9 +17,9 @@
 #include "scenes/diagrams/orbit_diagram.hpp"
 #include "scenes/diagrams/oscillator_diagram.hpp"
 #include "scenes/diagrams/rlc_diagram.hpp"
-#include "scenes/scene_factory.hpp"
 #include "scenes/diagrams/sliding_box_diagram.hpp"
 #include "scenes/diagrams/washing_machine_diagram.hpp"
+#include "scenes/scene_factory.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;

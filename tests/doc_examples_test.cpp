@@ -11,12 +11,13 @@
 //    an example.
 // 3. Each example runs alone in a fresh empty directory holding build/vibra
 //    (a link to the built executable; build/ is also on PATH for `vibra ...`)
+//    and examples/ (a link to the repository's, for the files examples read)
 //    under `bash -o pipefail -c`, stdin /dev/null, killed after 120 s. It
 //    must exit 0.
 // 4. An output named by `-o FILE` or `--output FILE` must exist afterwards
 //    (a frame pattern with %d: its directory must hold a frame; `-` and
 //    /dev/ paths are not checked).
-// 5. Shrinking, mechanically: every `vibra render` example runs at
+// 5. Shrinking, mechanically: every `vibra render` and `vibra lecture` example runs at
 //    --size 320x180 (its --size value replaced, or the option added before
 //    the first pipe or at the end; a trailing comment is dropped). Nothing
 //    else changes.
@@ -173,7 +174,7 @@ std::vector<std::string> words(const std::string& command) {
 /// first pipe, or at the end.
 std::string shrunk(const std::string& command) {
   const auto w = words(command);
-  if (w.size() < 2 || w[1] != "render") return command;
+  if (w.size() < 2 || (w[1] != "render" && w[1] != "lecture")) return command;
   const std::string code = code_of(command), small = "320x180";
   const size_t size = code.find(" --size ");
   if (size != std::string::npos) {
@@ -225,6 +226,7 @@ Outcome run_example(const std::string& command, const vibra::test::ScratchDirect
   if (!fs::exists(bin / "vibra")) fs::create_symlink(VIBRA_EXE, bin / "vibra");
   fs::create_directories(dir.path / "build");
   fs::create_symlink(VIBRA_EXE, dir.path / "build" / "vibra");
+  fs::create_directory_symlink(fs::path(VIBRA_SOURCE_DIR) / "examples", dir.path / "examples");
   const std::string shell = "cd " + single_quoted(dir.path.string()) + " && PATH=" + single_quoted(bin.string()) +
                             ":\"$PATH\" timeout 120 bash -o pipefail -c " + single_quoted(command) +
                             " </dev/null >/dev/null 2>" + single_quoted(logs / "err");
@@ -300,6 +302,7 @@ TEST_CASE("doc examples: renders shrink to 320x180, nothing else changes", "[doc
   CHECK(shrunk("build/vibra render -o x.mp4   # a video") == "build/vibra render -o x.mp4 --size 320x180");
   CHECK(shrunk("vibra render -o - | cat") == "vibra render -o - --size 320x180 | cat");
   CHECK(shrunk("build/vibra solve undamped --set dt=0.1") == "build/vibra solve undamped --set dt=0.1");
+  CHECK(shrunk("build/vibra lecture story.toml -o x.mp4") == "build/vibra lecture story.toml -o x.mp4 --size 320x180");
   CHECK(code_of("vibra render --set \"colors.bob=#ff0000\"  # red") == "vibra render --set \"colors.bob=#ff0000\"");
   CHECK(named_outputs("build/vibra render -o 'a b.mp4' --set \"s=sin(u)\"") == std::vector<std::string>{"a b.mp4"});
   CHECK(named_outputs("vibra solve undamped --output x.csv -o -") == std::vector<std::string>{"x.csv"});

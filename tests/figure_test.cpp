@@ -9,10 +9,10 @@
 #include <memory>
 
 #include "cli_support.hpp"
-#include "render/plot/axis.hpp"
 #include "render/draw/decimated_path.hpp"
-#include "render/plot/figure.hpp"
 #include "render/output/output_error.hpp"
+#include "render/plot/axis.hpp"
+#include "render/plot/figure.hpp"
 
 using namespace vibra::render;
 using vibra::test::ScratchDirectory;

@@ -37,6 +37,10 @@ TEST_CASE("fuzz inputs replay cleanly: scene files", "[fuzz]") {
   CHECK(replay("scene_file", vibra::fuzz::scene_file) >= 5);
 }
 
+TEST_CASE("fuzz inputs replay cleanly: storyboards", "[fuzz]") {
+  CHECK(replay("storyboard", vibra::fuzz::storyboard) >= 6);
+}
+
 TEST_CASE("fuzz inputs replay cleanly: --set assignments", "[fuzz]") {
   CHECK(replay("set_assignments", vibra::fuzz::set_assignments) >= 6);
 }

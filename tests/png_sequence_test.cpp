@@ -15,8 +15,8 @@
 
 #include "argb_image.hpp"
 #include "cli_support.hpp"
-#include "render/output/output_error.hpp"
 #include "render/encode/png_sequence.hpp"
+#include "render/output/output_error.hpp"
 
 namespace fs = std::filesystem;
 using Catch::Matchers::Contains;

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "render/output/output_error.hpp"
 #include "render/encode/video_writer.hpp"
+#include "render/output/output_error.hpp"
 
 namespace fs = std::filesystem;
 using vibra::render::OutputError;

@@ -17,6 +17,7 @@ void bind_errors(py::module_&);
 void bind_solve(py::module_&);
 void bind_ascii(py::module_&);
 void bind_render(py::module_&);
+void bind_lecture(py::module_&);
 void bind_analyses(py::module_&);
 
 /// Uninitialised memory for a table of doubles, in huge pages when large

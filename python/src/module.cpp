@@ -9,5 +9,6 @@ PYBIND11_MODULE(_vibra, m) {
   vibra::python::bind_solve(m);
   vibra::python::bind_ascii(m);
   vibra::python::bind_render(m);
+  vibra::python::bind_lecture(m);
   vibra::python::bind_analyses(m);
 }

@@ -6,6 +6,7 @@ numpy arrays, and scenes rendered to videos that play in a notebook.
     run = vibra.solve("pendulum", Theta=40, alpha=0.8)
     run.t, run.theta              # numpy arrays viewing the C++ buffer
     vibra.render(Theta=40)        # a Video that plays in a notebook cell
+    vibra.lecture("story.toml")   # a storyboard's shots in one Video
     vibra.convergence("undamped", scheme="rk4")   # a Table
 
 Bad input raises ValueError with the command line's message; a solution
@@ -14,12 +15,12 @@ that blows up raises vibra.SolutionError (with .step and .t).
 
 from ._vibra import SolutionError
 from ._solution import Solution, models, solve, stream
-from ._media import Image, Video, render
+from ._media import Image, Video, lecture, render
 from ._ascii import ascii_lines
 from ._analyses import Table, amplitude, convergence, empirical, energy, frequency, orbit
 
 __all__ = [
     "Image", "Solution", "SolutionError", "Table", "Video",
     "amplitude", "ascii_lines", "convergence", "empirical", "energy", "frequency",
-    "models", "orbit", "render", "solve", "stream",
+    "lecture", "models", "orbit", "render", "solve", "stream",
 ]

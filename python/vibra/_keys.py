@@ -53,3 +53,22 @@ def size_text(size):
     except (TypeError, ValueError):
         raise ValueError(f"size={size!r} is not (width, height) or \"WxH\": write e.g. size=(1280, 720)") from None
     return f"{value_text('size', width)}x{value_text('size', height)}"
+
+
+def pacing_texts(name, value):
+    """slow= or pause= as the texts --slow and --pause take: "2-4:4" / "3:1",
+    a tuple (2, 4, 4) / (3, 1), or a list of either; None gives none."""
+    if value is None:
+        return []
+    items = value if isinstance(value, list) else [value]
+    texts = []
+    for item in items:
+        if isinstance(item, str):
+            texts.append(item)
+        elif isinstance(item, tuple) and len(item) == (3 if name == "slow" else 2):
+            numbers_ = [value_text(name, x) for x in item]
+            texts.append(f"{numbers_[0]}-{numbers_[1]}:{numbers_[2]}" if name == "slow" else f"{numbers_[0]}:{numbers_[1]}")
+        else:
+            form = '"2-4:4" or (2, 4, 4)' if name == "slow" else '"3:1" or (3, 1)'
+            raise ValueError(f"{name}={item!r} is not {form}: write e.g. {name}={form.split(' or ')[0]}")
+    return texts

@@ -7,7 +7,7 @@ import os
 from pathlib import Path
 
 from . import _vibra
-from ._keys import assignments, comparison_text, size_text, value_text
+from ._keys import assignments, comparison_text, pacing_texts, size_text, value_text
 
 # Videos up to this size are embedded in the notebook as a data URI; larger
 # ones are linked by their path relative to the notebook's directory, so the
@@ -80,9 +80,9 @@ class Image(_Output):
 
 
 def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=None, speed=None,
-           window=None, window_mode=None, compare=None, title=None, equation=False, notes=None,
-           frame_per_step=False, frames_player=False, codec="", quality="medium", crf=-1, preset="", threads=0,
-           transparent=False, quiet=True, **keys):
+           window=None, window_mode=None, compare=None, slow=None, pause=None, title=None, equation=False,
+           notes=None, frame_per_step=False, frames_player=False, codec="", quality="medium", crf=-1, preset="",
+           threads=0, transparent=False, quiet=True, **keys):
     """Renders a scene as `vibra render` does: a video (out="name.mp4", .webm,
     .mkv, .ogv or .gif; default SCENE.mp4), or with at=T one still (out=
     "name.png", .svg or .pdf; default SCENE.png). PNG frame patterns
@@ -93,11 +93,13 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
     "rk4"]} (or "scheme=forward-euler,rk4") draws one run per value together, as
     --compare does. transparent=True draws no background (PNG with alpha, .webm
     VP9 with alpha, .mov ProRes 4444, SVG/PDF without the background rectangle).
-    title="The damped pendulum" puts a title across the top, equation=True the
-    model's equation of motion under it (and, comparing schemes, each scheme's
-    update formula in the legend); notes=["2-4: drag takes energy out @theta"]
-    adds callouts, as --title, --equation and --note do.
-    Returns a Video or an Image.
+    slow="2-4:4" (or (2, 4, 4), or a list of them) plays simulated times 2 to 4
+    four times slower; pause="3:1" (or (3, 1), or a list) holds t = 3 for 1 s
+    of video, as --slow and --pause do. title="The damped pendulum" puts a
+    title across the top, equation=True the model's equation of motion beside
+    or under it (and, comparing schemes, each scheme's update formula in the
+    legend); notes=["2-4: drag takes energy out @theta"] adds callouts, as
+    --title, --equation and --note do. Returns a Video or an Image.
     """
     settings = []
     for key, value in (("size", size), ("fps", fps), ("layout", layout), ("speed", speed),
@@ -112,6 +114,8 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
         notes = [notes]
     for note in notes or []:
         settings.append(("notes", str(note)))
+    settings += [("slow", text) for text in pacing_texts("slow", slow)]
+    settings += [("pause", text) for text in pacing_texts("pause", pause)]
     settings += [tuple(a.split("=", 1)) for a in assignments(keys)]
     if out is None:
         out = Path(scene).stem + (".png" if at is not None else ".mp4")
@@ -124,3 +128,21 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
     if suffix in VIDEO_TYPES or suffix == ".gif":
         return Video(out)
     return Path(out)
+
+
+def lecture(storyboard, output=None, *, shot=None, codec="", quality="medium", crf=-1, preset="", threads=0,
+            force=False, quiet=True):
+    """Plays a storyboard's shots into one video as `vibra lecture` does:
+    output="name.mp4" or .webm (default: the storyboard's name .mp4), with
+    name.vtt (subtitles) beside it, a chapter per shot and a subtitle track;
+    or "page.html" (a page with a chapter list; returned as a Path). shot=N
+    renders shot N alone. Returns a Video.
+    """
+    storyboard = os.fspath(storyboard)
+    if output is None:
+        output = Path(storyboard).stem + ".mp4"
+    output = os.fspath(output)
+    _vibra.lecture(storyboard, output, shot, codec, quality, crf, preset, threads, force, quiet)
+    if Path(output).suffix.lower() in VIDEO_TYPES:
+        return Video(output)
+    return Path(output)

@@ -9,9 +9,9 @@
 #include <new>
 #include <string>
 
-#include "render/labels/drawing_record.hpp"
-#include "render/encode/huge_pages.hpp"
 #include "render/draw/label_cache.hpp"
+#include "render/encode/huge_pages.hpp"
+#include "render/labels/drawing_record.hpp"
 #include "render/output/output_error.hpp"
 
 namespace vibra::render {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <vector>
 
-#include "render/labels/drawing_record.hpp"
 #include "render/draw/machine_elements.hpp"
+#include "render/labels/drawing_record.hpp"
 
 namespace vibra::render {
 

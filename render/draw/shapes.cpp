@@ -23,6 +23,14 @@ void apply(Canvas& canvas, const Stroke& s) {
 
 void move_to(cairo_t* cr, const Point& p) { cairo_move_to(cr, p.x(), p.y()); }
 void line_to(cairo_t* cr, const Point& p) { cairo_line_to(cr, p.x(), p.y()); }
+
+/// The axle a pendulum turns on.
+void draw_pin(Canvas& canvas, const Point& at, const Color& color) {
+  cairo_new_path(canvas.cr());
+  cairo_arc(canvas.cr(), at.x(), at.y(), 4.5 * canvas.scale(), 0, 2 * M_PI);
+  cairo_set_source_rgba(canvas.cr(), color.r, color.g, color.b, color.a);
+  canvas.fill();
+}
 }  // namespace
 
 void draw_pixel_line(Canvas& canvas, const Point& a, const Point& b, const Stroke& s) {
@@ -59,8 +67,11 @@ void draw_line(Canvas& canvas, const WorldView& view, const Point& a, const Poin
 
 void draw_arrow(Canvas& canvas, const WorldView& view, const Point& from, const Point& to, const Stroke& s,
                 double head) {
+  draw_pixel_arrow(canvas, view.to_pixel(from), view.to_pixel(to), s, head);
+}
+
+void draw_pixel_arrow(Canvas& canvas, const Point& a, const Point& b, const Stroke& s, double head) {
   OutlineKindScope outline_kind(canvas, OutlineKind::arrow);
-  const Point a = view.to_pixel(from), b = view.to_pixel(to);
   const double length = (b - a).norm();
   if (length < 1e-9) return;
   const Point along = (b - a) / length, across(-along.y(), along.x());
@@ -126,11 +137,29 @@ void draw_ceiling(Canvas& canvas, const WorldView& view, const Point& center, do
   Stroke thick = s;
   thick.width = 1.5 * s.width;
   draw_pixel_line(canvas, left, right, thick);
-  const Point pin = view.to_pixel(center);
-  cairo_new_path(canvas.cr());
-  cairo_arc(canvas.cr(), pin.x(), pin.y(), 4.5 * canvas.scale(), 0, 2 * M_PI);
-  cairo_set_source_rgba(canvas.cr(), s.color.r, s.color.g, s.color.b, s.color.a);
-  canvas.fill();
+  draw_pin(canvas, view.to_pixel(center), s.color);
+}
+
+void draw_pivot_block(Canvas& canvas, const WorldView& view, const Point& center, double half_width, const Color& fill,
+                      const Stroke& s) {
+  OutlineKindScope outline_kind(canvas, OutlineKind::ground);
+  const Point low = view.to_pixel(center - Point(half_width, half_width));
+  const Point high = view.to_pixel(center + Point(half_width, half_width));
+  const double x = std::min(low.x(), high.x()), y = std::min(low.y(), high.y());
+  const double w = std::abs(high.x() - low.x()), h = std::abs(high.y() - low.y());
+  const double r = 0.18 * std::min(w, h);
+  cairo_t* cr = canvas.cr();
+  cairo_new_path(cr);
+  cairo_arc(cr, x + w - r, y + r, r, -M_PI / 2, 0);
+  cairo_arc(cr, x + w - r, y + h - r, r, 0, M_PI / 2);
+  cairo_arc(cr, x + r, y + h - r, r, M_PI / 2, M_PI);
+  cairo_arc(cr, x + r, y + r, r, M_PI, 1.5 * M_PI);
+  cairo_close_path(cr);
+  cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, fill.a);
+  canvas.fill_preserve();
+  apply(canvas, s);
+  canvas.stroke();
+  draw_pin(canvas, view.to_pixel(center), s.color);
 }
 
 }  // namespace vibra::render

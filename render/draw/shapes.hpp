@@ -21,12 +21,19 @@ void draw_line(Canvas&, const WorldView&, const Point& a, const Point& b, const 
 /// An arrow from `from` to `to` with a filled head of `head` 720p pixels
 /// (shrunk for short arrows so the head never overshoots the tip).
 void draw_arrow(Canvas&, const WorldView&, const Point& from, const Point& to, const Stroke&, double head = 20);
+/// The same in pixels.
+void draw_pixel_arrow(Canvas&, const Point& from, const Point& to, const Stroke&, double head = 20);
 void draw_circle(Canvas&, const WorldView&, const Point& center, double radius, const Color& fill, const Stroke& outline);
 /// An arc from angle a0 to a1 (radians, counter-clockwise from +x in the world).
 void draw_arc(Canvas&, const WorldView&, const Point& center, double radius, double a0, double a1, const Stroke&);
 /// A ceiling: a thick line of half-width `half_width` centred at `center`
 /// with hatching above it, and a small pin at the centre.
 void draw_ceiling(Canvas&, const WorldView&, const Point& center, double half_width, const Stroke&);
+/// A pivot that nothing hangs from: a square bearing block, `half_width`
+/// (world units) each side of `center`, with the axle pin drawn on it. For a
+/// pendulum that swings up past its pivot, which a ceiling would cut.
+void draw_pivot_block(Canvas&, const WorldView&, const Point& center, double half_width, const Color& fill,
+                      const Stroke&);
 
 // Shapes in pixels, for plots.
 void draw_pixel_polyline(Canvas&, std::span<const Point> points, const Stroke&);

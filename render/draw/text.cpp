@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string_view>
+#include <utility>
 
-#include "render/labels/drawing_record.hpp"
 #include "render/draw/label_cache.hpp"
+#include "render/labels/drawing_record.hpp"
 
 namespace vibra::render {
 
@@ -201,6 +203,20 @@ Point label_beyond(const Point& tip, const Point& direction, const Point& size, 
   const double reach = std::min(std::abs(d.x()) > 1e-12 ? 0.5 * size.x() / std::abs(d.x()) : 1e300,
                                 std::abs(d.y()) > 1e-12 ? 0.5 * size.y() / std::abs(d.y()) : 1e300);
   return tip + (gap + reach) * d;
+}
+
+std::string markup_plain_text(const std::string& markup) {
+  std::string out;
+  bool in_tag = false;
+  for (char c : markup) {
+    if (c == '<') in_tag = true;
+    else if (c == '>') in_tag = false;
+    else if (!in_tag) out += c;
+  }
+  for (const auto& [entity, c] : {std::pair{"&lt;", '<'}, {"&gt;", '>'}, {"&amp;", '&'}})
+    for (size_t at = 0; (at = out.find(entity, at)) != std::string::npos; ++at)
+      out.replace(at, std::string_view(entity).size(), 1, c);
+  return out;
 }
 
 }  // namespace vibra::render

@@ -29,6 +29,10 @@ void start_loading_fonts();
 
 /// Draws Pango markup at pixel point `at`; returns its size in pixels (as text_size).
 Point draw_text(Canvas&, const Point& at, const std::string& markup, const TextStyle&, Anchor = Anchor::center);
+/// Pango markup without its tags and with &lt; &gt; &amp; as characters: the
+/// same words for a page, file metadata or a terminal, where no markup is drawn.
+std::string markup_plain_text(const std::string& markup);
+
 /// The markup's size in pixels.
 Point text_size(Canvas&, const std::string& markup, const TextStyle&);
 

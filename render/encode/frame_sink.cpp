@@ -5,12 +5,12 @@
 #include <cmath>
 #include <filesystem>
 
-#include "render/output/output_path.hpp"
-#include "render/output/standard_output.hpp"
-#include "render/output/output_error.hpp"
 #include "render/encode/png_sequence.hpp"
 #include "render/encode/video_writer.hpp"
 #include "render/encode/y4m_stream.hpp"
+#include "render/output/output_error.hpp"
+#include "render/output/output_path.hpp"
+#include "render/output/standard_output.hpp"
 
 namespace vibra::render {
 

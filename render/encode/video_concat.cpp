@@ -12,6 +12,7 @@ extern "C" {
 
 #include "core/input_files.hpp"
 #include "render/encode/av_error.hpp"
+#include "render/encode/remux_files.hpp"
 #include "render/output/output_error.hpp"
 #include "render/output/output_path.hpp"
 #include "render/output/temporary_file.hpp"
@@ -21,25 +22,7 @@ namespace fs = std::filesystem;
 namespace vibra::render {
 
 namespace {
-struct InputCloser {
-  void operator()(AVFormatContext* c) const { avformat_close_input(&c); }
-};
-using Input = std::unique_ptr<AVFormatContext, InputCloser>;
-
-Input open_input(const fs::path& path, std::string& error) {
-  AVFormatContext* context = nullptr;
-  const int opened = avformat_open_input(&context, path.c_str(), nullptr, nullptr);
-  if (opened < 0) {
-    error = av_error(opened);
-    return nullptr;
-  }
-  return Input(context);
-}
-
-std::string metadata(const AVFormatContext* context, const char* key) {
-  const AVDictionaryEntry* entry = av_dict_get(context->metadata, key, nullptr, 0);
-  return entry ? entry->value : "";
-}
+using Input = MediaInput;
 
 /// One segment file, opened and checked.
 struct Part {
@@ -50,11 +33,7 @@ struct Part {
   AVRational frame_rate{0, 1};
 };
 
-std::string quoted(const fs::path& path) {
-  std::string text = "'";  // built in steps: GCC 12 warns falsely about "'" + string (bug 105329)
-  text += path.string();
-  return text += "'";
-}
+std::string quoted(const fs::path& path) { return quoted_path(path); }
 
 [[noreturn]] void refuse(const Part& part, const std::string& problem, const std::string& fix) {
   throw OutputError("cannot join " + quoted(part.path) + ": " + problem + ": " + fix);
@@ -64,7 +43,7 @@ Part open_part(const fs::path& path) {
   Part part;
   part.path = path;
   std::string error;
-  part.input = open_input(path, error);
+  part.input = open_media_input(path, error);
   if (!part.input) refuse(part, "it cannot be read (" + error + ")", "give segment videos made by vibra render --segment");
   AVFormatContext* c = part.input.get();
   const int found = avformat_find_stream_info(c, nullptr);
@@ -72,31 +51,12 @@ Part open_part(const fs::path& path) {
   const int video = av_find_best_stream(c, AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0);
   if (video < 0 || c->nb_streams != 1) refuse(part, "it does not hold exactly one video stream", "give vibra's segment videos");
   part.stream = c->streams[video];
-  const auto segment = FrameSegment::from_tag(metadata(c, "description"));
+  const auto segment = FrameSegment::from_tag(container_metadata(c, "description"));
   if (!segment) refuse(part, "it is not a segment (no segment tag)", "render the parts with vibra render --segment K/N");
   part.segment = *segment;
-  part.frame_rate = part.stream->avg_frame_rate.num > 0 ? part.stream->avg_frame_rate : part.stream->r_frame_rate;
-  if (part.frame_rate.num <= 0 || part.frame_rate.den <= 0) refuse(part, "it has no frame rate", "render it again");
+  part.frame_rate = stream_frame_rate(part.stream);
+  if (part.frame_rate.num <= 0) refuse(part, "it has no frame rate", "render it again");
   return part;
-}
-
-/// The first codec parameter in which `b` differs from `a`, or "".
-std::string differing_parameter(const Part& a, const Part& b) {
-  const AVCodecParameters *p = a.stream->codecpar, *q = b.stream->codecpar;
-  if (p->codec_id != q->codec_id)
-    return std::string("codec ") + avcodec_get_name(q->codec_id) + " instead of " + avcodec_get_name(p->codec_id);
-  if (p->width != q->width || p->height != q->height)
-    return "size " + std::to_string(q->width) + "x" + std::to_string(q->height) + " instead of " +
-           std::to_string(p->width) + "x" + std::to_string(p->height);
-  if (p->format != q->format) return "another pixel format";
-  if (av_cmp_q(a.stream->time_base, b.stream->time_base) != 0) return "another time base";
-  if (av_cmp_q(a.frame_rate, b.frame_rate) != 0)
-    return "frame rate " + std::to_string(av_q2d(b.frame_rate)) + " instead of " + std::to_string(av_q2d(a.frame_rate));
-  if (p->extradata_size != q->extradata_size ||
-      (p->extradata_size > 0 && std::memcmp(p->extradata, q->extradata, p->extradata_size) != 0))
-    return "other codec headers (another quality, preset or profile)";
-  if (p->color_range != q->color_range || p->color_space != q->color_space) return "another colour space";
-  return "";
 }
 
 /// Checks that `parts` are the segments of one render, each once, none
@@ -116,7 +76,7 @@ void check_parts(std::vector<Part>& parts) {
                        std::to_string(t.total) + " frames, but " + quoted(head.path) + " is one of " +
                        std::to_string(s.count) + " segments of " + std::to_string(s.total) + " frames",
              "join the segments of one split");
-    const std::string difference = differing_parameter(head, part);
+    const std::string difference = differing_video_parameter(head.stream, part.stream);
     if (!difference.empty())
       refuse(part, "it has " + difference + " (unlike " + quoted(head.path) + ")",
              "render every segment with the same options");
@@ -146,33 +106,19 @@ void check_parts(std::vector<Part>& parts) {
   }
 }
 
-/// The output file being written.
-struct Output {
-  TemporaryFile file;
-  AVFormatContext* format = nullptr;
-  AVStream* stream = nullptr;
-
-  explicit Output(const fs::path& path) : file(path) {}
-  ~Output() {
-    if (format) {
-      if (format->pb) avio_closep(&format->pb);
-      avformat_free_context(format);
-    }
-  }
-  void check(int code, const std::string& what) const {
-    if (code < 0)
-      throw OutputError("cannot write " + quoted(file.final_path()) + ": " + what + " failed (" + av_error(code) +
-                        "): check that the disk is writable and has space");
-  }
-};
 }  // namespace
 
-std::optional<FrameSegment> read_segment_tag(const fs::path& video) {
-  av_log_set_level(AV_LOG_QUIET);  // an unreadable file is simply not the segment
+std::string read_video_description(const fs::path& video) {
+  av_log_set_level(AV_LOG_QUIET);  // an unreadable file simply has no description
   std::string error;
-  const Input input = open_input(video, error);
-  if (!input) return std::nullopt;
-  return FrameSegment::from_tag(metadata(input.get(), "description"));
+  std::error_code ec;
+  if (!fs::is_regular_file(video, ec)) return "";
+  const Input input = open_media_input(video, error);
+  return input ? container_metadata(input.get(), "description") : "";
+}
+
+std::optional<FrameSegment> read_segment_tag(const fs::path& video) {
+  return FrameSegment::from_tag(read_video_description(video));
 }
 
 ConcatSummary concat_segments(const std::vector<fs::path>& paths, const fs::path& output) {
@@ -189,24 +135,19 @@ ConcatSummary concat_segments(const std::vector<fs::path>& paths, const fs::path
   if (!muxer || avformat_query_codec(muxer, codec->codec_id, FF_COMPLIANCE_NORMAL) != 1)
     throw OutputError("-o " + quoted(output) + " cannot hold " + avcodec_get_name(codec->codec_id) +
                       " video: name it like the parts (" + parts.front().path.extension().string() + ")");
-  Output out(file);
-  out.check(avformat_alloc_output_context2(&out.format, muxer, nullptr, out.file.path().c_str()), "setting up");
-  out.stream = avformat_new_stream(out.format, nullptr);
-  if (!out.stream) out.check(AVERROR(ENOMEM), "setting up");
-  out.check(avcodec_parameters_copy(out.stream->codecpar, codec), "setting up");
-  out.stream->codecpar->codec_tag = 0;  // the output container chooses its own
+  MuxedOutput out(file);
+  out.open(muxer);
+  AVStream* out_stream = avformat_new_stream(out.format, nullptr);
+  if (!out_stream) out.check(AVERROR(ENOMEM), "setting up");
+  out.check(avcodec_parameters_copy(out_stream->codecpar, codec), "setting up");
+  out_stream->codecpar->codec_tag = 0;  // the output container chooses its own
   const AVStream* first = parts.front().stream;
-  out.stream->time_base = first->time_base;
-  out.stream->avg_frame_rate = parts.front().frame_rate;
+  out_stream->time_base = first->time_base;
+  out_stream->avg_frame_rate = parts.front().frame_rate;
   for (const char* key : {"title", "comment"})
-    if (const std::string value = metadata(parts.front().input.get(), key); !value.empty())
+    if (const std::string value = container_metadata(parts.front().input.get(), key); !value.empty())
       av_dict_set(&out.format->metadata, key, value.c_str(), 0);
-  out.check(avio_open(&out.format->pb, out.file.path().c_str(), AVIO_FLAG_WRITE), "opening the file");
-  AVDictionary* header = nullptr;
-  if (std::strcmp(muxer->name, "mp4") == 0) av_dict_set(&header, "movflags", "+faststart", 0);
-  const int written = avformat_write_header(out.format, &header);
-  av_dict_free(&header);
-  out.check(written, "writing the header");
+  out.write_header();
 
   std::unique_ptr<AVPacket, void (*)(AVPacket*)> packet(av_packet_alloc(), [](AVPacket* p) { av_packet_free(&p); });
   if (!packet) out.check(AVERROR(ENOMEM), "allocating a packet");
@@ -234,13 +175,13 @@ ConcatSummary concat_segments(const std::vector<fs::path>& paths, const fs::path
                "render it again");
       seen[frame - s.first()] = true;
       if (guessed_dts) packet->dts = AV_NOPTS_VALUE;
-      av_packet_rescale_ts(packet.get(), part.stream->time_base, out.stream->time_base);
+      av_packet_rescale_ts(packet.get(), part.stream->time_base, out_stream->time_base);
       if (packet->dts != AV_NOPTS_VALUE) {
         if (last_dts != AV_NOPTS_VALUE && packet->dts <= last_dts)
           refuse(part, "its decoding timestamps overlap the previous part's", "render every segment with the same options");
         last_dts = packet->dts;
       }
-      packet->stream_index = out.stream->index;
+      packet->stream_index = out_stream->index;
       packet->pos = -1;
       out.check(av_interleaved_write_frame(out.format, packet.get()), "writing a frame");  // takes the packet's data
       ++summary.frames;
@@ -250,9 +191,7 @@ ConcatSummary concat_segments(const std::vector<fs::path>& paths, const fs::path
       refuse(part, "it holds " + std::to_string(held) + " of the " + std::to_string(s.frames()) + " frames its tag names",
              "render it again");
   }
-  out.check(av_write_trailer(out.format), "writing the trailer");
-  out.check(avio_closep(&out.format->pb), "closing the file");
-  out.file.commit();
+  out.finish_and_commit();
   return summary;
 }
 

@@ -12,6 +12,10 @@ namespace vibra::render {
 /// the file cannot be read or has none.
 std::optional<FrameSegment> read_segment_tag(const std::filesystem::path& video);
 
+/// The video file's container "description" (a segment's or a lecture
+/// shot's tag); "" when the file cannot be read or has none.
+std::string read_video_description(const std::filesystem::path& video);
+
 /// What concat_segments() joined.
 struct ConcatSummary {
   long long frames = 0;

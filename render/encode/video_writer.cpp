@@ -22,11 +22,11 @@ extern "C" {
 
 #include "render/encode/av_error.hpp"
 #include "render/encode/huge_pages.hpp"
+#include "render/encode/yuv420_converter.hpp"
+#include "render/encode/yuva_converter.hpp"
 #include "render/output/output_error.hpp"
 #include "render/output/standard_output.hpp"
 #include "render/output/temporary_file.hpp"
-#include "render/encode/yuv420_converter.hpp"
-#include "render/encode/yuva_converter.hpp"
 
 namespace fs = std::filesystem;
 

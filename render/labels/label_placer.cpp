@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/draw/shapes.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "render/labels/occupancy_grid.hpp"
-#include "render/draw/shapes.hpp"
 #include "render/typeset/formula_draw.hpp"
 
 namespace vibra::render {

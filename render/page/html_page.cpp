@@ -4,8 +4,8 @@
 #include <map>
 
 #include "render/output/output_error.hpp"
-#include "render/page/page_assets.hpp"
 #include "render/output/temporary_file.hpp"
+#include "render/page/page_assets.hpp"
 #include "render/page/web_text.hpp"
 
 namespace vibra::render {
@@ -31,6 +31,8 @@ std::string media_html(const PageMedia& m) {
   }
   std::string out = "<div id=\"media\"><video id=\"video\" preload=\"auto\" playsinline muted loop" + size + ">\n";
   for (const auto& s : m.videos) out += "  <source src=\"" + href(s) + "\" type=\"" + mime_type(s) + "\">\n";
+  if (!m.subtitles.empty())
+    out += "  <track kind=\"subtitles\" label=\"Notes\" srclang=\"en\" src=\"" + href(m.subtitles) + "\" default>\n";
   if (!m.videos.empty())
     out += "  Your browser plays none of these videos: download <a href=\"" + href(m.videos.front()) + "\">" +
            html_escape(m.videos.front()) + "</a>.\n";
@@ -41,6 +43,29 @@ std::string number(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", x);
   return text;
+}
+
+/// ,"map":[[video, simulated, rate], ...] for a paced clock; nothing for a steady one.
+std::string time_map_json(const std::vector<PageMedia::TimePiece>& pieces) {
+  if (pieces.empty()) return "";
+  std::string out = ",\"map\":[";
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    out += (i ? ",[" : "[") + number(pieces[i].video) + "," + number(pieces[i].simulated) + "," +
+           number(pieces[i].rate) + "]";
+  return out + "]";
+}
+
+/// The lecture's chapters: links that seek the video to each shot.
+std::string chapters_html(const std::vector<PageChapter>& chapters) {
+  if (chapters.empty()) return "";
+  std::string out = "<ol id=\"chapters\">\n";
+  for (const PageChapter& c : chapters) {
+    char start[32];
+    std::snprintf(start, sizeof start, "%d:%04.1f", int(c.start) / 60, c.start - 60 * (int(c.start) / 60));
+    out += "<li><a href=\"#\" data-start=\"" + number(c.start) + "\">" + html_escape(c.title) + "</a> <span>" + start +
+           "</span></li>\n";
+  }
+  return out + "</ol>";
 }
 
 std::string data_json(const LecturePage& page) {
@@ -56,7 +81,7 @@ std::string data_json(const LecturePage& page) {
   }
   if (m.kind != PageMedia::Kind::none)
     out += ",\"clock\":{\"fps\":" + number(m.fps) + ",\"frames\":" + std::to_string(m.frames) +
-           ",\"interval\":" + number(m.frame_interval) + "}";
+           ",\"interval\":" + number(m.frame_interval) + time_map_json(m.time_map) + "}";
   return out + ",\"plots\":" + page_plots_json(page.panels, kPagePlotBudgetBytes) + "}";
 }
 
@@ -111,7 +136,7 @@ std::string lecture_page_html(const LecturePage& page) {
               {{"TITLE", html_escape(page.title)},
                {"UPLOT_CSS", std::string(page_asset("uPlot.min.css"))},
                {"PAGE_CSS", std::string(page_asset("page.css"))},
-               {"MEDIA", media_html(page.media)},
+               {"MEDIA", media_html(page.media) + chapters_html(page.chapters)},
                {"CONTROLS_CLASS", has_media ? "" : "hidden"},
                {"HINT", hint},
                {"FACTS", facts_rows(page.facts)},

@@ -22,6 +22,22 @@ struct PageMedia {
   long long frames = 0;
   double fps = 30;
   double frame_interval = 0;  ///< simulated time from one frame to the next
+  /// Slow motion and pauses: from `video` seconds on, simulated time runs at
+  /// `rate` per second of video from `simulated`. Empty: frame k shows
+  /// k * frame_interval. The page maps the video's time through the same
+  /// pieces as the render (scenes/time_map.hpp).
+  struct TimePiece {
+    double video = 0, simulated = 0, rate = 0;
+  };
+  std::vector<TimePiece> time_map;
+  /// Subtitles (WebVTT) relative to the page, shown by the video ("": none).
+  std::string subtitles;
+};
+
+/// A chapter of a lecture page's video: its title and where it starts.
+struct PageChapter {
+  std::string title;
+  double start = 0;  ///< seconds of video
 };
 
 /// A file offered for download, relative to the page.
@@ -39,6 +55,8 @@ struct LecturePage {
   PageFacts facts;
   std::string command_line;
   std::vector<PageDownload> downloads;
+  /// A lecture's shots, listed under the video; a click seeks to one.
+  std::vector<PageChapter> chapters;
 };
 
 /// The page as one self-contained HTML file (template render/page/lecture.html.in).

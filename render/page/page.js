@@ -14,8 +14,26 @@
   // Seeking to exactly k / fps may show frame k - 1 (Chromium truncates the
   // time to microseconds, just below the frame's timestamp): aim 10 us in.
   const frameTime = k => Math.min(lastFrame, Math.max(0, k)) / clock.fps + 1e-5;
-  const simulatedTime = s => clock ? frameAt(s) * clock.interval : s;
-  const mediaTime = t => clock ? frameTime(Math.round(t / clock.interval)) : t;
+  // Slow motion and pauses: pieces [video, simulated, rate], evaluated as
+  // the render evaluates them (scenes/time_map.cpp), so the cursor shows
+  // each frame's own simulated time.
+  const map = clock && clock.map;
+  const mapped = v => {
+    let i = 0;
+    while (i + 1 < map.length && map[i + 1][0] <= v) i++;
+    const end = i + 1 < map.length ? map[i + 1][1] : Infinity;  // the last piece holds T
+    return Math.min(end, map[i][1] + (v - map[i][0]) * map[i][2]);
+  };
+  const mappedFrame = t => {  // the first frame showing simulated time t
+    for (let i = 0; i < map.length; i++) {
+      const [v, s, r] = map[i], end = i + 1 < map.length ? map[i + 1][1] : Infinity;
+      if (t <= end && r > 0) return Math.round((v + Math.max(0, t - s) / r) * clock.fps);
+      if (t <= s) return Math.ceil(v * clock.fps - 1e-9);  // a pause: its first frame
+    }
+    return lastFrame;
+  };
+  const simulatedTime = s => !clock ? s : map ? mapped(frameAt(s) / clock.fps) : frameAt(s) * clock.interval;
+  const mediaTime = t => !clock ? t : frameTime(map ? mappedFrame(t) : Math.round(t / clock.interval));
 
   function videoMedia(video) {
     return {
@@ -65,6 +83,10 @@
   const media = page.media.kind === 'video' ? videoMedia($('video'))
               : page.media.kind === 'frames' ? framesMedia($('frames'), page.media.prefix, page.media.digits)
               : noMedia();
+
+  // ---- A lecture's chapters: each link seeks to its shot. -------------------
+  for (const link of document.querySelectorAll('#chapters a'))
+    link.onclick = e => { e.preventDefault(); media.time = Number(link.dataset.start) + 1e-5; };
 
   // ---- Keys and buttons. ----------------------------------------------------
   const step = n => { media.pause(); media.time = frameTime(frameAt(media.time) + n); };

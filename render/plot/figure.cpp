@@ -6,10 +6,10 @@
 #include <cctype>
 #include <cmath>
 
-#include "render/output/output_error.hpp"
 #include "render/draw/shapes.hpp"
-#include "render/output/temporary_file.hpp"
 #include "render/draw/text.hpp"
+#include "render/output/output_error.hpp"
+#include "render/output/temporary_file.hpp"
 
 namespace vibra::render {
 

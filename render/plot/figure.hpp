@@ -6,8 +6,8 @@
 #include <utility>
 #include <vector>
 
-#include "render/plot/axis.hpp"
 #include "render/draw/canvas.hpp"
+#include "render/plot/axis.hpp"
 #include "render/plot/figure_series.hpp"
 
 namespace vibra::render {

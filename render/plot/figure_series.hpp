@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "render/draw/color.hpp"
-#include "render/plot/column_envelope.hpp"
 #include "render/draw/decimated_path.hpp"
+#include "render/plot/column_envelope.hpp"
 
 namespace vibra::render {
 

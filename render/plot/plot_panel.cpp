@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "render/plot/axis.hpp"
 #include "render/draw/text.hpp"
+#include "render/plot/axis.hpp"
 
 namespace vibra::render {
 
@@ -85,9 +85,10 @@ void PlotPanel::draw_axes(Canvas& canvas, const std::string& y_label, const std:
   const TextStyle ticks{kTickFont, palette::ink.with_alpha(0.8)};
   // Tiny or huge ranges (a radius drifting by 1e-9) label their ticks in a
   // power of ten and an offset that the axis's label states once.
-  const std::vector<double> y_ticks = nice_ticks(y0_, y1_, 5), x_ticks = nice_ticks(x0_, x1_, 6);
-  const LinearTickLabels y_labels = linear_tick_labels(y_ticks, nice_step(y1_ - y0_, 5));
-  const LinearTickLabels x_labels = linear_tick_labels(x_ticks, nice_step(x1_ - x0_, 6));
+  const int y_target = tick_target(canvas, true), x_target = tick_target(canvas, false);
+  const std::vector<double> y_ticks = nice_ticks(y0_, y1_, y_target), x_ticks = nice_ticks(x0_, x1_, x_target);
+  const LinearTickLabels y_labels = linear_tick_labels(y_ticks, nice_step(y1_ - y0_, y_target));
+  const LinearTickLabels x_labels = linear_tick_labels(x_ticks, nice_step(x1_ - x0_, x_target));
   for (size_t i = 0; i < y_ticks.size(); ++i) {
     const Point p = to_pixel(x0_, y_ticks[i]);
     draw_pixel_line(canvas, p, {area_.x + area_.w, p.y()}, grid);
@@ -105,7 +106,7 @@ void PlotPanel::draw_axes(Canvas& canvas, const std::string& y_label, const std:
   canvas.stroke();
   // The y label sits above the frame's top-left corner: readable without
   // rotation, clear of the curve, and it does not steal width from the plot.
-  draw_text(canvas, {area_.x, area_.y - 3 * scale_}, with_common(y_label, y_labels.common), {kLabelFont, palette::ink},
+  draw_text(canvas, {area_.x, area_.y - 3 * scale_}, y_title(y_label, y_target), {kLabelFont, palette::ink},
             Anchor::bottom_left);
   // The x label sits at the end of the axis, inside the frame, as in textbooks.
   if (!x_label.empty()) {
@@ -160,16 +161,58 @@ void PlotPanel::draw_cursor(Canvas& canvas, double x, double y, const Color& c) 
   canvas.fill();
 }
 
-void PlotPanel::draw_legend(Canvas& canvas, const std::vector<LegendItem>& entries) const {
-  double x = area_.x + area_.w - 8 * scale_;
+int PlotPanel::tick_target(Canvas& canvas, bool vertical) const {
+  // The most ticks (up to 5 on y, 6 on x) whose labels keep apart: a line's
+  // height and a half on y, the widest label and a gap on x. A small panel
+  // (320x180) gets fewer ticks rather than labels written over each other.
+  const TextStyle style{kTickFont};
+  const double lo = vertical ? y0_ : x0_, hi = vertical ? y1_ : x1_;
+  const double pixels = vertical ? area_.h : area_.w;
+  const int most = vertical ? 5 : 6;
+  for (int target = most; target > 2; --target) {
+    const double step = nice_step(hi - lo, target);
+    const double apart = step / (hi - lo) * pixels;
+    double needed = 0;
+    if (vertical) {
+      needed = 1.5 * text_size(canvas, "0", style).y();
+    } else {
+      for (const std::string& label : linear_tick_labels(nice_ticks(lo, hi, target), step).labels)
+        needed = std::max(needed, text_size(canvas, label, style).x());
+      needed += 10 * scale_;
+    }
+    if (apart >= needed) return target;
+  }
+  return 2;
+}
+
+std::string PlotPanel::y_title(const std::string& y_label, int y_target) const {
+  const std::vector<double> ticks = nice_ticks(y0_, y1_, y_target);
+  return with_common(y_label, linear_tick_labels(ticks, nice_step(y1_ - y0_, y_target)).common);
+}
+
+void PlotPanel::draw_legend(Canvas& canvas, const std::vector<LegendItem>& entries, const std::string& y_label) const {
   const TextStyle style{kTickFont, palette::ink};
+  const double sample = 22 * scale_, gap = 6 * scale_, between = 14 * scale_;
+  double width = 0, height = 0;
+  for (const LegendItem& item : entries) {
+    const Point size = text_size(canvas, item.label, style);
+    width += size.x() + gap + sample + between;
+    height = std::max(height, size.y());
+  }
+  width -= between;
+  const Point title = text_size(canvas, y_title(y_label, tick_target(canvas, true)), {kLabelFont, palette::ink});
+  // The title row, right-aligned, when it leaves room after the y label;
+  // else inside the plot's top-right corner, as before.
+  const bool on_title_row = area_.x + title.x() + 2 * between + width <= area_.x + area_.w &&
+                            area_.y - 3 * scale_ - std::max(height, title.y()) >= outer_.y - 1;
+  const double centre_y = on_title_row ? area_.y - 3 * scale_ - title.y() / 2 : area_.y + 6 * scale_ + height / 2;
+  double x = area_.x + area_.w - (on_title_row ? 0 : 8 * scale_);
   for (auto it = entries.rbegin(); it != entries.rend(); ++it) {
     const Point size = text_size(canvas, it->label, style);
-    draw_text(canvas, {x, area_.y + 6 * scale_}, it->label, style, Anchor::top_right);
-    x -= size.x() + 6 * scale_;
-    const double y = area_.y + 6 * scale_ + size.y() / 2;
-    draw_pixel_line(canvas, {x - 22 * scale_, y}, {x, y}, {it->color, 2.5, it->dashed});
-    x -= 22 * scale_ + 14 * scale_;
+    draw_text(canvas, {x, centre_y}, it->label, style, Anchor::right);
+    x -= size.x() + gap;
+    draw_pixel_line(canvas, {x - sample, centre_y}, {x, centre_y}, {it->color, 2.5, it->dashed});
+    x -= sample + between;
   }
 }
 

@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "render/draw/canvas.hpp"
-#include "render/plot/column_envelope.hpp"
 #include "render/draw/shapes.hpp"
+#include "render/plot/column_envelope.hpp"
 
 namespace vibra::render {
 
@@ -48,10 +48,17 @@ class PlotPanel {
     Color color;
     bool dashed = false;
   };
-  /// Legend entries in the panel's top-right corner.
-  void draw_legend(Canvas&, const std::vector<LegendItem>& entries) const;
+  /// Legend entries on the title row, right of the y label `y_label_markup`
+  /// (as given to draw_axes), where they cover no data; where the row is too
+  /// narrow, in the plot's top-right corner.
+  void draw_legend(Canvas&, const std::vector<LegendItem>& entries, const std::string& y_label_markup) const;
 
  private:
+  /// The y label as drawn: with the ticks' common factor, if any.
+  std::string y_title(const std::string& y_label_markup, int y_target) const;
+  /// Labelled ticks to aim for on the y (`vertical`) or x axis, so that their labels keep apart.
+  int tick_target(Canvas&, bool vertical) const;
+
   PixelRect outer_, area_;
   double scale_;
   double x0_ = 0, x1_ = 1, y0_ = -1, y1_ = 1;

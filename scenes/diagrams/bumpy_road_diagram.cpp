@@ -83,6 +83,8 @@ void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& vie
   render::draw_force_arrow(canvas, view, {arrows[1].from, arrows[1].to, colors_.drag, "−<i>bu</i>′"}, colors_.background);
 }
 
+std::optional<ForceKey> BumpyRoadDiagram::force_key() const { return ForceKey{scale_.per_force(), "N", ""};}
+
 DiagramKind bumpy_road_diagram_kind() {
   return {"bumpy_road", "vehicle on a bumpy road: road profile, rolling wheel, spring and damper, view following (section 1.12.8)",
           {"bumpy-road"}, [](const DiagramInput& in) {

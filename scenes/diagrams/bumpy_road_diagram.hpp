@@ -29,6 +29,7 @@ class BumpyRoadDiagram final : public Diagram {
   std::optional<WorldBox> view_at(std::span<const double> row) const override;
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
+  std::optional<ForceKey> force_key() const override;
 
   Point axle(std::span<const double> row) const { return {row[3], row[4] + vehicle_.R}; }
   double body_bottom(std::span<const double> row) const { return axle(row).y() + vehicle_.L + row[1]; }

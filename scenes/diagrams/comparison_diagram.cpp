@@ -107,4 +107,6 @@ std::vector<LegendEntry> ComparisonDiagram::legend() const {
   return entries;
 }
 
+std::optional<ForceKey> ComparisonDiagram::force_key() const { return members_.front().diagram->force_key(); }
+
 }  // namespace vibra::scenes

@@ -32,6 +32,7 @@ class ComparisonDiagram final : public Diagram {
   /// its colour (the first curve of that panel), and the exact solution dashed.
   std::vector<PanelSpec> panels() const override;
   std::vector<LegendEntry> legend() const override;
+  std::optional<ForceKey> force_key() const override;
 
  private:
   std::vector<Member> members_;

@@ -9,6 +9,7 @@
 
 #include "core/comparison.hpp"
 #include "render/draw/canvas.hpp"
+#include "scenes/diagrams/force_key.hpp"
 #include "scenes/panels/series_panel.hpp"
 #include "scenes/scene_style.hpp"
 
@@ -82,6 +83,9 @@ class Diagram {
   virtual void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) = 0;
   /// The panels shown beside the diagram in layout fbd+plot, top to bottom.
   virtual std::vector<PanelSpec> panels() const = 0;
+  /// What an arrow's length means (world_per_force is 0 until the pre-pass
+  /// has seen the forces); none for a diagram without force arrows.
+  virtual std::optional<ForceKey> force_key() const { return std::nullopt; }
   /// What names the runs drawn (a comparison's members), top to bottom; empty for one run.
   virtual std::vector<LegendEntry> legend() const { return {}; }
 

@@ -80,6 +80,8 @@ void ElasticPendulumDiagram::draw(render::Canvas& canvas, const render::WorldVie
   for (const auto& f : forces) render::draw_force_arrow(canvas, view, f, colors_.background);
 }
 
+std::optional<ForceKey> ElasticPendulumDiagram::force_key() const { return ForceKey{scale_.per_force(), "<i>mg</i>", ""};}
+
 DiagramKind elastic_pendulum_diagram_kind() {
   return {"elastic_pendulum",
           "pendulum on an elastic wire drawn as a stretching spring, the bob's fading path, arrows mg, S and drag D "

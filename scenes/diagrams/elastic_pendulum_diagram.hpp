@@ -26,6 +26,7 @@ class ElasticPendulumDiagram final : public Diagram {
   void draw_static(render::Canvas&, const render::WorldView&) const override;
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
+  std::optional<ForceKey> force_key() const override;
 
   /// Gravity, the wire's force and the drag at a row, world units.
   std::array<Arrow, 3> force_arrows(std::span<const double> row) const;

@@ -5,6 +5,7 @@
 #include "render/draw/annotations.hpp"
 #include "render/draw/machine_elements.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
+#include "scenes/panels/plot_panels.hpp"
 
 namespace vibra::scenes {
 
@@ -21,7 +22,7 @@ std::vector<PanelSpec> OscillatorDiagram::panels() const {
   PanelSpec u{"<i>u</i>  displacement", {{"numerical", colors_.bob, [](std::span<const double> r) { return r[1]; }}}};
   if (exact_) u.series.push_back({"exact", colors_.gravity, [e = exact_](std::span<const double> r) { return e(r[0]); }, true});
   out.push_back(std::move(u));
-  out.push_back({"<i>u</i>′  velocity", {{"", colors_.bob, [](std::span<const double> r) { return r[2]; }}}});
+  out.push_back({quantity_markup("v"), {{"", colors_.bob, [](std::span<const double> r) { return r[2]; }}}});
   if (has_damper() || law_.F) {
     PanelSpec forces{"forces on the body", {}};
     forces.series.push_back({std::string("spring ") + kSpringLabel[law_.s ? 1 : 0], colors_.gravity,
@@ -121,6 +122,8 @@ void OscillatorDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
   for (size_t i = 0; i < arrows.size(); ++i)
     render::draw_force_arrow(canvas, view, {arrows[i].from, arrows[i].to, colors[i], labels[i]}, colors_.background);
 }
+
+std::optional<ForceKey> OscillatorDiagram::force_key() const { return ForceKey{scale_.per_force(), "", ""};}
 
 DiagramKind oscillator_diagram_kind() {
   return {"oscillator",

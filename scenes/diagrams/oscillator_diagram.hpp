@@ -25,6 +25,7 @@ class OscillatorDiagram final : public Diagram {
   void draw_static(render::Canvas&, const render::WorldView&) const override;
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
+  std::optional<ForceKey> force_key() const override;
 
   /// The arrows at a row, in world units (after finish_recording): spring,
   /// damper (when b > 0) and external force (when F is given), from the body.

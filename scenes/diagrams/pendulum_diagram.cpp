@@ -5,9 +5,9 @@
 #include <cstdio>
 
 #include "render/draw/annotations.hpp"
-#include "render/labels/label_placer.hpp"
 #include "render/draw/shapes.hpp"
 #include "render/draw/text.hpp"
+#include "render/labels/label_placer.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 
 namespace vibra::scenes {
@@ -41,6 +41,10 @@ std::vector<PanelSpec> PendulumDiagram::panels() const {
 void PendulumDiagram::record(std::span<const double> row, WorldBox& world) {
   const PendulumGeometry g = pendulum_geometry(state_of(row), options_);
   const double r = options_.bob_radius;
+  // The ceiling's hatching reaches 12 px up and the bob r: anything within
+  // about a tenth of L of the pivot's level would touch it.
+  if (g.bob.y() + r > -0.1) above_pivot_ = true;
+  if (row[4] != 0) has_drag_ = true;
   for (const Point& p : {Point(g.bob + Point(r, r)), Point(g.bob - Point(r, r)), g.gravity_tip, g.wire_force_tip,
                          g.drag_tip})
     world.extend(p);
@@ -55,7 +59,10 @@ void PendulumDiagram::finish_recording(WorldBox& world) {
 }
 
 void PendulumDiagram::draw_static(Canvas& canvas, const render::WorldView& view) const {
-  draw_ceiling(canvas, view, Point::Zero(), 0.3, {colors_.wire, 2.2});
+  if (above_pivot_)
+    render::draw_pivot_block(canvas, view, Point::Zero(), 0.07, colors_.wire.with_alpha(0.12), {colors_.wire, 1.6});
+  else
+    draw_ceiling(canvas, view, Point::Zero(), 0.3, {colors_.wire, 2.2});
 }
 
 void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
@@ -84,7 +91,10 @@ void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::s
       {g.bob, g.gravity_tip, c.gravity, "<i>mg</i>"},
       {g.bob, g.wire_force_tip, c.wire_force, "<i>S</i>", render::LabelPlace::beside, side * outward},
       {g.bob, g.drag_tip, c.drag, magnification_label(o.drag_magnification)}};
-  for (const auto& f : forces) draw_force_arrow(canvas, view, f, c.background);
+  // Without drag (alpha = 0) there is no D to draw: a ring labelled D would
+  // claim a force the model does not have.
+  for (const auto& f : forces)
+    if (&f != &forces[2] || has_drag_) draw_force_arrow(canvas, view, f, c.background);
 
   // The angle's label beyond the middle of its arc, placed like the arrows' labels.
   if (std::abs(state.theta) > 0.02) {
@@ -94,6 +104,14 @@ void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::s
     const Point direction(g.theta_label_direction.x(), -g.theta_label_direction.y());
     render::request_label(canvas, {"<i>θ</i>", label, at, direction, 4 * scale});
   }
+}
+
+std::optional<ForceKey> PendulumDiagram::force_key() const {
+  // magnification_label gives "<i>D</i> ×5": the key says "<i>D</i> drawn ×5".
+  std::string note;
+  if (has_drag_ && options_.drag_magnification != 1)
+    note = magnification_label(options_.drag_magnification).insert(8, " drawn");
+  return ForceKey{options_.force_unit, "<i>mg</i>", note};
 }
 
 DiagramKind pendulum_diagram_kind() {

@@ -5,7 +5,8 @@
 
 namespace vibra::scenes {
 
-/// The pendulum's free-body diagram (docs/drawing.md): ceiling and pivot,
+/// The pendulum's free-body diagram (docs/drawing.md): ceiling (or a bearing
+/// block, when the pendulum swings up past it) and pivot,
 /// wire, bob, the dashed vertical, the angle arc, and the arrows mg, S and
 /// the magnified drag D. Rows are the pendulum models': t, theta, omega, S, D.
 /// Panels: theta (degrees), S and D against time.
@@ -18,8 +19,14 @@ class PendulumDiagram final : public Diagram {
   void draw_static(render::Canvas&, const render::WorldView&) const override;
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
+  std::optional<ForceKey> force_key() const override;
 
  private:
+  /// Whether the bob or the wire ever rises to the pivot's height, where a
+  /// ceiling would cut them: the pivot is then a bearing block.
+  bool above_pivot_ = false;
+  /// Whether the run has any drag at all (alpha > 0): no D arrow otherwise.
+  bool has_drag_ = false;
   PendulumDiagramOptions options_;
   SceneColors colors_;
 };

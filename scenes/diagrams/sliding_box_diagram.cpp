@@ -6,6 +6,7 @@
 #include "render/draw/annotations.hpp"
 #include "render/draw/machine_elements.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
+#include "scenes/panels/plot_panels.hpp"
 
 namespace vibra::scenes {
 
@@ -15,7 +16,7 @@ SlidingBoxDiagram::SlidingBoxDiagram(SlidingBoxLaw law, std::function<double(dou
 std::vector<PanelSpec> SlidingBoxDiagram::panels() const {
   PanelSpec u{"<i>u</i>", {{"numerical", colors_.bob, [](std::span<const double> r) { return r[1]; }}}};
   if (exact_) u.series.push_back({"exact", colors_.gravity, [e = exact_](std::span<const double> r) { return e(r[0]); }, true});
-  PanelSpec v{"<i>u</i>′  velocity", {{"", colors_.bob, [](std::span<const double> r) { return r[2]; }}}};
+  PanelSpec v{quantity_markup("v"), {{"", colors_.bob, [](std::span<const double> r) { return r[2]; }}}};
   PanelSpec f{"friction <i>f</i>", {{"", colors_.drag, [law = law_](std::span<const double> r) {
                                        return law.friction(r[1], r[2]);
                                      }}}};
@@ -97,6 +98,17 @@ void SlidingBoxDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
   const std::string label = std::string("<i>f</i>") + magnified + (v != 0 ? " kinetic" : " static");
   render::draw_force_arrow(canvas, view, {arrows[1].from, arrows[1].to, colors_.drag, label, render::LabelPlace::beside,
                                           Point(0, 1)}, colors_.background);
+}
+
+std::optional<ForceKey> SlidingBoxDiagram::force_key() const {
+  // mg and N are drawn at a fixed length: the key says so.
+  std::string note = "<i>mg</i>, <i>N</i> not to scale";
+  if (friction_magnification_ != 1) {
+    char magnified[64];
+    std::snprintf(magnified, sizeof magnified, "<i>f</i> drawn \u00d7%g, ", friction_magnification_);
+    note = magnified + note;
+  }
+  return ForceKey{scale_.per_force(), "", note};
 }
 
 DiagramKind sliding_box_diagram_kind() {

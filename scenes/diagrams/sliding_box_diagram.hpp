@@ -29,6 +29,7 @@ class SlidingBoxDiagram final : public Diagram {
   void draw_static(render::Canvas&, const render::WorldView&) const override;
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
+  std::optional<ForceKey> force_key() const override;
 
   /// Spring and friction arrows at a row (to scale, friction magnified), in world units.
   std::array<Arrow, 2> force_arrows(std::span<const double> row) const;

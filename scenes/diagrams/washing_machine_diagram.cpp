@@ -92,6 +92,8 @@ void WashingMachineDiagram::draw(render::Canvas& canvas, const render::WorldView
     render::draw_force_arrow(canvas, view, {arrows[i].from, arrows[i].to, colors[i], labels[i]}, colors_.background);
 }
 
+std::optional<ForceKey> WashingMachineDiagram::force_key() const { return ForceKey{scale_.per_force(), "", ""};}
+
 DiagramKind washing_machine_diagram_kind() {
   return {"washing_machine",
           "machine on springs and a damper, drum turning with an off-centre mass at the forcing's phase (section 1.12.4)",

@@ -24,6 +24,7 @@ class WashingMachineDiagram final : public Diagram {
   void draw_static(render::Canvas&, const render::WorldView&) const override;
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
+  std::optional<ForceKey> force_key() const override;
 
   /// Where the off-centre mass is at time t, relative to the drum's centre.
   Point drum_mass_offset(double t) const;

@@ -4,10 +4,10 @@
 
 #include "core/analysis/empirical.hpp"
 #include "core/analysis/energy_study.hpp"
+#include "core/analysis/line_fit.hpp"
 #include "core/analysis/model_convergence.hpp"
 #include "core/analysis/orbit_error.hpp"
 #include "core/analysis/period_meter.hpp"
-#include "core/analysis/line_fit.hpp"
 #include "render/plot/figure.hpp"
 
 namespace vibra::scenes {

@@ -6,9 +6,9 @@
 
 #include "core/error.hpp"
 #include "render/output/stop_signal.hpp"
-#include "scenes/panels/rows_inside_step.hpp"
 #include "scenes/diagrams/comparison_labels.hpp"
 #include "scenes/panels/plot_panels.hpp"
+#include "scenes/panels/rows_inside_step.hpp"
 #include "scenes/run_caption.hpp"
 
 namespace vibra::scenes {

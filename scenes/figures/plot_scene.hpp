@@ -5,10 +5,10 @@
 #include "scenes/diagrams/diagram.hpp"
 #include "scenes/frame_heading.hpp"
 #include "scenes/note_callouts.hpp"
+#include "scenes/panels/series_panel.hpp"
 #include "scenes/run_legend.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/scene_style.hpp"
-#include "scenes/panels/series_panel.hpp"
 #include "scenes/static_layer.hpp"
 
 namespace vibra::scenes {

@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "render/plot/plot_panel.hpp"
 #include "render/draw/shapes.hpp"
 #include "render/draw/text.hpp"
+#include "render/plot/plot_panel.hpp"
 
 namespace vibra::scenes {
 

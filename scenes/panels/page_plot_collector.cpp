@@ -4,21 +4,11 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "render/draw/text.hpp"
 #include "scenes/panels/plot_panels.hpp"
 
 namespace vibra::scenes {
 
-namespace {
-/// A column's name as plain text for the page (uPlot draws no markup).
-std::string page_label(const std::string& column) {
-  if (column == "theta") return "θ (°)";
-  if (column == "omega") return "ω (rad per time unit)";
-  if (column == "S") return "S / mg, wire force";
-  if (column == "D") return "D / mg, air drag";
-  return column;
-}
-
-}  // namespace
 
 std::vector<std::string> page_panel_names(const TrajectoryInfo& info) {
   if (column_index(info, "S") > 0 && column_index(info, "D") > 0) return {info.columns[1], "S", "D"};
@@ -40,7 +30,8 @@ PagePlotCollector::PagePlotCollector(const TrajectoryInfo& info, const std::vect
                        "-o FILE.png, FILE.svg or FILE.pdf");
     const int column = column_index(info, name);
     const double factor = display_factor(name);
-    render::PagePanel panel{page_label(name), {}};
+    // The same words as the video's panel title, without markup (uPlot draws none).
+    render::PagePanel panel{render::markup_plain_text(quantity_markup(name)), {}};
     feeds_.push_back({panels_.size(), 0, [column, factor](std::span<const double> row) { return factor * row[column]; }});
     panel.series.push_back(
         {name, run, run_color.value_or(time_panel_color(static_cast<int>(panels_.size()))), false, data()});

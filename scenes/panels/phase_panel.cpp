@@ -53,7 +53,7 @@ void PhasePanel::draw_static(render::Canvas& canvas, bool) const {
   std::vector<render::PlotPanel::LegendItem> legend;
   for (const auto& c : curves_)
     if (!c.label.empty()) legend.push_back({c.label, c.color});
-  if (legend.size() > 1) panel_.draw_legend(canvas, legend);
+  if (legend.size() > 1) panel_.draw_legend(canvas, legend, y_label_);
 }
 
 void PhasePanel::draw(render::Canvas& canvas, double t, std::span<const double> row, bool) const {

@@ -25,6 +25,7 @@ std::string quantity_markup(const std::string& column) {
   if (column == "omega") return "<i>ω</i> (rad per time unit)";
   if (column == "S") return "<i>S</i> / <i>mg</i>, wire force";
   if (column == "D") return "<i>D</i> / <i>mg</i>, air drag";
+  if (column == "v") return "<i>v</i>  velocity";
   if (column.size() == 2 && column[0] == 'v') return "<i>v<sub>" + column.substr(1) + "</sub></i>";
   if (column.size() == 1) return "<i>" + column + "</i>";
   return column;

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "render/plot/column_envelope.hpp"
 #include "render/draw/growing_polyline.hpp"
+#include "render/plot/column_envelope.hpp"
 #include "render/plot/plot_panel.hpp"
 #include "render/plot/rolling_envelope.hpp"
 #include "scenes/panels/scene_panel.hpp"

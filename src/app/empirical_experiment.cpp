@@ -2,10 +2,10 @@
 #include <cstdio>
 
 #include "app/experiments.hpp"
-#include "core/analysis/phase_lag.hpp"
 #include "app/list_option.hpp"
 #include "core/analysis/empirical.hpp"
 #include "core/analysis/parameters_with_dt.hpp"
+#include "core/analysis/phase_lag.hpp"
 #include "core/error.hpp"
 #include "core/models/model.hpp"
 #include "scenes/figures/analysis_figures.hpp"

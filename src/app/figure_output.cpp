@@ -1,8 +1,8 @@
 #include <filesystem>
 
 #include "app/experiments.hpp"
-#include "render/plot/figure.hpp"
 #include "render/output/output_path.hpp"
+#include "render/plot/figure.hpp"
 #include "scenes/scene_config.hpp"
 
 namespace vibra::app {

@@ -7,8 +7,8 @@
 
 #include "app/experiments.hpp"
 #include "app/list_option.hpp"
-#include "core/analysis/orbit_error.hpp"
 #include "core/analysis/line_fit.hpp"
+#include "core/analysis/orbit_error.hpp"
 #include "core/error.hpp"
 #include "render/output/stop_signal.hpp"
 #include "scenes/figures/analysis_figures.hpp"

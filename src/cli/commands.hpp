@@ -11,6 +11,7 @@ void add_ascii_command(CLI::App& app);
 void add_plot_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
 void add_concat_command(CLI::App& app);
+void add_lecture_command(CLI::App& app);
 
 /// Adds -o/--output to a command: every command's output path is given the
 /// same way, and an empty one (-o '') names no file, so it is refused.

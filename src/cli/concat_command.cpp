@@ -7,8 +7,8 @@
 #include "cli/commands.hpp"
 #include "cli/wrote_message.hpp"
 #include "core/error.hpp"
-#include "render/output/output_path.hpp"
 #include "render/encode/video_concat.hpp"
+#include "render/output/output_path.hpp"
 
 namespace vibra::cli {
 

@@ -4,23 +4,23 @@
 #include <string>
 #include <vector>
 
+#include "app/list_option.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
-#include "app/list_option.hpp"
 #include "cli/model_help.hpp"
 #include "cli/wrote_message.hpp"
 #include "core/error.hpp"
 #include "core/error_column.hpp"
-#include "render/plot/figure.hpp"
-#include "scenes/figures/comparison_figure.hpp"
-#include "scenes/diagrams/comparison_labels.hpp"
-#include "render/page/html_page.hpp"
-#include "render/output/stop_signal.hpp"
 #include "render/output/output_path.hpp"
+#include "render/output/stop_signal.hpp"
+#include "render/page/html_page.hpp"
+#include "render/plot/figure.hpp"
+#include "scenes/diagrams/comparison_labels.hpp"
+#include "scenes/figures/comparison_figure.hpp"
+#include "scenes/figures/trajectory_figure.hpp"
 #include "scenes/panels/page_plot_collector.hpp"
 #include "scenes/run_caption.hpp"
 #include "scenes/scene_config.hpp"
-#include "scenes/figures/trajectory_figure.hpp"
 
 namespace vibra::cli {
 

@@ -38,6 +38,7 @@ struct RenderOptions {
   std::vector<std::string> notes;
   std::optional<std::string> at;  ///< a time: a number or an expression, as --set values take
   std::string segment;
+  std::vector<std::string> slow, pauses;
   bool skip_existing = false;
   bool force = false;
   bool quiet = false;
@@ -68,6 +69,7 @@ std::string scene_keys_help() {
          "  vibra render pendulum_book -o frames/tmp_%04d.png\n"
          "  vibra render --set Theta=40 --set alpha=0.8 -o lecture.webm\n"
          "  vibra render --at 3.2 -o still.svg\n"
+         "  vibra render --slow 2-4:4 --pause 3:1 -o lecture.mp4  # t = 2..4 four times slower, t = 3 held 1 s\n"
          "  vibra render spring_dashpot --panels u,phase,energy --energy-bars --at 5 -o still.png\n"
          "  vibra render --title \"The damped pendulum\" --equation --note \"2-4: drag takes energy out @theta\"\n"
          "  vibra render --segment 1/3 -o lecture.mp4             # lecture.seg-1-of-3.mp4; then vibra concat\n"
@@ -108,6 +110,8 @@ void run(const RenderOptions& o) {
   flag("window_mode", o.window_mode, "--window-mode");
   flag("compare", o.compare, "--compare");
   flag("panels", o.panels, "--panels");
+  for (const auto& range : o.slow) scenes::apply_setting(request.scene, {"slow", range, "--slow"});
+  for (const auto& pause : o.pauses) scenes::apply_setting(request.scene, {"pause", pause, "--pause"});
   if (o.energy_bars) request.scene.energy_bars = true;
   if (o.title) scenes::apply_setting(request.scene, {"title", *o.title, "--title"});
   if (o.equation) request.scene.equation = true;
@@ -142,6 +146,10 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--fps", o->fps, "Frames per second");
   cmd->add_option("--speed", o->speed, "Simulated time units per second of video");
   cmd->add_flag("--frame-per-step", o->frame_per_step, "One frame per solver step (the book's animation)");
+  cmd->add_option("--slow", o->slow,
+                  "T0-T1:FACTOR: simulated times T0 to T1 play FACTOR times slower (2-4:4 is a quarter speed; 0.5 "
+                  "twice as fast); repeatable, ranges may not overlap");
+  cmd->add_option("--pause", o->pauses, "T:SECONDS: hold simulated time T for SECONDS of video (3:1); repeatable");
   cmd->add_option("--layout", o->layout,
                   "fbd (the diagram alone), fbd+plot, plot (any model's moving plot), or grid (a panel per compared run)");
   cmd->add_option("--compare", o->compare,

@@ -60,6 +60,7 @@ int run_command_line(int argc, char** argv) {
   add_plot_command(app);
   add_analyze_command(app);
   add_concat_command(app);
+  add_lecture_command(app);
   refuse_empty_values(app);
   try {
     if (argc > 1 && argv[1][0] != '-') {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "core/hermite.hpp"
 #include "core/energy_parts.hpp"
+#include "core/hermite.hpp"
 #include "core/solution_stream.hpp"
 #include "core/time_mesh.hpp"
 

@@ -10,6 +10,8 @@
 #include "render/typeset/formula_draw.hpp"
 #include "render/typeset/formula_layout.hpp"
 #include "render/typeset/formula_parser.hpp"
+#include "scenes/frame_clock.hpp"
+#include "scenes/lecture/storyboard.hpp"
 #include "scenes/note.hpp"
 #include "scenes/scene_config.hpp"
 
@@ -61,6 +63,22 @@ void scene_file(std::string_view text) {
     read_every_key(parameters);
     build_and_step(model, parameters);
     (void)scenes::window_width(config, 1.0);
+  });
+}
+
+void storyboard(std::string_view text) {
+  expecting_user_errors([&] {
+    const scenes::Storyboard board = scenes::parse_storyboard(std::string(text), "fuzz.toml");
+    for (const scenes::Shot& shot : board.shots) {
+      if (shot.is_card) continue;
+      expecting_user_errors([&] {
+        const Parameters parameters = scenes::model_parameters_of(shot.scene);
+        read_every_key(parameters);
+        build_and_step(find_model(shot.scene.model), parameters);
+        // The pacing against a short run, as the lecture plans it.
+        if (!shot.scene.pacing.empty()) (void)scenes::FrameClock::paced(100, shot.scene.fps, 1, shot.scene.pacing);
+      });
+    }
   });
 }
 

@@ -10,6 +10,10 @@ namespace vibra::fuzz {
 
 /// A scene file: TOML text, loaded, its model built and stepped a little.
 void scene_file(std::string_view text);
+/// A lecture storyboard: TOML text read as `vibra lecture` reads it (every
+/// shot's keys, scene, pacing and notes), each scene shot's model built and
+/// stepped a little, its frame clock made.
+void storyboard(std::string_view text);
 /// `--set` lines: the first byte picks a model, each further line is one
 /// KEY=VALUE; then every value is read and the model stepped a little.
 void set_assignments(std::string_view text);

@@ -2,8 +2,8 @@
 #include <memory>
 
 #include "core/error.hpp"
-#include "core/quoted_value.hpp"
 #include "core/models/model.hpp"
+#include "core/quoted_value.hpp"
 #include "core/road_profile.hpp"
 
 namespace vibra {

@@ -1,0 +1,62 @@
+"""vibra.lecture: a storyboard's shots in one Video with chapters and
+subtitles; vibra.render's slow= and pause= pace a render as the flags do."""
+
+import json
+import os
+import subprocess
+
+import pytest
+
+import vibra
+
+STORY = """title = "Springs"
+size = "320x180"
+fps = 10
+[[shot]]
+card = "Springs"
+seconds = 1
+[[shot]]
+scene = "spring"
+set = { T = 2, dt = 0.05 }
+seconds = 3
+pause = [{ at = 1, seconds = 1 }]
+notes = ["0.5-1.5: held here"]
+"""
+
+
+def probe(path, entries):
+    out = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-show_entries", entries, "-of", "json",
+                          os.fspath(path)], capture_output=True, text=True, check=True).stdout
+    return json.loads(out)
+
+
+def test_a_lecture_is_a_video_with_chapters_and_subtitles(in_tmp):
+    (in_tmp / "story.toml").write_text(STORY)
+    video = vibra.lecture("story.toml", output="talk.mp4")
+    assert isinstance(video, vibra.Video) and os.fspath(video) == "talk.mp4"
+    info = probe(video, "chapter=start_time,end_time:chapter_tags=title:stream=codec_name,nb_read_frames")
+    assert [c["tags"]["title"] for c in info["chapters"]] == ["Springs", "spring"]
+    assert [float(c["end_time"]) for c in info["chapters"]] == [1.0, 4.1]
+    assert [s["codec_name"] for s in info["streams"]][:2] == ["h264", "mov_text"]
+    assert int(info["streams"][0]["nb_read_frames"]) == 41
+    assert "00:00:01.500 --> 00:00:03.500\nheld here" in (in_tmp / "talk.vtt").read_text()
+    one = vibra.lecture("story.toml", output="two.webm", shot=2)
+    assert int(probe(one, "stream=nb_read_frames")["streams"][0]["nb_read_frames"]) == 31
+
+
+def test_a_bad_storyboard_raises_with_the_shot_and_key(in_tmp):
+    (in_tmp / "story.toml").write_text(STORY.replace("seconds = 3", "secnds = 3"))
+    with pytest.raises(ValueError, match=r"shot 2, secnds: unknown key 'secnds'"):
+        vibra.lecture("story.toml", output="talk.mp4")
+    assert not (in_tmp / "talk.mp4").exists() and not (in_tmp / "talk.vtt").exists()
+
+
+def test_slow_and_pause_pace_a_render(in_tmp):
+    # T = 4 at speed 1 and 10 fps: 41 frames; 1-2 four times slower adds 30, the pause 10.
+    video = vibra.render("spring", out="paced.mp4", T=4, dt=0.05, speed=1, fps=10, size=(320, 180),
+                         slow=(1, 2, 4), pause=["3:1"])
+    assert int(probe(video, "stream=nb_read_frames")["streams"][0]["nb_read_frames"]) == 81
+    with pytest.raises(ValueError, match="overlaps"):
+        vibra.render("spring", out="bad.mp4", slow=["2-4:4", "3-5:2"])
+    with pytest.raises(ValueError, match="is not"):
+        vibra.render("spring", out="bad.mp4", pause=(1, 2, 3))

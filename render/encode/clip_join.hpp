@@ -1,0 +1,30 @@
+#pragma once
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "render/encode/subtitle_cue.hpp"
+
+namespace vibra::render {
+
+/// A chapter of a joined video: frames [first_frame, end_frame).
+struct VideoChapter {
+  std::string title;
+  long long first_frame = 0, end_frame = 0;
+};
+
+/// Joins `clips` (videos of one size, frame rate and codec setup, each
+/// starting at frame 0, as vibra renders them) one after the other into
+/// `output` (.mp4 or .webm) by copying their packets, without decoding.
+/// Adds `chapters` (MP4 and Matroska chapters, as ffprobe -show_chapters
+/// lists them) and, when there are cues, a soft subtitle track: mov_text in
+/// MP4, WebVTT in WebM. `fps` is the clips' frame rate; the frames of each
+/// clip must be those its chapter names. Throws OutputError naming the clip
+/// or the output; the output is written under a temporary name and renamed
+/// when complete.
+void join_clips(const std::vector<std::filesystem::path>& clips, const std::filesystem::path& output, int fps,
+                const std::vector<VideoChapter>& chapters, const std::vector<SubtitleCue>& cues,
+                const std::map<std::string, std::string>& metadata);
+
+}  // namespace vibra::render

@@ -1,0 +1,339 @@
+#include "scenes/lecture/lecture_job.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/quoted_value.hpp"
+#include "render/draw/canvas.hpp"
+#include "render/draw/text.hpp"
+#include "render/encode/clip_join.hpp"
+#include "render/encode/subtitle_cue.hpp"
+#include "render/encode/video_concat.hpp"
+#include "render/output/output_error.hpp"
+#include "render/output/output_path.hpp"
+#include "render/output/progress.hpp"
+#include "render/output/stop_signal.hpp"
+#include "render/output/temporary_file.hpp"
+#include "render/page/html_page.hpp"
+#include "scenes/lecture/card_text.hpp"
+#include "scenes/lecture/storyboard.hpp"
+#include "scenes/lecture/title_card.hpp"
+#include "scenes/render_job.hpp"
+#include "scenes/scene_factory.hpp"
+#include "scenes/time_map.hpp"
+
+namespace fs = std::filesystem;
+
+namespace vibra::scenes {
+
+namespace {
+/// A shot made ready to render: its scene with the speed its seconds ask
+/// for, its frames, and its subtitles in seconds from the shot's start.
+struct PlannedShot {
+  const Shot* shot = nullptr;
+  SceneConfig scene;
+  long long frames = 0;
+  std::vector<render::SubtitleCue> cues;
+  std::string tag;  ///< the shot file's description: which lecture shot, which render
+};
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+/// FNV-1a of what shapes a shot's frames and coding, so that a shot file of
+/// another storyboard, shot or video setting is never taken for this one.
+std::string shot_tag(const Storyboard& board, const Shot& shot, const render::VideoSettings& video) {
+  std::string text = std::to_string(board.width) + "x" + std::to_string(board.height) + "@" +
+                     std::to_string(board.fps) + "\n" + board.title + "\n" + shot.source + "\n" + video.codec + "\n" +
+                     video.quality + "\n" + std::to_string(video.crf) + "\n" + video.preset;
+  std::error_code ec;
+  if (!shot.is_card && fs::is_regular_file(shot.scene.name + ".toml", ec)) text += file_text(shot.scene.name + ".toml");
+  std::uint64_t hash = 14695981039346656037ull;
+  for (unsigned char byte : text) hash = (hash ^ byte) * 1099511628211ull;
+  char out[80];
+  std::snprintf(out, sizeof out, "vibra lecture shot %d: render %016llx", shot.number,
+                static_cast<unsigned long long>(hash));
+  return out;
+}
+
+PlannedShot plan_card(const Storyboard& board, const Shot& shot) {
+  PlannedShot p;
+  p.shot = &shot;
+  p.frames = std::max(1LL, std::llround(*shot.seconds * board.fps));
+  std::string text = card_plain_text(shot.card, false);
+  const std::string equation = card_plain_text(shot.equation, true);
+  if (!equation.empty()) text += (text.empty() ? "" : "\n") + equation;
+  p.cues.push_back({0, double(p.frames) / board.fps, text});
+  return p;
+}
+
+PlannedShot plan_scene(const Storyboard& board, const Shot& shot) {
+  PlannedShot p;
+  p.shot = &shot;
+  p.scene = shot.scene;
+  const TimeMesh mesh = build_scene_runs(p.scene)->info().mesh;  // reads the run's files (a road)
+  if (!std::isfinite(mesh.T)) throw UsageError("a shot needs a finite end time: give T or periods");
+  if (shot.seconds) p.scene.speed = p.scene.pacing.rate_for_length(mesh.T, *shot.seconds);
+  const FrameClock clock = frame_clock_of(p.scene, mesh);
+  p.frames = clock.frames();
+  const double end_time = p.scene.frame_per_step ? double(mesh.steps) * mesh.dt : mesh.T;
+  const TimeMap map(end_time, video_rate_of(p.scene, mesh), p.scene.pacing);
+  const double length = double(p.frames) / board.fps;
+  for (const ShotNote& note : shot.notes) {
+    if (note.to > end_time * (1 + 1e-12)) {
+      char text[160];
+      std::snprintf(text, sizeof text, "note %g-%g reaches past the run's end T = %g: end it at most there",
+                    note.from, note.to, end_time);
+      throw UsageError(text);
+    }
+    // Shown while simulated time is in [from, to): a pause at `to` belongs to the next note, so notes that
+    // meet never overlap (MP4's subtitles cannot).
+    const double end = note.to >= end_time ? length : map.first_video_time(note.to);
+    p.cues.push_back({map.first_video_time(note.from), std::min(length, end), note.text});
+  }
+  return p;
+}
+
+/// Every shot planned, or the first problem as one line naming the file and shot.
+std::vector<PlannedShot> plan_lecture(const Storyboard& board, const render::VideoSettings& video) {
+  std::vector<PlannedShot> plan;
+  for (const Shot& shot : board.shots) {
+    try {
+      plan.push_back(shot.is_card ? plan_card(board, shot) : plan_scene(board, shot));
+    } catch (const UsageError& e) {
+      const std::string message = e.what();
+      if (message.rfind(board.file, 0) == 0) throw;
+      throw UsageError(board.file + ": shot " + std::to_string(shot.number) + ": " + message);
+    }
+    plan.back().tag = shot_tag(board, shot, video);
+  }
+  return plan;
+}
+
+/// The text of a container's "description" ("" when unreadable): a shot file's tag.
+std::string description_of(const fs::path& video) { return render::read_video_description(video); }
+
+/// "lecture.mp4" -> "lecture.shot-02.mp4" (the number padded to the shot count's width).
+fs::path shot_file(const std::string& output, int number, std::size_t shots) {
+  const fs::path out(output);
+  const int width = int(std::to_string(shots).size());
+  char digits[16];
+  std::snprintf(digits, sizeof digits, "%0*d", width, number);
+  return out.parent_path() / (out.stem().string() + ".shot-" + digits + out.extension().string());
+}
+
+/// Draws a card once and encodes it `frames` times into each of `files`.
+void render_card(const Storyboard& board, const PlannedShot& p, const std::vector<fs::path>& files,
+                 const render::VideoSettings& video, const std::string& label, bool quiet) {
+  render::Canvas canvas = render::Canvas::image(board.width, board.height);
+  draw_title_card(canvas, {board.title, p.shot->card, p.shot->equation});
+  canvas.flush();
+  std::vector<std::unique_ptr<render::FrameSink>> sinks;
+  for (const fs::path& file : files)
+    sinks.push_back(render::make_frame_sink(file.string(), board.width, board.height, board.fps, p.frames, video,
+                                            {{"description", p.tag}}));
+  std::unique_ptr<render::FrameSink> sink = sinks.size() == 1 ? std::move(sinks.front()) : render::make_tee_sink(std::move(sinks));
+  render::Progress progress(label, p.frames, quiet);
+  const render::Damage unchanged(board.width, board.height);
+  for (long long k = 0; k < p.frames; ++k) {
+    render::throw_if_stop_requested();
+    sink->write(canvas.data(), canvas.stride(), k == 0 ? nullptr : &unchanged);  // the same picture again
+    progress.update(k + 1);
+  }
+  sink->finish();
+  progress.finish(p.frames);
+}
+
+/// Renders one shot into `files` (one, or MP4 and WebM for a page).
+void render_shot(const Storyboard& board, const PlannedShot& p, const std::vector<fs::path>& files,
+                 const LectureRequest& r) {
+  const std::string label = "shot " + std::to_string(p.shot->number) + "/" + std::to_string(board.shots.size()) +
+                            " " + one_line_message(p.shot->title, 40);
+  if (p.shot->is_card) return render_card(board, p, files, r.video, label, r.quiet);
+  RenderRequest request;
+  request.scene = p.scene;
+  request.output = files.front().string();
+  for (std::size_t i = 1; i < files.size(); ++i) request.also_outputs.push_back(files[i].string());
+  request.video = r.video;
+  request.quiet = r.quiet;
+  request.progress_label = label;
+  request.description = p.tag;
+  request.report_written = false;
+  request.command_line = r.command_line;
+  run_render(request);
+}
+
+/// The subtitles file beside a video may be replaced when vibra wrote it, or with --force.
+void check_subtitles_file(const fs::path& vtt, bool force) {
+  render::resolve_output_file(vtt);
+  std::error_code ec;
+  if (force || !fs::exists(vtt, ec)) return;
+  const std::string head = file_text(vtt.string()).substr(0, 64);
+  if (head.rfind(std::string("WEBVTT\n\n") + render::kWebVttMark, 0) != 0)
+    throw render::OutputError("'" + vtt.string() + "' exists and was not written by vibra lecture: move it away, or "
+                              "add --force to replace it");
+}
+
+/// The chapters and cues of the shots in `plan`, one after the other.
+void lay_out(const std::vector<const PlannedShot*>& shots, double fps, std::vector<render::VideoChapter>& chapters,
+             std::vector<render::SubtitleCue>& cues) {
+  long long frame = 0;
+  for (const PlannedShot* p : shots) {
+    chapters.push_back({p->shot->title, frame, frame + p->frames});
+    const double start = double(frame) / fps;
+    for (const render::SubtitleCue& c : p->cues)
+      if (c.end > c.start) cues.push_back({start + c.start, start + c.end, c.text});
+    frame += p->frames;
+  }
+}
+}  // namespace
+
+void run_lecture(const LectureRequest& r) {
+  const std::string ext = lower_extension(r.output);
+  if (ext != ".mp4" && ext != ".webm" && ext != ".html")
+    throw UsageError("-o " + quoted_value(r.output, 80) + ": a lecture is written as .mp4, .webm or .html (a page)");
+  const bool page = ext == ".html";
+  if (r.segment && page)
+    throw UsageError("--segment renders shot files to join later: give -o LECTURE.mp4 or .webm, not a page");
+  if (r.segment && r.shot) throw UsageError("--shot and --segment both choose shots: give one of them");
+  if (r.video.transparent) throw UsageError("a lecture cannot be transparent: drop --transparent");
+  const render::OutputTarget target = render::resolve_output(r.output, render::kNeedsAFile);
+  render::refuse_input_as_output(target.file);
+  render::check_output_settings(page ? "x.mp4" : r.output, false, r.video);
+
+  Storyboard board = load_storyboard(r.storyboard);
+  if (!r.size.empty()) {
+    parse_size(r.size, board.width, board.height);
+    for (Shot& shot : board.shots) shot.scene.width = board.width, shot.scene.height = board.height;
+  }
+  if (r.shot && (*r.shot < 1 || *r.shot > int(board.shots.size())))
+    throw UsageError("--shot " + std::to_string(*r.shot) + ": " + r.storyboard + " has shots 1.." +
+                     std::to_string(board.shots.size()));
+  render::start_loading_fonts();
+  const std::vector<PlannedShot> plan = plan_lecture(board, r.video);  // every shot checked before any work
+  std::vector<const PlannedShot*> chosen;
+  for (const PlannedShot& p : plan)
+    if (r.shot ? p.shot->number == *r.shot
+               : !r.segment || (p.shot->number - 1) % r.segment->count == r.segment->index)
+      chosen.push_back(&p);
+
+  if (r.segment) {  // shot files for a cluster, kept beside the output
+    if (chosen.empty())
+      throw UsageError("--segment " + std::to_string(r.segment->index) + "/" + std::to_string(r.segment->count) +
+                       " has no shots: the storyboard has " + std::to_string(plan.size()) + ", so use at most that many");
+    for (const PlannedShot* p : chosen) {
+      const fs::path file = shot_file(r.output, p->shot->number, plan.size());
+      render::resolve_output_file(file);
+      std::error_code ec;
+      if (!r.force && fs::exists(file, ec) && description_of(file).rfind("vibra lecture shot ", 0) != 0)
+        throw render::OutputError("'" + file.string() + "' exists and was not written by vibra lecture: move it "
+                                  "away, or add --force to overwrite it");
+    }
+    for (const PlannedShot* p : chosen) {
+      const fs::path file = shot_file(r.output, p->shot->number, plan.size());
+      if (description_of(file) == p->tag) continue;  // already rendered
+      render_shot(board, *p, {file}, r);
+    }
+    if (!r.quiet)
+      std::fprintf(stderr, "vibra: wrote %zu shot file(s) beside %s: join them with vibra lecture %s -o %s\n",
+                   chosen.size(), r.output.c_str(), r.storyboard.c_str(), r.output.c_str());
+    return;
+  }
+
+  // Every path the run writes, checked before any work.
+  const fs::path final_video = target.file;
+  const std::string stem = fs::path(r.output).stem().string();
+  const fs::path companions = page ? companion_folder(r.output) : fs::path();
+  const fs::path vtt = page ? fs::path() : final_video.parent_path() / (stem + ".vtt");
+  if (page) check_companion_folder(companions, stem, r.force);
+  else check_subtitles_file(vtt, r.force);
+
+  std::vector<render::VideoChapter> chapters;
+  std::vector<render::SubtitleCue> cues;
+  lay_out(chosen, board.fps, chapters, cues);
+
+  // The shots: reused from a cluster's shot files where complete, else rendered into a temporary folder.
+  render::TemporaryDirectory clips(final_video.parent_path(), stem + "_shots");
+  const std::vector<std::string> kinds = page ? std::vector<std::string>{".mp4", ".webm"} : std::vector<std::string>{ext};
+  std::vector<std::vector<fs::path>> clip_files(kinds.size());
+  for (const PlannedShot* p : chosen) {
+    const fs::path kept = shot_file(r.output, p->shot->number, plan.size());
+    if (!page && description_of(kept) == p->tag) {
+      clip_files[0].push_back(kept);
+      continue;
+    }
+    std::vector<fs::path> files;
+    for (std::size_t i = 0; i < kinds.size(); ++i)
+      files.push_back(clips.path() / ("shot-" + std::to_string(p->shot->number) + kinds[i]));
+    render_shot(board, *p, files, r);
+    for (std::size_t i = 0; i < kinds.size(); ++i) clip_files[i].push_back(files[i]);
+  }
+
+  const std::map<std::string, std::string> metadata = {{"title", board.title},
+                                                       {"comment", "vibra lecture " + r.storyboard}};
+  long long frames = 0;
+  for (const auto& c : chapters) frames = c.end_frame;
+  const double seconds = double(frames) / board.fps;
+  const int fps = int(board.fps);
+  if (!page) {
+    render::TemporaryFile subtitles(vtt);
+    render::write_text(subtitles, render::web_vtt(cues));
+    render::join_clips(clip_files[0], final_video, fps, chapters, cues, metadata);
+    subtitles.commit();
+    if (!r.quiet)
+      std::fprintf(stderr, "vibra: wrote %s (%zu shot%s, %lld frames, %.1f s, %zu chapters) and %s\n",
+                   one_line_message(target.shown(), 4096).c_str(), chosen.size(), chosen.size() == 1 ? "" : "s",
+                   frames, seconds, chapters.size(), one_line_message(vtt.string(), 4096).c_str());
+    return;
+  }
+  render::TemporaryDirectory staged(companions.parent_path(), companions.filename().string());
+  render::TemporaryFile page_file(final_video);
+  const std::string folder = companions.filename().string() + "/";
+  render::write_text_file(staged.path() / (stem + ".vtt"), render::web_vtt(cues));
+  for (std::size_t i = 0; i < kinds.size(); ++i)
+    render::join_clips(clip_files[i], staged.path() / (stem + kinds[i]), fps, chapters, cues, metadata);
+  render::LecturePage lecture;
+  lecture.title = board.title;
+  render::PageMedia& media = lecture.media;
+  media.kind = render::PageMedia::Kind::video;
+  media.width = board.width + (board.width & 1), media.height = board.height + (board.height & 1);
+  media.frames = frames;
+  media.fps = board.fps;
+  media.frame_interval = 1 / board.fps;
+  media.videos = {folder + stem + ".mp4", folder + stem + ".webm"};
+  media.subtitles = folder + stem + ".vtt";
+  for (const auto& c : chapters) lecture.chapters.push_back({c.title, double(c.first_frame) / board.fps});
+  lecture.downloads = {{"MP4 video", folder + stem + ".mp4"}, {"WebM video", folder + stem + ".webm"},
+                       {"Subtitles (WebVTT)", folder + stem + ".vtt"}};
+  lecture.facts = {{"storyboard", r.storyboard},
+                   {"shots", std::to_string(chosen.size())},
+                   {"frames", std::to_string(frames) + " at " + std::to_string(fps) + " fps (" +
+                                  std::to_string(int(std::lround(seconds))) + " s of video)"},
+                   {"size", std::to_string(board.width) + "x" + std::to_string(board.height)}};
+  lecture.command_line = r.command_line;
+  render::write_text(page_file, render::lecture_page_html(lecture));
+  staged.replace(companions);
+  page_file.commit();
+  if (!r.quiet)
+    std::fprintf(stderr, "vibra: wrote %s and %s (%zu chapters, %lld frames, %.1f s)\n",
+                 one_line_message(target.shown(), 4096).c_str(), one_line_message(companions.string(), 4096).c_str(),
+                 chapters.size(), frames, seconds);
+}
+
+}  // namespace vibra::scenes

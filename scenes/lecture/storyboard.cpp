@@ -1,0 +1,260 @@
+#include "scenes/lecture/storyboard.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/input_files.hpp"
+#include "core/parameters.hpp"
+#include "core/quoted_value.hpp"
+#include "scenes/scene_table.hpp"
+
+namespace fs = std::filesystem;
+
+namespace vibra::scenes {
+
+namespace {
+constexpr double kLongestShot = 3600;  ///< seconds of video
+constexpr std::size_t kMostShots = 1000;
+
+const std::vector<std::string> kTopKeys = {"title", "size", "fps", "shot"};
+const std::vector<std::string> kCardKeys = {"card", "equation", "seconds", "title"};
+const std::vector<std::string> kShotKeys = {"scene", "set", "seconds", "notes", "title"};
+
+/// Where a value sits: "story.toml:12: shot 2, key" (line 0: unknown).
+struct Place {
+  const std::string& file;
+  int shot;
+  std::string key;
+  int line;
+  std::string text() const {
+    std::string out = file + (line > 0 ? ":" + std::to_string(line) : "");
+    if (shot > 0) out += ": shot " + std::to_string(shot);
+    return out + (key.empty() ? "" : (shot > 0 ? ", " : ": ") + key);
+  }
+  [[noreturn]] void refuse(const std::string& problem) const { throw UsageError(text() + ": " + problem); }
+};
+
+std::string list_of(const std::vector<std::string>& words) {
+  std::string out;
+  for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+std::string text_value(const toml::node& node, const Place& at) {
+  if (!node.is_string()) at.refuse("must be a string, e.g. " + at.key + " = \"...\"");
+  std::string text = *node.value<std::string>();
+  if (text.find('\0') != std::string::npos) at.refuse("must not hold a NUL character");
+  return text;
+}
+
+double seconds_value(const toml::node& node, const Place& at) {
+  const auto value = node.value<double>();
+  if (!(node.is_integer() || node.is_floating_point()) || !value || !(*value > 0) || *value > kLongestShot)
+    at.refuse("must be a number of seconds above 0 and at most 3600, e.g. seconds = 6");
+  return *value;
+}
+
+/// A key the shot may not have: names the keys it may.
+[[noreturn]] void refuse_key(const Place& at, const std::vector<std::string>& allowed, const std::string& kind) {
+  std::vector<std::string> candidates = allowed;
+  const std::string near = closest_match(at.key, candidates);
+  at.refuse("is not a key of " + kind + (near.empty() ? "" : " (did you mean '" + near + "'?)") + ": it takes " +
+            list_of(allowed));
+}
+
+std::string source_text(const toml::table& shot) {
+  std::ostringstream out;
+  out << shot;
+  return out.str();
+}
+
+/// The first line of a card's text, for its chapter title.
+std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+Shot card_shot(const toml::table& table, const std::string& file, int number) {
+  Shot shot;
+  shot.number = number;
+  shot.is_card = true;
+  for (auto&& [key, node] : table) {
+    const Place at{file, number, std::string(key.str()), int(node.source().begin.line)};
+    if (at.key == "card") shot.card = text_value(node, at);
+    else if (at.key == "equation") shot.equation = text_value(node, at);
+    else if (at.key == "title") shot.title = text_value(node, at);
+    else if (at.key == "seconds") shot.seconds = seconds_value(node, at);
+    else refuse_key(at, kCardKeys, "a title card (a scene key belongs to a shot with scene = ...)");
+  }
+  if (shot.card.empty() && shot.equation.empty())
+    Place{file, number, "card", 0}.refuse("is empty: give the card's text, e.g. card = \"The damped pendulum\"");
+  if (shot.title.empty()) shot.title = first_line(shot.card.empty() ? shot.equation : shot.card);
+  if (!shot.seconds) shot.seconds = 3;
+  return shot;
+}
+
+/// The scene a shot names: a built-in scene, a model, or a scene file
+/// (relative to the storyboard's folder when it is there).
+SceneConfig shot_scene(const std::string& name, const std::string& folder, const Place& at) {
+  std::string path = name;
+  std::error_code ec;
+  if (!folder.empty() && fs::path(name).is_relative() && fs::is_regular_file(fs::path(folder) / name, ec))
+    path = (fs::path(folder) / name).string();
+  try {
+    return load_scene(path);
+  } catch (const UsageError& e) {
+    at.refuse(e.what());
+  }
+}
+
+Shot scene_shot(const toml::table& table, const std::string& file, const std::string& folder, int number) {
+  Shot shot;
+  shot.number = number;
+  const toml::node* scene = table.get("scene");
+  const Place scene_at{file, number, "scene", scene ? int(scene->source().begin.line) : 0};
+  if (!scene)
+    scene_at.refuse("is missing: a shot is a card (card = \"...\") or a scene (scene = \"pendulum\", or a scene file)");
+  shot.scene = shot_scene(text_value(*scene, scene_at), folder, scene_at);
+  const std::string where = "shot " + std::to_string(number);
+  std::vector<const toml::table*> model_keys;
+  for (auto&& [key, node] : table) {
+    const Place at{file, number, std::string(key.str()), int(node.source().begin.line)};
+    if (at.key == "scene") continue;
+    if (at.key == "title") shot.title = text_value(node, at);
+    else if (at.key == "seconds") shot.seconds = seconds_value(node, at);
+    else if (at.key == "set") {
+      if (!node.is_table()) at.refuse("must be a table of keys, e.g. set = { Theta = 40, alpha = 0.8 }");
+      model_keys.push_back(node.as_table());
+    } else if (at.key == "notes") {
+      const toml::array* notes = node.as_array();
+      if (!notes) at.refuse("must be a list of \"T0-T1: text\", e.g. notes = [\"2-4: drag takes energy out\"]");
+      for (const toml::node& note : *notes) {
+        try {
+          shot.notes.push_back(parse_shot_note(text_value(note, at)));
+        } catch (const UsageError& e) {
+          at.refuse(e.what());
+        }
+      }
+    } else if (at.key == "size" || at.key == "fps") {
+      at.refuse("is the lecture's, not a shot's: set it once at the top of the file (every shot has one size and fps)");
+    } else if (at.key == "card" || at.key == "equation") {
+      at.refuse("belongs to a title card, not a scene shot: put it in a shot of its own");
+    }
+  }
+  const std::vector<Setting> settings = table_settings(table, file, where, kShotKeys);  // the scene keys
+  for (const Setting& s : settings)  // the model first: the other keys are checked against it
+    if (s.key == "model") apply_setting(shot.scene, s);
+  for (const Setting& s : settings)
+    if (s.key != "model") apply_setting(shot.scene, s);
+  for (const toml::table* set : model_keys)
+    for (const Setting& s : table_settings(*set, file, where)) apply_setting(shot.scene, s);
+  if (shot.seconds && table.get("speed"))
+    Place{file, number, "seconds", 0}.refuse("and speed both set the shot's pace: give one of them");
+  if (shot.seconds && shot.scene.frame_per_step)
+    Place{file, number, "seconds", 0}.refuse("and frame_per_step both set the shot's pace: give one of them");
+  if (shot.title.empty()) shot.title = shot.scene.name + (shot.scene.compare.empty() ? "" : ": " + shot.scene.compare);
+  return shot;
+}
+}  // namespace
+
+ShotNote parse_shot_note(const std::string& text) {
+  const auto colon = text.find(':');
+  const std::string range = text.substr(0, colon);
+  const auto dash = range.find('-', 1);
+  auto number = [](const std::string& s) {
+    std::string t = s;
+    while (!t.empty() && t.back() == ' ') t.pop_back();
+    while (!t.empty() && t.front() == ' ') t.erase(0, 1);
+    double x = NAN;
+    const auto [at, error] = std::from_chars(t.data(), t.data() + t.size(), x);
+    return t.empty() || error != std::errc() || at != t.data() + t.size() ? NAN : x;
+  };
+  ShotNote note;
+  note.from = dash == std::string::npos ? NAN : number(range.substr(0, dash));
+  note.to = dash == std::string::npos ? NAN : number(range.substr(dash + 1));
+  std::string body = colon == std::string::npos ? "" : text.substr(colon + 1);
+  while (!body.empty() && body.front() == ' ') body.erase(0, 1);
+  if (colon == std::string::npos || !std::isfinite(note.from) || !std::isfinite(note.to) || body.empty())
+    throw UsageError("note '" + quoted_value(text) + "' is not \"T0-T1: text\": write e.g. \"2-4: drag takes energy out\"");
+  if (note.from < 0 || note.to <= note.from)
+    throw UsageError("note '" + quoted_value(text) + "': its times must run forward from t >= 0, e.g. \"2-4: ...\"");
+  note.text = body;
+  return note;
+}
+
+Storyboard parse_storyboard(const std::string& text, const std::string& file, const std::string& folder) {
+  if (text.find('\0') != std::string::npos) throw UsageError(file + ": is a binary file, not a TOML storyboard");
+  toml::table table;
+  try {
+    table = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    throw UsageError(file + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()) +
+                     " (a storyboard is TOML: title = \"...\", then [[shot]] tables)");
+  }
+  Storyboard board;
+  board.file = file;
+  board.title = fs::path(file).stem().string();
+  for (auto&& [key, node] : table) {
+    const Place at{file, 0, std::string(key.str()), int(node.source().begin.line)};
+    if (at.key == "title") {
+      board.title = text_value(node, at);
+    } else if (at.key == "size") {
+      try {
+        parse_size(text_value(node, at), board.width, board.height);
+      } catch (const UsageError& e) {
+        at.refuse(e.what());
+      }
+    } else if (at.key == "fps") {
+      const auto fps = node.value<double>();
+      if (!fps || !(*fps >= 1 && *fps <= 240) || *fps != std::floor(*fps))
+        at.refuse("must be a whole number of frames per second, 1..240, e.g. fps = 30");
+      board.fps = *fps;
+    } else if (at.key != "shot") {
+      refuse_key(at, kTopKeys, "a storyboard");
+    }
+  }
+  const toml::node* shots = table.get("shot");
+  const toml::array* list = shots ? shots->as_array() : nullptr;
+  if (!list || list->empty())
+    Place{file, 0, "shot", 0}.refuse("no shots: add [[shot]] tables, e.g. [[shot]] card = \"Title\", or scene = \"pendulum\"");
+  if (list->size() > kMostShots) Place{file, 0, "shot", 0}.refuse("more than 1000 shots: split the lecture");
+  int number = 0;
+  for (const toml::node& node : *list) {
+    ++number;
+    const toml::table* shot = node.as_table();
+    if (!shot) Place{file, number, "", int(node.source().begin.line)}.refuse("is not a table: write [[shot]] and its keys");
+    Shot s = shot->contains("card") || shot->contains("equation") ? card_shot(*shot, file, number)
+                                                                   : scene_shot(*shot, file, folder, number);
+    s.scene.width = board.width, s.scene.height = board.height, s.scene.fps = board.fps;
+    s.source = source_text(*shot);
+    board.shots.push_back(std::move(s));
+  }
+  return board;
+}
+
+Storyboard load_storyboard(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw UsageError("no storyboard '" + quoted_value(path, 80) + "': give a TOML file of [[shot]] tables "
+                     "(docs/lecture.md has an example)");
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    const int error = errno ? errno : EACCES;
+    throw UsageError("cannot read the storyboard '" + quoted_value(path, 80) + "': " + std::strerror(error));
+  }
+  note_input_file(path, "the storyboard");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw UsageError("cannot read the storyboard '" + quoted_value(path, 80) + "': " + std::strerror(errno));
+  return parse_storyboard(buffer.str(), path, fs::path(path).parent_path().string());
+}
+
+}  // namespace vibra::scenes

@@ -1,0 +1,194 @@
+// What makes a frame legible on a projector, checked from the kit's recorded
+// outlines: tick labels that keep apart on small panels, legends clear of
+// the data, a force-scale key per diagram, and a pendulum support that its
+// own swing does not cut.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "render/draw/canvas.hpp"
+#include "render/labels/drawing_record.hpp"
+#include "render/labels/outline.hpp"
+#include "render/plot/plot_panel.hpp"
+#include "scenes/diagrams/force_key.hpp"
+#include "scenes/scene_config.hpp"
+#include "scenes/scene_factory.hpp"
+
+using vibra::render::Canvas;
+using vibra::render::DrawingRecord;
+using vibra::render::OutlineKind;
+using vibra::render::OutlineShape;
+using vibra::render::PixelRect;
+
+namespace {
+
+bool boxes_overlap(const PixelRect& a, const PixelRect& b) {
+  return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+}
+
+/// The text boxes a panel's axes write, as recorded.
+std::vector<PixelRect> axis_text_boxes(int width, int height, const PixelRect& outer, double y0, double y1) {
+  Canvas canvas = Canvas::image(width, height);
+  DrawingRecord record;
+  canvas.record_into(&record);
+  vibra::render::PlotPanel panel(outer, canvas.scale());
+  panel.set_x_range(0, 18.85);
+  panel.set_y_range(y0, y1);
+  panel.draw_axes(canvas, "<i>u</i>  displacement", "<i>t</i>");
+  canvas.record_into(nullptr);
+  std::vector<PixelRect> boxes;
+  for (const OutlineShape& shape : record.outline.shapes())
+    if (shape.kind == OutlineKind::text) boxes.push_back(shape.bounds);
+  return boxes;
+}
+
+/// Draws a scene's run and returns the outline of the frame at `moment`
+/// (0 = first step, 1 = last), the static layer included.
+DrawingRecord frame_at(const std::string& scene_name, const std::vector<vibra::scenes::Setting>& settings,
+                       double moment) {
+  vibra::scenes::SceneConfig config = vibra::scenes::load_scene(scene_name);
+  for (const auto& s : settings) vibra::scenes::apply_setting(config, s);
+  auto pre_pass = vibra::scenes::build_scene_runs(config);
+  auto scene = vibra::scenes::make_scene_for(config, *pre_pass, "a legibility test");
+  std::vector<double> row(pre_pass->width());
+  long long steps = 0;
+  do {
+    pre_pass->row(row);
+    scene->record(row);
+    ++steps;
+  } while (pre_pass->advance());
+  const long long wanted = std::llround(moment * (steps - 1));
+  Canvas canvas = Canvas::image(config.width, config.height);
+  auto runs = vibra::scenes::build_scene_runs(config);
+  for (long long step = 0;; ++step) {
+    runs->row(row);
+    scene->observe(row);
+    if (step == wanted || !runs->advance()) break;
+  }
+  scene->draw(canvas, row);
+  REQUIRE(scene->last_layout());
+  return *scene->last_layout();
+}
+
+PixelRect bounds_of(const DrawingRecord& frame, OutlineKind kind) {
+  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  for (const OutlineShape& s : frame.outline.shapes())
+    if (s.kind == kind) {
+      x0 = std::min(x0, s.bounds.x), y0 = std::min(y0, s.bounds.y);
+      x1 = std::max(x1, s.bounds.x + s.bounds.w), y1 = std::max(y1, s.bounds.y + s.bounds.h);
+    }
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+}  // namespace
+
+TEST_CASE("tick labels never touch, down to a 320x180 frame", "[legibility][panels]") {
+  struct Case {
+    int width, height;
+    PixelRect outer;
+    double y0, y1;
+  };
+  // A panel of the default layout at each size, and a tall one; ranges of
+  // a unit amplitude and of an awkward span.
+  const std::vector<Case> cases = {{320, 180, {150, 7, 165, 80}, -1, 1},      {320, 180, {150, 7, 165, 80}, -0.37, 2.9},
+                                   {640, 360, {300, 10, 330, 170}, -1, 1},    {1280, 720, {590, 10, 680, 350}, -1, 1},
+                                   {1920, 1080, {880, 15, 1030, 520}, -3e-4, 7e-4}};
+  for (const Case& c : cases) {
+    const std::vector<PixelRect> boxes = axis_text_boxes(c.width, c.height, c.outer, c.y0, c.y1);
+    INFO(c.width << "x" << c.height << ", y from " << c.y0 << " to " << c.y1);
+    // The y label, the t label and at least two ticks on each axis.
+    CHECK(boxes.size() >= 6);
+    for (size_t i = 0; i < boxes.size(); ++i)
+      for (size_t j = i + 1; j < boxes.size(); ++j) {
+        INFO("text boxes " << i << " and " << j);
+        CHECK_FALSE(boxes_overlap(boxes[i], boxes[j]));
+      }
+  }
+}
+
+TEST_CASE("the force key's arrow stands for a round force and is long enough to read", "[legibility][forces]") {
+  for (double world_per_force : {0.6, 1e-4, 3.3, 0.0123, 250.0})
+    for (double zoom : {37.0, 180.0, 411.0})
+      for (double scale : {0.7, 1.0, 1.5}) {
+        const vibra::scenes::ForceKey key{world_per_force, "N", ""};
+        const double f = vibra::scenes::force_key_value(key, zoom, scale);
+        INFO("world per force " << world_per_force << ", zoom " << zoom << ", scale " << scale << ": force " << f);
+        REQUIRE(f > 0);
+        const double mantissa = f / std::pow(10, std::floor(std::log10(f) + 1e-12));
+        CHECK((std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 || std::abs(mantissa - 5) < 1e-9));
+        const double pixels = f * world_per_force * zoom / scale;  // in 720p pixels
+        CHECK(pixels >= 30 - 1e-9);
+        CHECK(pixels <= 75 + 1e-9);
+      }
+  CHECK(vibra::scenes::force_key_value({0, "N", ""}, 100, 1) == 0);
+  CHECK(vibra::scenes::force_key_value({NAN, "N", ""}, 100, 1) == 0);
+}
+
+TEST_CASE("a diagram with force arrows shows its force key, saying what is drawn at another scale",
+          "[legibility][forces]") {
+  auto key_texts = [](const std::string& scene, const std::vector<vibra::scenes::Setting>& settings) {
+    std::vector<std::string> texts;
+    const DrawingRecord frame = frame_at(scene, settings, 0.1);
+    for (const OutlineShape& s : frame.outline.shapes())
+      if (s.kind == OutlineKind::text && s.name.rfind("= ", 0) == 0) texts.push_back(s.name);
+    return texts;
+  };
+  const auto pendulum = key_texts("pendulum", {});
+  REQUIRE(pendulum.size() == 1);
+  CHECK(pendulum[0].find("<i>mg</i>") != std::string::npos);
+  CHECK(pendulum[0].find("<i>D</i> drawn \u00d75") != std::string::npos);
+  // Without drag there is no D arrow, and the key does not mention one.
+  const auto undamped = key_texts("pendulum", {{"alpha", "0", "test"}});
+  REQUIRE(undamped.size() == 1);
+  CHECK(undamped[0].find("<i>D</i>") == std::string::npos);
+  const auto box = key_texts("sliding_box", {});
+  REQUIRE(box.size() == 1);
+  CHECK(box[0].find("not to scale") != std::string::npos);
+  CHECK(key_texts("rlc", {}).empty());  // a circuit has no force arrows
+}
+
+TEST_CASE("a panel's legend sits on its title row, off the data, where the row has room", "[legibility][panels]") {
+  auto legend_boxes = [](int width, int height, const PixelRect& outer) {
+    Canvas canvas = Canvas::image(width, height);
+    vibra::render::PlotPanel panel(outer, canvas.scale());
+    DrawingRecord record;
+    canvas.record_into(&record);
+    panel.draw_legend(canvas, {{"numerical", vibra::render::palette::ink}, {"exact", vibra::render::palette::ink, true}},
+                      "<i>u</i>  displacement");
+    canvas.record_into(nullptr);
+    std::vector<PixelRect> boxes;
+    for (const OutlineShape& s : record.outline.shapes())
+      if (s.kind == OutlineKind::text) boxes.push_back(s.bounds);
+    return std::pair(boxes, panel.area());
+  };
+  for (auto [width, height, outer] : {std::tuple{640, 360, PixelRect{300, 10, 330, 170}},
+                                      std::tuple{1920, 1080, PixelRect{880, 15, 1030, 520}}}) {
+    const auto [boxes, area] = legend_boxes(width, height, outer);
+    INFO(width << "x" << height);
+    REQUIRE(boxes.size() == 2);
+    for (const PixelRect& b : boxes) {
+      CHECK(b.y + b.h <= area.y + 0.5);  // above the plot's frame
+      CHECK(b.x + b.w <= area.x + area.w + 0.5);
+    }
+  }
+  // Too narrow a row: the legend goes inside the plot's top-right corner.
+  const auto [boxes, area] = legend_boxes(320, 180, {150, 7, 100, 80});
+  REQUIRE(boxes.size() == 2);
+  for (const PixelRect& b : boxes) CHECK(b.y >= area.y);
+}
+
+TEST_CASE("a pendulum that swings up past its pivot hangs from a bearing block, not a ceiling", "[legibility][pendulum]") {
+  // The bob's diameter (L/10) measures the support: a ceiling is 0.6 L wide
+  // (six diameters), the block 0.14 L and its outline's stroke.
+  auto support_in_diameters = [](const std::vector<vibra::scenes::Setting>& settings) {
+    const DrawingRecord frame = frame_at("pendulum", settings, 0.05);
+    const PixelRect bob = bounds_of(frame, OutlineKind::body), support = bounds_of(frame, OutlineKind::ground);
+    REQUIRE(bob.w > 0);
+    REQUIRE(support.w > 0);
+    return support.w / bob.w;
+  };
+  CHECK(support_in_diameters({{"Theta", "60", "test"}}) > 4);
+  CHECK(support_in_diameters({{"Theta", "170", "test"}, {"alpha", "0", "test"}}) < 2);
+  CHECK(support_in_diameters({{"Theta", "100", "test"}}) < 2);
+}

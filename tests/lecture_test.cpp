@@ -1,0 +1,191 @@
+// vibra lecture: a storyboard's shots in one video, a chapter per shot,
+// subtitles from cards and notes (a track in the video and OUT.vtt beside
+// it), --shot, --segment per shot, the page, and bad storyboards refused
+// before anything is written.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_support.hpp"
+
+using vibra::test::check_refused;
+using vibra::test::read_file;
+using vibra::test::run_vibra;
+using vibra::test::ScratchDirectory;
+using vibra::test::shell;
+namespace fs = std::filesystem;
+
+namespace {
+void write(const std::string& path, const std::string& text) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  REQUIRE(f);
+  std::fwrite(text.data(), 1, text.size(), f);
+  std::fclose(f);
+}
+
+// 10 fps: the card is 10 frames; the spring's T = 2 at seconds = 3 with a
+// pause of 1 s runs at speed 1: 31 frames; the last card 5: 46 frames, 4.6 s.
+const std::string kStory = R"(title = "Springs"
+size = "320x180"
+fps = 10
+[[shot]]
+card = "Springs"
+equation = "u'' + \\omega^2 u = 0"
+seconds = 1
+[[shot]]
+scene = "spring"
+set = { T = 2, dt = 0.05 }
+seconds = 3
+pause = [{ at = 1, seconds = 1 }]
+notes = ["0.5-1.5: held here"]
+[[shot]]
+card = "The end"
+seconds = 0.5
+)";
+
+const std::string kCues = "WEBVTT\n\nNOTE written by vibra lecture\n\n"
+                          "1\n00:00:00.000 --> 00:00:01.000\nSprings\nu'' + \xcf\x89^2 u = 0\n\n"
+                          "2\n00:00:01.500 --> 00:00:03.500\nheld here\n\n"
+                          "3\n00:00:04.100 --> 00:00:04.600\nThe end\n";
+
+const std::string kChapters = "-show_entries chapter=start_time,end_time:chapter_tags=title";
+
+std::string probe(const std::string& file, const std::string& what) {
+  return shell("ffprobe -v error " + what + " -of default=nw=1 '" + file + "'");
+}
+}  // namespace
+
+TEST_CASE("a lecture: a chapter per shot, subtitles from cards and notes, the frames of every shot",
+          "[lecture][video]") {
+  ScratchDirectory dir;
+  write(dir / "story.toml", kStory);
+  for (const char* ext : {".mp4", ".webm"}) {
+    SECTION(ext) {
+      const std::string out = dir / (std::string("lecture") + ext);
+      const auto r = run_vibra("lecture " + (dir / "story.toml") + " -q -o " + out);
+      INFO(r.err);
+      REQUIRE(r.exit_code == 0);
+      const std::string chapters = probe(out, kChapters);
+      INFO(chapters);
+      // Three chapters: frames [0, 10), [10, 41), [41, 46) at 10 fps.
+      CHECK_THAT(chapters, Catch::Contains("start_time=0.000000\nend_time=1.000000\nTAG:title=Springs"));
+      CHECK_THAT(chapters, Catch::Contains("start_time=1.000000\nend_time=4.100000\nTAG:title=spring"));
+      CHECK_THAT(chapters, Catch::Contains("start_time=4.100000\nend_time=4.600000\nTAG:title=The end"));
+      const std::string streams = probe(out, "-show_entries stream=codec_type,codec_name");
+      CHECK_THAT(streams, Catch::Contains(ext == std::string(".mp4") ? "codec_name=mov_text" : "codec_name=webvtt"));
+      CHECK_THAT(streams, Catch::Contains(ext == std::string(".mp4") ? "codec_name=h264" : "codec_name=vp9"));
+      CHECK(probe(out, "-count_frames -select_streams v:0 -show_entries stream=nb_read_frames") == "nb_read_frames=46\n");
+      // The subtitle track's cues, as ffmpeg reads them back.
+      const std::string srt = shell("ffmpeg -v error -i '" + out + "' -map 0:s:0 -f srt -");
+      CHECK_THAT(srt, Catch::Contains("00:00:01,500 --> 00:00:03,500\nheld here"));
+      CHECK_THAT(srt, Catch::Contains("00:00:04,100 --> 00:00:04,600\nThe end"));
+      CHECK(read_file(dir / "lecture.vtt") == kCues);
+    }
+  }
+}
+
+TEST_CASE("--shot N renders one shot alone, with its chapter and its subtitles", "[lecture][video]") {
+  ScratchDirectory dir;
+  write(dir / "story.toml", kStory);
+  REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " --shot 2 -q -o " + (dir / "two.mp4")).exit_code == 0);
+  CHECK(probe(dir / "two.mp4", "-count_frames -select_streams v:0 -show_entries stream=nb_read_frames") ==
+        "nb_read_frames=31\n");
+  CHECK_THAT(probe(dir / "two.mp4", kChapters), Catch::Contains("end_time=3.100000\nTAG:title=spring"));
+  CHECK_THAT(read_file(dir / "two.vtt"), Catch::Contains("1\n00:00:00.500 --> 00:00:02.500\nheld here\n"));
+  check_refused("lecture " + (dir / "story.toml") + " --shot 4 -o OUT.mp4", "has shots 1..3");
+}
+
+TEST_CASE("--segment renders whole shots into shot files; the join reuses them", "[lecture][video]") {
+  ScratchDirectory dir;
+  write(dir / "story.toml", kStory);
+  const std::string out = dir / "lecture.mp4";
+  REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " --segment 0/2 -q -o " + out).exit_code == 0);
+  REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " --segment 1/2 -q -o " + out).exit_code == 0);
+  for (const char* name : {"lecture.shot-1.mp4", "lecture.shot-2.mp4", "lecture.shot-3.mp4"})
+    CHECK(fs::is_regular_file(dir / name));
+  CHECK_FALSE(fs::exists(out));
+  const std::string shot2 = read_file(dir / "lecture.shot-2.mp4");
+  const auto joined = run_vibra("lecture " + (dir / "story.toml") + " -o " + out);
+  INFO(joined.err);
+  REQUIRE(joined.exit_code == 0);
+  CHECK(joined.err.find("shot 2/3") == std::string::npos);  // not rendered again: no progress of it
+  CHECK(read_file(dir / "lecture.shot-2.mp4") == shot2);
+  CHECK(probe(out, "-count_frames -select_streams v:0 -show_entries stream=nb_read_frames") == "nb_read_frames=46\n");
+  CHECK(read_file(dir / "lecture.vtt") == kCues);
+  // A changed shot is not taken from an old shot file.
+  std::string changed = kStory;
+  changed.replace(changed.find("\"The end\""), 9, "\"Fin\"");
+  write(dir / "story.toml", changed);
+  REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " -q -o " + out).exit_code == 0);
+  CHECK_THAT(probe(out, kChapters), Catch::Contains("TAG:title=Fin"));
+}
+
+TEST_CASE("a lecture page: the video, its chapters as links, the subtitles as a track", "[lecture][page]") {
+  ScratchDirectory dir;
+  write(dir / "story.toml", kStory);
+  REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " -q -o " + (dir / "talk.html")).exit_code == 0);
+  const std::string html = read_file(dir / "talk.html");
+  CHECK_THAT(html, Catch::Contains("<track kind=\"subtitles\" label=\"Notes\" srclang=\"en\" src=\"talk_files/talk.vtt\""));
+  CHECK_THAT(html, Catch::Contains("<ol id=\"chapters\">"));
+  CHECK_THAT(html, Catch::Contains("data-start=\"1\">spring</a>"));
+  CHECK_THAT(html, Catch::Contains("data-start=\"4.0999999999999996\">The end</a>"));
+  for (const char* name : {"talk.mp4", "talk.webm", "talk.vtt"}) CHECK(fs::is_regular_file(dir.path / "talk_files" / name));
+  CHECK(read_file(dir.path / "talk_files" / "talk.vtt") == kCues);
+  CHECK_THAT(probe(dir.path / "talk_files" / "talk.webm", kChapters), Catch::Contains("TAG:title=The end"));
+}
+
+TEST_CASE("bad storyboards: one line naming the file, shot and key, exit 2, nothing written", "[lecture]") {
+  struct Case {
+    std::string story, expected;
+  };
+  const std::string head = "size = \"320x180\"\nfps = 10\n";
+  const std::vector<Case> cases = {
+      {head + "[[shot]]\ncard = \"A\"\ncolour = 3\n", "shot 1, colour: is not a key of a title card"},
+      {head + "[[shot]]\nscene = \"pendulum\"\nThetaa = 40\n", "shot 1, Thetaa: unknown key 'Thetaa' (did you mean 'Theta'?)"},
+      {head + "[[shot]]\ncard = \"A\"\n[[shot]]\nscene = \"pendullum\"\n", "shot 2, scene: no scene 'pendullum'"},
+      {head + "[[shot]]\nscene = \"pendulum\"\nset = { alpha = \"x\" }\n", "shot 1, alpha"},
+      {head + "[[shot]]\nscene = \"pendulum\"\nseconds = -1\n", "shot 1, seconds: must be a number of seconds above 0"},
+      {head + "[[shot]]\nscene = \"pendulum\"\nseconds = 2\nspeed = 1\n", "shot 1, seconds: and speed both set"},
+      {head + "[[shot]]\nscene = \"pendulum\"\nnotes = [\"later\"]\n", "shot 1, notes: note 'later' is not \"T0-T1: text\""},
+      {head + "[[shot]]\nscene = \"spring\"\nset = { T = 2 }\nnotes = [\"1-3: late\"]\n", "shot 1: note 1-3 reaches past the run's end"},
+      {head + "[[shot]]\nscene = \"spring\"\nset = { T = 2 }\npause = [{ at = 5, seconds = 1 }]\n", "shot 1: pause 5:1 lies past the run's end"},
+      {head + "[[shot]]\nscene = \"spring\"\nslow = [\"2-4:0\"]\n", "shot 1, slow: slow motion '2-4:0': the factor must be above 0"},
+      {head + "[[shot]]\nscene = \"spring\"\npause = [{ at = 1 }]\n", "shot 1, pause: each pause is"},
+      {head + "[[shot]]\nscene = \"spring\"\nfps = 25\n", "shot 1, fps: is the lecture's, not a shot's"},
+      {head + "[[shot]]\nscene = \"spring\"\nset = { T = 2 }\nseconds = 2\npause = [\"1:3\"]\n", "shot 1: seconds = 2 leaves no time"},
+      {head + "[[shot]]\nequation = \"x\"\nscene = \"spring\"\n", "shot 1, scene: is not a key of a title card"},
+      {head + "[[shot]]\ncard = \"A\"\n[[shot]]\nset = { T = 2 }\n", "shot 2, scene: is missing"},
+      {head + "colour = 1\n[[shot]]\ncard = \"A\"\n", "story.toml:3: colour: is not a key of a storyboard"},
+      {head, "shot: no shots"},
+      {"size = \"320x\"\n[[shot]]\ncard = \"A\"\n", "story.toml:1: size: size '320x' is not WxH"},
+      {"fps = 0\n[[shot]]\ncard = \"A\"\n", "story.toml:1: fps: must be a whole number"},
+      {head + "[[shot]]\ncard = \"A\"\nseconds = \"long\"\n", "shot 1, seconds: must be a number"},
+      {head + "[[shot\n", "story.toml:3:"},
+      {head + "shot = 3\n", "shot: no shots"},
+  };
+  for (const Case& c : cases) {
+    SECTION(c.expected) {
+      ScratchDirectory stories;
+      write(stories / "story.toml", c.story);
+      check_refused("lecture " + (stories / "story.toml") + " -o OUT.mp4", c.expected);
+    }
+  }
+  check_refused("lecture /nonexistent/story.toml -o OUT.mp4", "no storyboard");
+  ScratchDirectory stories;
+  write(stories / "story.toml", kStory);
+  check_refused("lecture " + (stories / "story.toml") + " -o OUT.gif", "a lecture is written as .mp4, .webm or .html");
+  check_refused("lecture " + (stories / "story.toml") + " --segment 0/2 -o OUT.html", "--segment renders shot files");
+}
+
+TEST_CASE("subtitles beside a video replace only vibra's own", "[lecture]") {
+  ScratchDirectory dir;
+  write(dir / "story.toml", kStory);
+  write(dir / "lecture.vtt", "WEBVTT\n\nmy own notes\n");
+  const auto r = run_vibra("lecture " + (dir / "story.toml") + " -q -o " + (dir / "lecture.mp4"));
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, Catch::Contains("was not written by vibra lecture"));
+  CHECK_FALSE(fs::exists(dir / "lecture.mp4"));
+  CHECK(read_file(dir / "lecture.vtt") == "WEBVTT\n\nmy own notes\n");
+}
