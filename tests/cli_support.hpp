@@ -24,6 +24,13 @@ struct CommandResult {
   std::string out, err;
 };
 
+/// A number as a command-line value that reads back to the same double.
+inline std::string exact_text(double x) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
 /// Runs `vibra ARGS` through the shell, capturing stdout and stderr.
 inline CommandResult run_vibra(const std::string& args) {
   static int counter = 0;

@@ -137,7 +137,7 @@ TEST_CASE("the legend learns when each run ended from the rows, and why", "[comp
   CHECK(scenes::early_end_note(EarlyEnd::blew_up, 2) == "blew up at <i>t</i> = 2");
 }
 
-TEST_CASE("a run that stays bounded stays in view; one that grows leaves it; one that overflows blew up", "[comparison]") {
+TEST_CASE("a run that stays bounded stays in view: one that grows leaves it, one that overflows blew up", "[comparison]") {
   // Euler-Cromer at a dt near its stability limit swings to |u| = 2.3 from
   // u(0) = 1 and decays: bounded, so the view holds it.
   const Parameters wide = settings("vibration", {"m=4", "damping=quadratic", "b=0.2", "s=2*u",

@@ -14,6 +14,7 @@
 #include "cli_support.hpp"
 #include "png_compare.hpp"
 
+using vibra::test::exact_text;
 using vibra::test::psnr;
 using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;
@@ -21,11 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string exact(double t) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", t);
-  return text;
-}
 
 struct Case {
   std::string args;           ///< scene and settings, without --fps/--speed/-o
@@ -38,7 +34,7 @@ struct Case {
 /// each pair to 45 dB.
 void check_frames_are_stills(const Case& c) {
   ScratchDirectory dir;
-  const std::string timing = c.speed > 0 ? " --fps " + exact(c.fps) + " --speed " + exact(c.speed) : "";
+  const std::string timing = c.speed > 0 ? " --fps " + exact_text(c.fps) + " --speed " + exact_text(c.speed) : "";
   const std::string base = c.args + timing + " -q";
   INFO("vibra render " << base);
   const auto frames = run_vibra("render " + base + " -o " + (dir / "f_%05d.png"));
@@ -51,7 +47,7 @@ void check_frames_are_stills(const Case& c) {
     REQUIRE(k < count);
     // The frame clock's own arithmetic: k times the frame interval.
     const double t = c.speed > 0 ? double(k) * (c.speed / c.fps) : double(k) * c.step;
-    const auto still = run_vibra("render " + base + " --at " + exact(t) + " -o " + (dir / "still.png"));
+    const auto still = run_vibra("render " + base + " --at " + exact_text(t) + " -o " + (dir / "still.png"));
     REQUIRE(still.exit_code == 0);
     char frame[32];
     std::snprintf(frame, sizeof frame, "f_%05lld.png", k);
@@ -99,5 +95,5 @@ TEST_CASE("frames are stills across time steps, speeds, layouts and comparisons"
       {"spring --size 320x180 --set T=2 --set dt=0.05 --set scheme=dopri5 --frame-per-step", 0, 0, {3, 17, -1}, 0.05},
   };
   for (const Case& c : cases)
-    SECTION(c.args + " at " + exact(c.fps) + " fps, speed " + exact(c.speed)) { check_frames_are_stills(c); }
+    SECTION(c.args + " at " + exact_text(c.fps) + " fps, speed " + exact_text(c.speed)) { check_frames_are_stills(c); }
 }

@@ -86,7 +86,7 @@ TEST_CASE("a lecture: a chapter per shot, subtitles from cards and notes, the fr
   }
 }
 
-TEST_CASE("--shot N renders one shot alone, with its chapter and its subtitles", "[lecture][video]") {
+TEST_CASE("lecture --shot N renders one shot alone with its chapter and its subtitles", "[lecture][video]") {
   ScratchDirectory dir;
   write(dir / "story.toml", kStory);
   REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " --shot 2 -q -o " + (dir / "two.mp4")).exit_code == 0);
@@ -97,7 +97,7 @@ TEST_CASE("--shot N renders one shot alone, with its chapter and its subtitles",
   check_refused("lecture " + (dir / "story.toml") + " --shot 4 -o OUT.mp4", "has shots 1..3");
 }
 
-TEST_CASE("--segment renders whole shots into shot files; the join reuses them", "[lecture][video]") {
+TEST_CASE("lecture --segment renders whole shots into shot files that the join reuses", "[lecture][video]") {
   ScratchDirectory dir;
   write(dir / "story.toml", kStory);
   const std::string out = dir / "lecture.mp4";

@@ -38,7 +38,7 @@ TEST_CASE("slow motion stretches its range by the factor, a pause holds its time
   CHECK(map.first_video_time(3) == Approx(6));
 }
 
-TEST_CASE("a factor below 1 plays faster; a pause at 0 or at T holds the first or last picture", "[pacing]") {
+TEST_CASE("a factor below 1 plays faster: a pause at 0 or at T holds the first or last picture", "[pacing]") {
   const TimeMap fast(10, 1, pacing({"0-10:0.5"}, {}));
   CHECK(fast.duration() == Approx(5));
   CHECK(fast.simulated(2.5) == Approx(5));

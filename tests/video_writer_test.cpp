@@ -346,7 +346,7 @@ TEST_CASE("bad sizes and frame rates are refused", "[video]") {
   CHECK(dir.empty());
 }
 
-TEST_CASE("an unwritable directory is refused; a missing one is made, and removed when abandoned", "[video]") {
+TEST_CASE("an unwritable directory is refused: a missing one is made, and removed when abandoned", "[video]") {
   ScratchDir dir;
   CHECK_THROWS_AS(VideoWriter("/proc/nonexistent/x.mp4", small()), OutputError);
   {

@@ -162,9 +162,9 @@ void PlotPanel::draw_cursor(Canvas& canvas, double x, double y, const Color& c) 
 }
 
 int PlotPanel::tick_target(Canvas& canvas, bool vertical) const {
-  // The most ticks (up to 5 on y, 6 on x) whose labels keep apart: a line's
-  // height and a half on y, the widest label and a gap on x. A small panel
-  // (320x180) gets fewer ticks rather than labels written over each other.
+  // The most ticks (up to 5 on y, 6 on x) whose labels keep apart: a quarter
+  // of a line between them on y, a gap beside the widest label on x. A small
+  // panel (320x180) gets fewer ticks rather than labels written over each other.
   const TextStyle style{kTickFont};
   const double lo = vertical ? y0_ : x0_, hi = vertical ? y1_ : x1_;
   const double pixels = vertical ? area_.h : area_.w;
@@ -174,7 +174,7 @@ int PlotPanel::tick_target(Canvas& canvas, bool vertical) const {
     const double apart = step / (hi - lo) * pixels;
     double needed = 0;
     if (vertical) {
-      needed = 1.5 * text_size(canvas, "0", style).y();
+      needed = 1.25 * text_size(canvas, "0", style).y();
     } else {
       for (const std::string& label : linear_tick_labels(nice_ticks(lo, hi, target), step).labels)
         needed = std::max(needed, text_size(canvas, label, style).x());
