@@ -13,7 +13,7 @@
 namespace vibra::scenes {
 
 namespace {
-constexpr double kLabelSize = 16, kNoteSize = 13, kFormulaSize = 13, kFormulaGap = 4;
+constexpr double kLabelSize = 16, kNoteSize = 13, kFormulaSize = 15, kFormulaGap = 4;
 constexpr double kSwatch = 26, kGap = 8, kRow = 24, kNoteRow = 18;
 
 std::string note_text(EarlyEnd end, double t) { return early_end_note(end, t); }
@@ -25,14 +25,20 @@ RunLegend::RunLegend(std::vector<LegendEntry> entries, int height)
   render::Canvas measure = render::Canvas::image(8, height);
   const double scale = measure.scale();
   double widest = render::text_size(measure, note_text(EarlyEnd::left_view, 1e-300), {kNoteSize}).x();
+  for (const auto& e : entries_) widest = std::max(widest, render::text_size(measure, e.label, {kLabelSize}).x());
+  names_width_ = widest + (kSwatch + kGap + 12) * scale;
   for (const auto& e : entries_) {
-    widest = std::max(widest, render::text_size(measure, e.label, {kLabelSize}).x());
     formulas_.emplace_back();
     if (e.formula.empty()) continue;
     formulas_.back() = render::layout_formula(measure, render::parse_formula(e.formula), {kFormulaSize});
     widest = std::max(widest, formulas_.back()->width);
   }
   width_ = widest + (kSwatch + kGap + 12) * scale;
+}
+
+void RunLegend::drop_formulas() {
+  for (auto& formula : formulas_) formula.reset();
+  width_ = names_width_;
 }
 
 void RunLegend::record(std::span<const double> row) {

@@ -22,6 +22,9 @@ class RunLegend {
   bool empty() const { return entries_.empty(); }
   /// The column's width in pixels.
   double width() const { return width_; }
+  /// Leaves the formulas out (a frame too small for them beside the
+  /// drawing: the legend would cover it); the names stay.
+  void drop_formulas();
   /// Pre-pass over the run's rows: when each run blows up.
   void record(std::span<const double> row);
   /// The time run i ended early, or infinity.
@@ -43,6 +46,7 @@ class RunLegend {
   std::vector<double> blow_up_times_;
   std::vector<EarlyEnd> ends_;
   double width_ = 0;
+  double names_width_ = 0;  ///< the width without the formulas
 };
 
 }  // namespace vibra::scenes

@@ -49,6 +49,9 @@ SystemScene::SystemScene(int width, int height, const TrajectoryInfo& info, Scen
   // A diagram with force arrows keeps a line for its force scale's key above the caption.
   const double key_line = diagram_->force_key() ? 24 * scale : 0;
   const double side = 48 * scale, top = 56 * scale, bottom = (style_.caption.empty() ? 52 : 80) * scale + key_line;
+  // Scheme formulas that would take more than 55% of the diagram's part are
+  // left out of the legend (the names stay): at 640x360 they would cover the drawing.
+  if (legend_.width() > 0.55 * diagram_area_.w) legend_.drop_formulas();
   // A legend too wide for a small frame overlaps the drawing rather than squeeze it away.
   const double view_width = std::max(diagram_area_.w - 2 * side - legend_.width(), 0.3 * diagram_area_.w);
   view_area_ = {diagram_area_.x + side, diagram_area_.y + top, view_width, diagram_area_.h - top - bottom};

@@ -103,7 +103,7 @@ TEST_CASE("Greek letters map to their code points, lowercase italic and capitals
   CHECK(std::string("θ") == "\xce\xb8");  // U+03B8
 }
 
-TEST_CASE("variables are italic; digits, function names and \\text upright; minus is U+2212", "[typeset]") {
+TEST_CASE("variables are italic, digits, function names and text upright, the minus U+2212", "[typeset]") {
   const auto leaves = glyph_leaves(set(R"(2x - \sin\theta + \text{at rest})"));
   REQUIRE(leaves.size() == 7);
   CHECK(leaves[0]->text == "2");
@@ -176,7 +176,7 @@ TEST_CASE("superscripts are raised above the baseline, subscripts lowered, and b
   CHECK(s.at.x() == Approx(b.at.x()).margin(0.3 * em));  // one column beside the base
 }
 
-TEST_CASE("\\left and \\right delimiters are at least as tall as their content", "[typeset]") {
+TEST_CASE("left and right delimiters are at least as tall as their content", "[typeset]") {
   for (const char* source : {R"(\left| \frac{a}{b} \right|)", R"(\left( \frac{\frac{1}{2}}{x^2} \right))",
                              R"(\left[ \sqrt{x^2 + y^2} \right])", R"(\left( x \right))"}) {
     INFO(source);
@@ -289,7 +289,7 @@ TEST_CASE("sizes scale with the frame", "[typeset]") {
   CHECK(large / small == Approx(1.5 / 0.7).epsilon(0.06));
 }
 
-TEST_CASE("rich text: words and $math$ runs, broken between words", "[typeset]") {
+TEST_CASE("rich text: words and math runs, broken between words", "[typeset]") {
   const auto runs = parse_rich_text(R"(drag takes $\alpha|\theta'|\theta'$ out, costs \$5)");
   REQUIRE(runs.size() == 3);
   CHECK_FALSE(runs[0].math);
