@@ -162,7 +162,9 @@ struct ScratchDirectory {
 /// OUT in `args` becomes a path in a fresh directory, which must stay empty.
 inline void check_refused(std::string args, const std::string& expected) {
   ScratchDirectory dir;
-  for (auto at = args.find("OUT"); at != std::string::npos; at = args.find("OUT")) args.replace(at, 3, dir / "out");
+  // From past each replacement: the scratch folder's random name may itself hold "OUT".
+  const std::string out = dir / "out";
+  for (auto at = args.find("OUT"); at != std::string::npos; at = args.find("OUT", at + out.size())) args.replace(at, 3, out);
   INFO("vibra " << args);
   const auto r = run_vibra(args);
   INFO("stderr: " << r.err);
