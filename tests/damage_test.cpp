@@ -164,7 +164,7 @@ TEST_CASE("damage: the changed columns of a band of rows are sorted, merged span
 }
 
 TEST_CASE("damage: redrawing only what changed gives the full redraw, pixel for pixel, in every layout",
-          "[damage]") {
+          "[heavy][damage]") {
   SECTION("the diagram alone: little of the picture changes") {
     const Run run = compare_redraws({{"layout", "fbd"}}, 80);
     CHECK(run.mean_covered < 0.35);

@@ -284,7 +284,7 @@ TEST_CASE("orbit diagram: --window keeps the last orbits of the trail", "[scene]
   CHECK(last.size() < d.trail().points().size() / 2);
 }
 
-TEST_CASE("nothing is clipped: over the run no drawing touches the frame's edge, small or large", "[scene][diagram]") {
+TEST_CASE("nothing is clipped: over the run no drawing touches the frame's edge, small or large", "[heavy][scene][diagram]") {
   for (const std::string& name : builtin_scene_names()) {
     for (auto [w, h] : {std::pair{640, 360}, std::pair{1920, 1080}}) {
       const auto [config, scene, rows, follows] = record_scene(name, w, h);
@@ -332,7 +332,7 @@ std::pair<int, int> longest_drawn_run(const render::Canvas& canvas, int y, const
 }  // namespace
 
 TEST_CASE("layout fbd centres every diagram: the pendulums' pivots on the centre line, the rest over the run",
-          "[scene][diagram]") {
+          "[heavy][scene][diagram]") {
   const int w = 1280, h = 720;
   for (const std::string& name : builtin_scene_names()) {
     const auto [config, scene, rows, follows] = record_scene(name, w, h);

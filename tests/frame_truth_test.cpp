@@ -59,7 +59,7 @@ void check_frames_are_stills(const Case& c) {
 
 }  // namespace
 
-TEST_CASE("every built-in scene's frames are its stills, in slow motion and fast", "[frame-truth]") {
+TEST_CASE("every built-in scene's frames are its stills, in slow motion and fast", "[heavy][frame-truth]") {
   for (const char* scene : {"pendulum", "spring", "spring_dashpot", "washing_machine", "sliding_box", "bumpy_road",
                             "bouncing_ball", "rlc", "elastic_pendulum", "orbit"}) {
     const std::string s = std::string(scene) + " --size 320x180";
@@ -70,7 +70,7 @@ TEST_CASE("every built-in scene's frames are its stills, in slow motion and fast
   }
 }
 
-TEST_CASE("frames are stills across time steps, speeds, layouts and comparisons", "[frame-truth]") {
+TEST_CASE("frames are stills across time steps, speeds, layouts and comparisons", "[heavy][frame-truth]") {
   const std::vector<Case> cases = {
       {"spring --size 320x180 --set T=8 --set dt=0.1", 60, 1, {7, 50, -1}},        // coarse dt, high fps
       {"spring --size 320x180 --set T=8 --set dt=0.001", 10, 2, {3, 5, -1}},       // thousands of steps a frame

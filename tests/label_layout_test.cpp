@@ -118,8 +118,8 @@ void check_all_scenes(int width, int height) {
 }  // namespace
 
 TEST_CASE("labels overlap nothing the diagram draws, at 640x360", "[labels]") { check_all_scenes(640, 360); }
-TEST_CASE("labels overlap nothing the diagram draws, at 1280x720", "[labels]") { check_all_scenes(1280, 720); }
-TEST_CASE("labels overlap nothing the diagram draws, at 1920x1080", "[labels]") { check_all_scenes(1920, 1080); }
+TEST_CASE("labels overlap nothing the diagram draws, at 1280x720", "[heavy][labels]") { check_all_scenes(1280, 720); }
+TEST_CASE("labels overlap nothing the diagram draws, at 1920x1080", "[heavy][labels]") { check_all_scenes(1920, 1080); }
 
 TEST_CASE("labels overlap nothing in comparisons, energy bars and large swings", "[labels]") {
   const std::vector<Setup> setups = {

@@ -82,7 +82,7 @@ TEST_CASE("a frames-player page: PNG frames and the same page around them", "[pa
   CHECK(html.find("<video") == std::string::npos);
 }
 
-TEST_CASE("a run too long for the page's data budget is decimated, not refused", "[page]") {
+TEST_CASE("a run too long for the page's data budget is decimated, not refused", "[heavy][page]") {
   ScratchDirectory dir;
   // 1e6 steps drawn in 3 frames; the CSV thinned to every 1000th step.
   REQUIRE(run_vibra("render --size 160x90 --set dt=1e-4 --set T=100 --speed 50 --every 1000 -q -o " + (dir / "long.html"))

@@ -35,7 +35,7 @@ void check_flat(long short_kib, long long_kib) {
 
 }  // namespace
 
-TEST_CASE("a moving-window render of 5e6 steps peaks at the memory of 1e4 steps", "[memory][render]") {
+TEST_CASE("a moving-window render of 5e6 steps peaks at the memory of 1e4 steps", "[heavy][memory][render]") {
   ScratchDirectory dir;
   auto render = [&](const std::string& steps_per_period) {
     return peak_kib({"render", "undamped", "--set", "scheme=rk4", "--set", "steps_per_period=" + steps_per_period,
