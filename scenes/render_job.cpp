@@ -50,6 +50,9 @@ std::uint64_t render_fingerprint(const RenderRequest& r, const std::string& capt
   std::string text = c.name + '\n' + c.model + '\n' + caption + '\n';
   for (const auto& s : c.model_settings) text += s.key + '=' + s.value + '\n';
   if (!c.compare.empty()) text += "compare " + c.compare + '\n';
+  if (!c.title.empty()) text += "title " + c.title + '\n';
+  if (c.equation) text += "equation\n";
+  for (const auto& note : c.notes) text += "note " + note + '\n';
   char numbers[512];
   const auto& k = c.colors;
   std::snprintf(numbers, sizeof numbers, "%d %d %.17g %.17g %d %d %d %.17g %lld", c.width, c.height, c.fps, c.speed,
@@ -164,6 +167,8 @@ render::PageFacts page_facts(const RenderRequest& r, long long frames, const Par
                                                      : format("%.4g", speed) + " time units per second of video");
   if (!r.scene.pacing.empty()) facts.emplace_back("pacing", r.scene.pacing.describe());
   facts.emplace_back("size", std::to_string(r.scene.width) + "x" + std::to_string(r.scene.height));
+  if (r.scene.equation) facts.emplace_back("equation", model_equation(find_model(r.scene.model), p));
+  for (const std::string& note : r.scene.notes) facts.emplace_back("note", note);
   return facts;
 }
 
@@ -171,7 +176,7 @@ render::PageFacts page_facts(const RenderRequest& r, long long frames, const Par
 std::string page_html(const RenderRequest& r, const Outputs& outputs, const FrameClock& clock, render::PageFacts facts,
                       std::vector<render::PagePanel> panels, const std::string& csv_link) {
   render::LecturePage page;
-  page.title = "vibra: " + r.scene.name;
+  page.title = r.scene.title.empty() ? "vibra: " + r.scene.name : r.scene.title;
   render::PageMedia& media = page.media;
   media.width = r.scene.width + (r.scene.width & 1);  // videos are even-sized
   media.height = r.scene.height + (r.scene.height & 1);

@@ -21,7 +21,9 @@
 #include "core/quoted_value.hpp"
 #include "core/value_ranges.hpp"
 #include "core/word_list.hpp"
+#include "render/typeset/formula_parser.hpp"
 #include "scenes/builtin_scenes.hpp"
+#include "scenes/note.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 
 namespace vibra::scenes {
@@ -113,6 +115,15 @@ void collect(const toml::table& table, const std::string& prefix, const std::str
       for (const toml::node& item : *list) out.push_back({name, pacing_text(name, item, origin), origin});
       continue;
     }
+    if (const toml::array* list = node.as_array(); list && name == "notes") {
+      // notes = ["2-4: ...", ...]: one setting per note.
+      for (const toml::node& item : *list) {
+        if (!item.is_string())
+          throw UsageError(origin + ": notes must be a list of strings, e.g. notes = [\"2-4: drag takes energy out\"]");
+        out.push_back({name, *item.value<std::string>(), origin});
+      }
+      continue;
+    }
     std::string text = scalar_text(node);
     if (text.empty()) throw UsageError(origin + ": " + name + " must be a number, string or boolean");
     out.push_back({name, text, origin});
@@ -153,6 +164,9 @@ const std::vector<KeySpec>& scene_keys() {
       {"slow", ValueKind::text, "", "", "T0-T1:FACTOR: simulated [T0, T1] FACTOR times slower (4: a quarter speed), repeatable", {}, {}},
       {"pause", ValueKind::text, "", "", "T:SECONDS: hold simulated time T for SECONDS of video, repeatable", {}, {}},
       {"drag_magnification", ValueKind::number, "5", "", "drag arrow drawn this many times longer", {}, {}},
+      {"title", ValueKind::text, "", "", "a title across the top (text; $math$ in the LaTeX subset)", {}, {}},
+      {"equation", ValueKind::choice, "false", "", "the model's equation of motion under the title", {"true", "false"}, {}},
+      {"notes", ValueKind::text, "", "", "callouts \"T0-T1: TEXT\" (a list; @PANEL points at a panel)", {}, {}},
       {"colors.background", ValueKind::number, "#ffffff", "", "colour #rrggbb", {}, {}},
       {"colors.bob", ValueKind::number, "#0073b3", "", "colour #rrggbb", {}, {}},
       {"colors.wire", ValueKind::number, "#1a1a1f", "", "colour #rrggbb", {}, {}},
@@ -247,6 +261,22 @@ void apply_setting(SceneConfig& c, const Setting& s) {
     }
   } else if (k == "drag_magnification") {
     c.drag_magnification = parse_number(s);
+  } else if (k == "title") {
+    try {
+      (void)render::parse_rich_text(s.value);
+    } catch (const UsageError& e) {
+      throw UsageError(s.origin + ": title: " + e.what());
+    }
+    c.title = s.value;
+  } else if (k == "equation") {
+    c.equation = parse_bool(s);
+  } else if (k == "notes" || k == "note") {
+    try {
+      (void)parse_note(s.value);
+    } catch (const UsageError& e) {
+      throw UsageError(s.origin + ": " + e.what());
+    }
+    c.notes.push_back(s.value);
   } else if (render::Color* slot = color_slot(c, k)) {
     *slot = parse_color_setting(s);
   } else {

@@ -37,6 +37,14 @@ struct SceneConfig {
   SceneColors colors;
   /// "KEY=V1,V2,...": one run per value, drawn together; "" = one run.
   std::string compare;
+  /// A title across the top of the frame; "" = none.
+  std::string title;
+  /// The model's equation of motion typeset under the title, and with a
+  /// comparison of schemes each scheme's update formula in the legend.
+  bool equation = false;
+  /// Callouts "T0-T1: TEXT" (TEXT may hold $math$; "@PANEL" points at a
+  /// panel's curve), each added by a `notes` setting.
+  std::vector<std::string> notes;
   /// Slow motion and pauses (keys slow and pause, --slow, --pause).
   Pacing pacing;
 };

@@ -3,6 +3,7 @@
 #include <iterator>
 
 #include "core/error.hpp"
+#include "core/models/model.hpp"
 #include "core/quoted_value.hpp"
 #include "scenes/diagrams/comparison_diagram.hpp"
 #include "scenes/diagrams/comparison_labels.hpp"
@@ -30,6 +31,9 @@ SceneStyle style_of(const SceneConfig& config, const TrajectoryInfo& info, const
                      short_number(100 * info.mesh.dt) + ", or lower dt");
   style.window_mode = style.window > 0 ? config.window_mode : WindowMode::whole_run;
   if (style.window > 0 && style.window >= info.mesh.T) style.window_mode = WindowMode::whole_run;
+  style.title = config.title;
+  if (config.equation) style.equation = model_equation(find_model(config.model), model_parameters_of(config));
+  for (const std::string& note : config.notes) style.notes.push_back(parse_note(note));
   return style;
 }
 
@@ -121,6 +125,9 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
     legend.push_back({member_markup(comparison, i), member_color(config.colors.bob, i), false,
                       columns[i].reading([](std::span<const double> row) { return row[1]; }),
                       [ends = runs.early_ends(), i] { return (*ends)[i]; }});
+    // --equation with a comparison of schemes: each scheme's update formula under its name.
+    if (config.equation && comparison.request().key == "scheme")
+      legend.back().formula = std::string(scheme_info(comparison.trajectory(i).info().mesh.scheme).formula);
   }
   const TrajectoryInfo& first = comparison.trajectory(0).info();
   auto exact_of = [&](size_t i) -> const std::function<double(double)>& { return comparison.trajectory(i).info().exact; };

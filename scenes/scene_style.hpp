@@ -3,6 +3,7 @@
 #include <string>
 
 #include "render/draw/canvas.hpp"
+#include "scenes/note.hpp"
 #include "scenes/panels/series_panel.hpp"
 
 namespace vibra::scenes {
@@ -33,6 +34,9 @@ struct SceneStyle {
   double window = 0;         ///< window width in time units (window modes)
   double period = 2 * M_PI;  ///< for the read-out "t = ... (n periods)"; 0 = none
   std::string caption;       ///< a line of parameters at the bottom (Pango markup)
+  std::string title;         ///< across the top (plain text with $math$); "" = none
+  std::string equation;      ///< the equation of motion under the title (LaTeX subset); "" = none
+  std::vector<Note> notes;   ///< callouts shown while their time lasts
 };
 
 /// Draws the time read-out ("t = 2.50 (0.40 periods)") at the top left of `area`.

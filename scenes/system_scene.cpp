@@ -14,24 +14,31 @@ SystemScene::SystemScene(int width, int height, const TrajectoryInfo& info, Scen
                          std::unique_ptr<EnergyBars> bars)
     : height_(height),
       style_(std::move(style)),
+      heading_(style_.title, style_.equation, width, height),
       diagram_(std::move(diagram)),
       legend_(diagram_->legend(), height),
       bars_(std::move(bars)),
       background_([this](render::Canvas& c) { draw_static(c); }) {
   const double scale = render::scale_for_height(height);
+  // The title and equation take a band across the top; the rest lays out below it.
+  const double band = heading_.height();
+  std::vector<NoteTarget> targets;
   if (style_.layout == Layout::fbd) {
-    diagram_area_ = {0, 0, double(width), double(height)};
+    diagram_area_ = {0, band, double(width), height - band};
   } else {
     // Energy bars widen the diagram's area by most of their strip, so the
     // diagram keeps its size and the panels give up the room.
     const double bars = bars_ ? bars_->width(scale) : 0;
     const double diagram_width = std::min((bars_ ? 0.54 : 0.46) * width, 1.0 * height + bars);
-    diagram_area_ = {0, 0, diagram_width, double(height)};
+    diagram_area_ = {0, band, diagram_width, height - band};
     if (specs.empty())
       for (PanelSpec& own : diagram_->panels()) specs.push_back({std::move(own.label), std::move(own.series), {}, {}, {}, 0, {}});
-    const double x = diagram_width, w = width - diagram_width - 10 * scale, top = 10 * scale;
+    const double x = diagram_width, w = width - diagram_width - 10 * scale, top = band + 10 * scale;
     const double h = (height - top - 10 * scale) / std::max<size_t>(1, specs.size());
     for (size_t i = 0; i < specs.size(); ++i) {
+      targets.push_back({panel_names(i, "", specs[i].label),
+                         specs[i].curves.empty() ? std::function<double(std::span<const double>)>() : specs[i].curves.front().value,
+                         !specs[i].is_phase()});
       panels_.push_back(make_scene_panel(std::move(specs[i]), info, render::PixelRect{x, top + i * h, w, h}, scale,
                                          style_.window_mode, style_.window));
       if (panels_.back()->against_time()) time_labels_panel_ = i;
@@ -42,6 +49,9 @@ SystemScene::SystemScene(int width, int height, const TrajectoryInfo& info, Scen
   // A diagram with force arrows keeps a line for its force scale's key above the caption.
   const double key_line = diagram_->force_key() ? 24 * scale : 0;
   const double side = 48 * scale, top = 56 * scale, bottom = (style_.caption.empty() ? 52 : 80) * scale + key_line;
+  // Scheme formulas that would take more than 55% of the diagram's part are
+  // left out of the legend (the names stay): at 640x360 they would cover the drawing.
+  if (legend_.width() > 0.55 * diagram_area_.w) legend_.drop_formulas();
   // A legend too wide for a small frame overlaps the drawing rather than squeeze it away.
   const double view_width = std::max(diagram_area_.w - 2 * side - legend_.width(), 0.3 * diagram_area_.w);
   view_area_ = {diagram_area_.x + side, diagram_area_.y + top, view_width, diagram_area_.h - top - bottom};
@@ -55,11 +65,14 @@ SystemScene::SystemScene(int width, int height, const TrajectoryInfo& info, Scen
                  scale);
   }
   world_.setEmpty();
+  if (!style_.notes.empty())
+    notes_.emplace(style_.notes, targets, width, height, info.mesh.T, style_.colors.wire, style_.colors.background.with_alpha(1));
 }
 
 void SystemScene::record(std::span<const double> row) {
   diagram_->record(row, world_);
   legend_.record(row);
+  if (notes_) notes_->record(row);
   for (auto& panel : panels_) panel->record(row);
   if (bars_) bars_->record(row);
 }
@@ -71,6 +84,7 @@ void SystemScene::observe(std::span<const double> row) {
 
 void SystemScene::record_between(std::span<const double> row) {
   diagram_->record(row, world_);  // the frames show these states too
+  if (notes_) notes_->record(row);
   for (auto& panel : panels_) panel->record(row);
 }
 
@@ -114,6 +128,7 @@ void SystemScene::draw_static(render::Canvas& canvas) {
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i]->draw_static(canvas, i == time_labels_panel_);
   render::DrawingRecord record;
   canvas.record_into(&record);
+  heading_.draw(canvas, style_.colors.wire);
   diagram_->draw_static(canvas, *view_);
   if (!legend_.empty()) legend_.draw_static(canvas, legend_corner(canvas.scale()));
   const double scale = canvas.scale();
@@ -162,8 +177,13 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   if (bars_) bars_->draw(canvas, row);
   draw_readout(canvas, diagram_area_, row[0], style_);
   canvas.record_into(nullptr);
+  // Notes are placed after every other label, near the middle of the view.
+  if (notes_)
+    for (auto& request : notes_->body_requests(row[0], view_area_.center())) last_frame_.labels.push_back(std::move(request));
   last_frame_.placed = render::place_labels(canvas, last_frame_.labels, last_frame_.outline, label_area(canvas.scale()));
   render::draw_placed_labels(canvas, last_frame_.placed);
+  if (notes_)
+    notes_->draw_panel_notes(canvas, row[0], [this](size_t i) { return i < panels_.size() ? panels_[i]->time_plot() : nullptr; });
 }
 
 void SystemScene::skip(const render::Canvas& canvas, std::span<const double> row) {

@@ -7,6 +7,8 @@
 #include "render/draw/caption.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "scenes/diagrams/diagram.hpp"
+#include "scenes/frame_heading.hpp"
+#include "scenes/note_callouts.hpp"
 #include "scenes/panels/energy_bars.hpp"
 #include "scenes/panels/quantity_panels.hpp"
 #include "scenes/panels/scene_panel.hpp"
@@ -50,6 +52,8 @@ class SystemScene final : public Scene {
   }
   /// Where the diagram, its caption and read-out are drawn.
   const render::PixelRect& diagram_area() const { return diagram_area_; }
+  /// The title and equation across the top.
+  const FrameHeading& heading() const { return heading_; }
 
  private:
   void prepare();
@@ -59,6 +63,7 @@ class SystemScene final : public Scene {
 
   int height_;
   SceneStyle style_;
+  FrameHeading heading_;
   std::unique_ptr<Diagram> diagram_;
   /// Where the diagram may draw: its area without the legend's column.
   render::PixelRect drawing_area() const;
@@ -72,6 +77,7 @@ class SystemScene final : public Scene {
   std::vector<std::unique_ptr<ScenePanel>> panels_;
   size_t time_labels_panel_ = 0;  ///< the lowest panel against time labels the time axis
   std::unique_ptr<EnergyBars> bars_;
+  std::optional<NoteCallouts> notes_;
   WorldBox world_;
   std::optional<render::WorldView> view_;
   std::optional<render::Caption> caption_;  ///< set with the view

@@ -105,7 +105,7 @@ TEST_CASE("caption: a long run caption stays inside the diagram's half of the fr
     REQUIRE(x1 > x0);  // the caption was drawn
     CHECK(x1 <= scene.diagram_area().x + scene.diagram_area().w);
     REQUIRE(scene.caption());
-    CHECK(joined(scene.caption()->lines).find("V=-0.5") != std::string::npos);  // nothing cut off
+    CHECK(joined(scene.caption()->lines).find("<i>V</i> = -0.5") != std::string::npos);  // nothing cut off
     CHECK(scene.caption()->lines.size() >= 2);  // too long for one line in the diagram's part
     CHECK(scene.caption()->lines.size() <= 3);
   }

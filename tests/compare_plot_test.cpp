@@ -60,7 +60,7 @@ TEST_CASE("a member that leaves the view is marked and the others run to the end
   CHECK(c.blow_up_time(0) <= 1.05);
   CHECK_FALSE(c.blew_up(1));
   CHECK(c.trajectory(1).done());
-  CHECK(scenes::comparison_caption("undamped", c) == "undamped · Δ<i>t</i> = 0.05 · comparing scheme");
+  CHECK(scenes::comparison_caption("undamped", c) == "Δ<i>t</i> = 0.05 · comparing scheme");
 }
 
 TEST_CASE("plot --compare refuses bad input with one line, exit code 2 and no file", "[compare]") {

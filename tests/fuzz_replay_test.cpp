@@ -52,3 +52,7 @@ TEST_CASE("fuzz inputs replay cleanly: expressions", "[fuzz]") {
 TEST_CASE("fuzz inputs replay cleanly: command lines", "[fuzz]") {
   CHECK(replay("command_line", vibra::fuzz::command_line) >= 8);
 }
+
+TEST_CASE("fuzz inputs replay cleanly: formulas", "[fuzz]") {
+  CHECK(replay("formula", vibra::fuzz::formula) >= 8);
+}

@@ -80,9 +80,9 @@ class Image(_Output):
 
 
 def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=None, speed=None,
-           window=None, window_mode=None, compare=None, slow=None, pause=None, frame_per_step=False,
-           frames_player=False, codec="", quality="medium", crf=-1, preset="", threads=0, transparent=False,
-           quiet=True, **keys):
+           window=None, window_mode=None, compare=None, slow=None, pause=None, title=None, equation=False,
+           notes=None, frame_per_step=False, frames_player=False, codec="", quality="medium", crf=-1, preset="",
+           threads=0, transparent=False, quiet=True, **keys):
     """Renders a scene as `vibra render` does: a video (out="name.mp4", .webm,
     .mkv, .ogv or .gif; default SCENE.mp4), or with at=T one still (out=
     "name.png", .svg or .pdf; default SCENE.png). PNG frame patterns
@@ -95,13 +95,25 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
     VP9 with alpha, .mov ProRes 4444, SVG/PDF without the background rectangle).
     slow="2-4:4" (or (2, 4, 4), or a list of them) plays simulated times 2 to 4
     four times slower; pause="3:1" (or (3, 1), or a list) holds t = 3 for 1 s
-    of video, as --slow and --pause do. Returns a Video or an Image.
+    of video, as --slow and --pause do. title="The damped pendulum" puts a
+    title across the top, equation=True the model's equation of motion beside
+    or under it (and, comparing schemes, each scheme's update formula in the
+    legend); notes=["2-4: drag takes energy out @theta"] adds callouts, as
+    --title, --equation and --note do. Returns a Video or an Image.
     """
     settings = []
     for key, value in (("size", size), ("fps", fps), ("layout", layout), ("speed", speed),
                        ("window", window), ("window_mode", window_mode), ("compare", comparison_text(compare))):
         if value is not None:
             settings.append((key, size_text(value) if key == "size" else value_text(key, value)))
+    if title is not None:
+        settings.append(("title", str(title)))
+    if equation:
+        settings.append(("equation", "true"))
+    if isinstance(notes, str):
+        notes = [notes]
+    for note in notes or []:
+        settings.append(("notes", str(note)))
     settings += [("slow", text) for text in pacing_texts("slow", slow)]
     settings += [("pause", text) for text in pacing_texts("pause", pause)]
     settings += [tuple(a.split("=", 1)) for a in assignments(keys)]

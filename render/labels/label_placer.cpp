@@ -6,6 +6,7 @@
 #include "render/draw/shapes.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "render/labels/occupancy_grid.hpp"
+#include "render/typeset/formula_draw.hpp"
 
 namespace vibra::render {
 
@@ -54,6 +55,74 @@ bool within(const PixelRect& inner, const PixelRect& outer) {
 Point nearest_on_box(const PixelRect& box, const Point& p) {
   return {std::clamp(p.x(), box.x, box.x + box.w), std::clamp(p.y(), box.y, box.y + box.h)};
 }
+
+/// Room between a typeset label's card edge and its content, in pixels.
+double card_padding(double scale) { return 5 * scale; }
+
+/// A label's box size: its text (or typeset content on its card) and halo.
+Point label_size(Canvas& canvas, const LabelRequest& request) {
+  const double scale = canvas.scale();
+  if (request.typeset)
+    return Point(request.typeset->width, request.typeset->height()) + Point::Constant(2 * card_padding(scale));
+  return text_size(canvas, request.markup, request.style) + Point::Constant(2 * halo_reach(request.style, scale));
+}
+
+/// A typeset label: a card in the halo colour with a thin border, its content inside.
+void draw_card(Canvas& canvas, const PlacedLabel& label) {
+  const double scale = canvas.scale(), pad = card_padding(scale), r = 4 * scale;
+  const PixelRect& b = label.box;
+  const TextStyle& style = label.request.style;
+  cairo_t* cr = canvas.cr();
+  cairo_new_path(cr);
+  cairo_arc(cr, b.x + b.w - r, b.y + r, r, -M_PI / 2, 0);
+  cairo_arc(cr, b.x + b.w - r, b.y + b.h - r, r, 0, M_PI / 2);
+  cairo_arc(cr, b.x + r, b.y + b.h - r, r, M_PI / 2, M_PI);
+  cairo_arc(cr, b.x + r, b.y + r, r, M_PI, 3 * M_PI / 2);
+  cairo_close_path(cr);
+  const Color fill = style.halo_color.with_alpha(0.92 * style.halo_color.a);
+  cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, fill.a);
+  DrawingRecord* record = canvas.record();
+  canvas.record_into(nullptr);  // the box is recorded as the label's already
+  canvas.fill_preserve();
+  const Color edge = style.color.with_alpha(0.45);
+  cairo_set_source_rgba(cr, edge.r, edge.g, edge.b, edge.a);
+  cairo_set_line_width(cr, 1.2 * scale);
+  canvas.stroke();
+  draw_math(canvas, *label.request.typeset, {b.x + pad, b.y + pad + label.request.typeset->ascent},
+            {style.color, false, style.halo_color});
+  canvas.record_into(record);
+}
+
+/// An arrow from the card's edge to its anchor, ending in a dot there.
+void draw_pointer(Canvas& canvas, const PlacedLabel& label) {
+  const double scale = canvas.scale();
+  const Point anchor = label.request.anchor;
+  const Point start = nearest_on_box(label.box, anchor);
+  const Point d = anchor - start;
+  const double length = d.norm();
+  const Color color = label.request.style.color;
+  DrawingRecord* record = canvas.record();
+  canvas.record_into(nullptr);
+  if (length > 8 * scale) {
+    const Point along = d / length, across(-along.y(), along.x());
+    const Point tip = anchor - 4 * scale * along, base = tip - 9 * scale * along;
+    draw_pixel_line(canvas, start, base, {color.with_alpha(0.8), 1.4});
+    cairo_t* cr = canvas.cr();
+    cairo_new_path(cr);
+    cairo_move_to(cr, tip.x(), tip.y());
+    cairo_line_to(cr, base.x() + 4 * scale * across.x(), base.y() + 4 * scale * across.y());
+    cairo_line_to(cr, base.x() - 4 * scale * across.x(), base.y() - 4 * scale * across.y());
+    cairo_close_path(cr);
+    cairo_set_source_rgba(cr, color.r, color.g, color.b, 0.8 * color.a);
+    canvas.fill();
+  }
+  cairo_t* cr = canvas.cr();
+  cairo_new_path(cr);
+  cairo_arc(cr, anchor.x(), anchor.y(), 3 * scale, 0, 2 * M_PI);
+  cairo_set_source_rgba(cr, color.r, color.g, color.b, color.a);
+  canvas.fill();
+  canvas.record_into(record);
+}
 }  // namespace
 
 std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelRequest>& requests, Outline& outline,
@@ -63,8 +132,7 @@ std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelReq
   for (const OutlineShape& shape : outline.shapes()) grid.add(shape);
   std::vector<PlacedLabel> placed;
   for (const LabelRequest& request : requests) {
-    const Point size = text_size(canvas, request.markup, request.style) +
-                       Point::Constant(2 * halo_reach(request.style, scale));
+    const Point size = label_size(canvas, request);
     const double n = request.direction.norm();
     const Point preferred = n > 1e-12 ? Point(request.direction / n) : Point(1, 0);
     auto box_for = [&](const Candidate& c) {
@@ -88,7 +156,9 @@ std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelReq
     }
     const Candidate& c = chosen ? *chosen : least_covered ? *least_covered : candidates().front();
     PlacedLabel label{request, box_for(c), chosen != nullptr, false};
-    label.leader = c.steps * kStep > kLeaderAfter || std::abs(c.turn) * kTurnCost > kLeaderAfter;
+    label.leader = request.leader == LabelRequest::Leader::arrow ||
+                   (request.leader == LabelRequest::Leader::when_moved &&
+                    (c.steps * kStep > kLeaderAfter || std::abs(c.turn) * kTurnCost > kLeaderAfter));
     grid.add_box(label.box);
     outline.add_box(label.box, OutlineKind::label, request.markup);
     placed.push_back(std::move(label));
@@ -100,6 +170,10 @@ void draw_placed_labels(Canvas& canvas, const std::vector<PlacedLabel>& labels) 
   const double scale = canvas.scale();
   for (const PlacedLabel& label : labels) {
     if (!label.leader) continue;
+    if (label.request.leader == LabelRequest::Leader::arrow) {
+      draw_pointer(canvas, label);
+      continue;
+    }
     // From just off the anchor to just short of the box, under every label.
     const Point end = nearest_on_box(label.box, label.request.anchor);
     const Point d = end - label.request.anchor;
@@ -109,8 +183,10 @@ void draw_placed_labels(Canvas& canvas, const std::vector<PlacedLabel>& labels) 
     draw_pixel_line(canvas, label.request.anchor + 3 * scale * along, end - 2 * scale * along,
                     {label.request.style.color.with_alpha(0.7), 1.2});
   }
-  for (const PlacedLabel& label : labels)
-    draw_text(canvas, label.box.center(), label.request.markup, label.request.style);
+  for (const PlacedLabel& label : labels) {
+    if (label.request.typeset) draw_card(canvas, label);
+    else draw_text(canvas, label.box.center(), label.request.markup, label.request.style);
+  }
 }
 
 void request_label(Canvas& canvas, const LabelRequest& request) {

@@ -16,6 +16,7 @@ const char* outline_kind_name(OutlineKind kind) {
     case OutlineKind::label: return "label";
     case OutlineKind::legend: return "legend";
     case OutlineKind::text: return "text";
+    case OutlineKind::formula: return "formula";
   }
   return "drawing";
 }

@@ -11,7 +11,7 @@ namespace vibra::render {
 
 /// What a recorded piece of a drawing is, so that a check can say what a
 /// label covers ("the spring"), and the placer can treat all alike.
-enum class OutlineKind { drawing, body, spring, wire, arrow, ground, label, legend, text };
+enum class OutlineKind { drawing, body, spring, wire, arrow, ground, label, legend, text, formula };
 const char* outline_kind_name(OutlineKind);
 
 /// One stroke or fill of a drawing in pixels: the segments of its flattened

@@ -32,24 +32,18 @@ std::string early_end_note(EarlyEnd end, double t) {
 
 std::string comparison_caption(const std::string& model, const Comparison& comparison) {
   const std::string& key = comparison.request().key;
-  std::string caption = model;
   const TimeMesh& mesh = comparison.trajectory(0).info().mesh;
   bool same_scheme = true, same_dt = true;
   for (size_t m = 1; m < comparison.size(); ++m) {
     same_scheme &= comparison.trajectory(m).info().mesh.scheme == mesh.scheme;
     same_dt &= comparison.trajectory(m).info().mesh.dt == mesh.dt;
   }
-  if (same_scheme) caption += " · " + std::string(scheme_info(mesh.scheme).name);
-  if (same_dt) {
-    char dt[64];
-    std::snprintf(dt, sizeof dt, " · Δ<i>t</i> = %.4g", mesh.dt);
-    caption += dt;
-  }
-  for (const auto& a : comparison.parameters(0).given_assignments()) {
-    const std::string k = a.substr(0, a.find('='));
-    if (k != key && !is_time_key(k)) caption += " · " + markup_escaped(a);
-  }
-  return caption + " · comparing " + key_markup(key);
+  std::string caption = setting_facts(comparison.parameters(0), key);
+  auto add = [&](const std::string& fact) { caption += (caption.empty() ? "" : " · ") + fact; };
+  if (same_dt) add(dt_fact(model, mesh.dt));
+  if (same_scheme) add(std::string(scheme_info(mesh.scheme).name));
+  add("comparing " + key_markup(key));
+  return caption;
 }
 
 }  // namespace vibra::scenes

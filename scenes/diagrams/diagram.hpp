@@ -33,6 +33,8 @@ struct LegendEntry {
   std::function<double(std::span<const double> row)> probe = {};
   /// Why it ended, asked when its rows first turn NaN (empty: it blew up).
   std::function<EarlyEnd()> early_end = {};
+  /// A formula typeset under the name (a scheme's update formula); "" = none.
+  std::string formula = {};
 };
 
 /// Widens `world` to be symmetric about the vertical line at `x`, so that a

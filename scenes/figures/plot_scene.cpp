@@ -25,13 +25,25 @@ PanelSpec main_quantity_panel(const SceneStyle& style, const std::string& quanti
 PlotScene::PlotScene(int width, int height, double t_end, SceneStyle style, std::vector<PanelSpec> panels,
                      std::vector<LegendEntry> legend)
     : style_(std::move(style)),
-      area_{0, 0, double(width), double(height)},
+      heading_(style_.title, style_.equation, width, height),
+      area_{0, heading_.height(), double(width), height - heading_.height()},
       legend_(std::move(legend), height),
       background_([this](render::Canvas& canvas) { draw_static(canvas); }) {
   const double scale = render::scale_for_height(height);
-  const double top = 44 * scale, bottom = 30 * scale;
+  const double top = area_.y + 44 * scale, bottom = 30 * scale;
   const double w = width - 10 * scale - legend_.width();
   const double h = (height - top - bottom) / std::max<size_t>(1, panels.size());
+  std::vector<NoteTarget> targets;
+  for (size_t i = 0; i < panels.size(); ++i)
+    targets.push_back({panel_names(i, "", panels[i].label),
+                       panels[i].series.empty() ? std::function<double(std::span<const double>)>() : panels[i].series.front().value});
+  if (!style_.notes.empty()) {
+    // Without a diagram, a note with no panel named goes to the first panel.
+    std::vector<Note> notes = style_.notes;
+    for (Note& note : notes)
+      if (note.panel.empty() && !targets.empty()) note.panel = "1";
+    notes_.emplace(notes, targets, width, height, t_end, style_.colors.wire, style_.colors.background.with_alpha(1));
+  }
   for (size_t i = 0; i < panels.size(); ++i)
     panels_.emplace_back(render::PixelRect{0, top + i * h, w, h}, scale, std::move(panels[i].label),
                          std::move(panels[i].series), t_end, style_.window_mode, style_.window);
@@ -40,6 +52,7 @@ PlotScene::PlotScene(int width, int height, double t_end, SceneStyle style, std:
 void PlotScene::record(std::span<const double> row) {
   for (auto& panel : panels_) panel.record(row);
   legend_.record(row);
+  if (notes_) notes_->record(row);
 }
 
 void PlotScene::observe(std::span<const double> row) {
@@ -48,6 +61,7 @@ void PlotScene::observe(std::span<const double> row) {
 
 void PlotScene::record_between(std::span<const double> row) {
   for (auto& panel : panels_) panel.record(row);
+  if (notes_) notes_->record(row);
 }
 
 void PlotScene::observe_between(std::span<const double> row) {
@@ -69,10 +83,11 @@ void PlotScene::prepare() {
 
 void PlotScene::draw_static(render::Canvas& canvas) {
   canvas.clear(style_.colors.background);
+  heading_.draw(canvas, style_.colors.wire);
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw_static(canvas, i + 1 == panels_.size());
-  if (!legend_.empty()) legend_.draw_static(canvas, {area_.w - 4 * canvas.scale(), 44 * canvas.scale()});
+  if (!legend_.empty()) legend_.draw_static(canvas, {area_.w - 4 * canvas.scale(), area_.y + 44 * canvas.scale()});
   if (!style_.caption.empty())  // one line under the time axis: shrunk, or cut short, to the width
-    render::draw_caption(canvas, {16 * canvas.scale(), area_.h - 6 * canvas.scale()},
+    render::draw_caption(canvas, {16 * canvas.scale(), area_.y + area_.h - 6 * canvas.scale()},
                          render::fit_caption(canvas, style_.caption, area_.w - 32 * canvas.scale(),
                                              {15, style_.colors.wire.with_alpha(0.75)}, 1));
 }
@@ -92,9 +107,11 @@ void PlotScene::draw(render::Canvas& canvas, std::span<const double> row) {
   prepare();
   background_.paint(canvas, progress_to(row[0]));
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw(canvas, row[0], row, i + 1 == panels_.size());
-  if (!legend_.empty()) legend_.draw(canvas, {area_.w - 4 * canvas.scale(), 44 * canvas.scale()}, row[0]);
+  if (!legend_.empty()) legend_.draw(canvas, {area_.w - 4 * canvas.scale(), area_.y + 44 * canvas.scale()}, row[0]);
   // The read-out sits top right: the panel's y label is top left.
-  draw_readout(canvas, {area_.w * 0.55, 0, area_.w * 0.45, 40}, row[0], style_);
+  draw_readout(canvas, {area_.w * 0.55, area_.y, area_.w * 0.45, 40}, row[0], style_);
+  if (notes_)
+    notes_->draw_panel_notes(canvas, row[0], [this](size_t i) { return i < panels_.size() ? &panels_[i].plot() : nullptr; });
 }
 
 }  // namespace vibra::scenes

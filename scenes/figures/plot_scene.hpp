@@ -3,6 +3,8 @@
 #include <vector>
 
 #include "scenes/diagrams/diagram.hpp"
+#include "scenes/frame_heading.hpp"
+#include "scenes/note_callouts.hpp"
 #include "scenes/panels/series_panel.hpp"
 #include "scenes/run_legend.hpp"
 #include "scenes/scene.hpp"
@@ -34,10 +36,12 @@ class PlotScene final : public Scene {
   StaticLayer::Grow progress_to(double t);
 
   SceneStyle style_;
+  FrameHeading heading_;
   render::PixelRect area_;
   RunLegend legend_;
   std::vector<SeriesPanel> panels_;
   StaticLayer background_;
+  std::optional<NoteCallouts> notes_;
   bool prepared_ = false;
 };
 

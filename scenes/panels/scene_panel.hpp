@@ -2,6 +2,7 @@
 #include <span>
 
 #include "render/draw/canvas.hpp"
+#include "render/plot/plot_panel.hpp"
 #include "scenes/static_layer.hpp"
 
 namespace vibra::scenes {
@@ -25,6 +26,9 @@ class ScenePanel {
   /// Whether the horizontal axis is time (shared by the stacked time panels:
   /// only the lowest labels it).
   virtual bool against_time() const { return true; }
+  /// The axes and mapping of a panel against time as last drawn (a note's
+  /// arrow points into it); null for others.
+  virtual const render::PlotPanel* time_plot() const { return nullptr; }
   /// What never changes per frame, drawn once under every frame.
   virtual void draw_static(render::Canvas&, bool time_labels) const = 0;
   /// Extends what the layer under the frames keeps up to time t (from t = 0

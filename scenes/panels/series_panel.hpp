@@ -75,6 +75,7 @@ class SeriesPanel final : public ScenePanel {
   void draw(render::Canvas&, double t, std::span<const double> row, bool time_labels) const override;
   /// The panel's axes and mapping as last drawn (for tests and overlays).
   const render::PlotPanel& plot() const { return panel_; }
+  const render::PlotPanel* time_plot() const override { return &panel_; }
 
  private:
   std::pair<double, double> window_at(double t) const;

@@ -25,6 +25,8 @@ std::string models_help() {
 std::string model_keys_help(const ModelDefinition& model) {
   std::string out = "Model " + model.name + ": " + model.summary + "\nColumns: ";
   for (size_t i = 0; i < model.columns.size(); ++i) out += (i ? "," : "") + model.columns[i];
+  // As render --equation typesets it (the LaTeX subset of docs/drawing.md).
+  out += "\nEquation: " + model.equation;
   out += "\n\nKeys (--set KEY=VALUE; values may be expressions such as 2*pi/40):\n";
   char line[512];
   const Parameters parameters = model_parameters(model);

@@ -33,6 +33,9 @@ struct RenderOptions {
   std::string compare;
   std::string panels;
   bool energy_bars = false;
+  std::optional<std::string> title;
+  bool equation = false;
+  std::vector<std::string> notes;
   std::optional<std::string> at;  ///< a time: a number or an expression, as --set values take
   std::string segment;
   std::vector<std::string> slow, pauses;
@@ -68,6 +71,7 @@ std::string scene_keys_help() {
          "  vibra render --at 3.2 -o still.svg\n"
          "  vibra render --slow 2-4:4 --pause 3:1 -o lecture.mp4  # t = 2..4 four times slower, t = 3 held 1 s\n"
          "  vibra render spring_dashpot --panels u,phase,energy --energy-bars --at 5 -o still.png\n"
+         "  vibra render --title \"The damped pendulum\" --equation --note \"2-4: drag takes energy out @theta\"\n"
          "  vibra render --segment 1/3 -o lecture.mp4             # lecture.seg-1-of-3.mp4; then vibra concat\n"
          "  vibra render --set periods=40 -o lecture.html        # video, zoomable plots, CSV\n"
          "  vibra render spring --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 -o schemes.mp4\n"
@@ -109,6 +113,9 @@ void run(const RenderOptions& o) {
   for (const auto& range : o.slow) scenes::apply_setting(request.scene, {"slow", range, "--slow"});
   for (const auto& pause : o.pauses) scenes::apply_setting(request.scene, {"pause", pause, "--pause"});
   if (o.energy_bars) request.scene.energy_bars = true;
+  if (o.title) scenes::apply_setting(request.scene, {"title", *o.title, "--title"});
+  if (o.equation) request.scene.equation = true;
+  for (const auto& note : o.notes) scenes::apply_setting(request.scene, {"notes", note, "--note"});
   if (o.frame_per_step) request.scene.frame_per_step = true;
   request.output = o.output.empty() ? request.scene.name + ".mp4" : o.output;
   if (o.at) request.at = still_time(*o.at);
@@ -156,6 +163,13 @@ void add_render_command(CLI::App& app) {
                   "(each measured period against the exact one); default: the system's own");
   cmd->add_flag("--energy-bars", o->energy_bars,
                 "Kinetic, potential and dissipated energy as bars beside the diagram, on one scale over the run");
+  cmd->add_option("--title", o->title, "A title across the top of the frame (text; $math$ in the LaTeX subset)");
+  cmd->add_flag("--equation", o->equation,
+                "The model's equation of motion typeset under the title; with --compare scheme=..., each scheme's "
+                "update formula under its legend entry");
+  cmd->add_option("--note", o->notes,
+                  "\"T0-T1: TEXT\": a callout shown for T0 <= t <= T1 (TEXT may hold $math$; \"... @PANEL\" points at "
+                  "that panel's curve at T0, e.g. @theta or @2); repeatable");
   cmd->add_flag("--frames-player", o->frames_player, "With -o PAGE.html: PNG frames and a page that steps through them");
   cmd->add_option("--every", o->every, "With -o PAGE.html: the CSV beside the page keeps every K-th step (and the last)")
       ->check(ranged("--every"));

@@ -47,6 +47,10 @@ struct SchemeInfo {
   /// Chooses its own steps from rtol and atol: the samples fall at uneven
   /// times, and dt only sets the grid of frames and pages.
   bool adaptive = false;
+  /// The update formula in the typesetter's LaTeX subset (docs/schemes.md),
+  /// written for u' = v, v' = a(u, v, t) with a^n = a(u^n, v^n, t_n), or for
+  /// y' = f(y), y = (u, v); lines separated by \\.
+  std::string_view formula = {};
 };
 
 /// Every scheme, in the order `--help` lists them.

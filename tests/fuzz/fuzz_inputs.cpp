@@ -7,8 +7,12 @@
 #include "core/error.hpp"
 #include "core/expression.hpp"
 #include "core/models/model.hpp"
+#include "render/typeset/formula_draw.hpp"
+#include "render/typeset/formula_layout.hpp"
+#include "render/typeset/formula_parser.hpp"
 #include "scenes/frame_clock.hpp"
 #include "scenes/lecture/storyboard.hpp"
+#include "scenes/note.hpp"
 #include "scenes/scene_config.hpp"
 
 namespace vibra::fuzz {
@@ -103,6 +107,20 @@ void expression(std::string_view text) {
       for (double t : {0.0, 2.5, -inf}) (void)f({u, t});
   });
   expecting_user_errors([&] { (void)evaluate_constant("dt", source); });
+}
+
+void formula(std::string_view text) {
+  // One canvas for every input: the fuzzer's time goes into the typesetter.
+  static render::Canvas canvas = render::Canvas::image(96, 48);
+  expecting_user_errors([&] {
+    const render::MathBox box = render::layout_formula(canvas, render::parse_formula(text), {14});
+    render::draw_math(canvas, box, {2, 2 + box.ascent}, {});
+  });
+  expecting_user_errors([&] {
+    const render::MathBox box = render::layout_rich_text(canvas, render::parse_rich_text(text), {14}, 60);
+    render::draw_math(canvas, box, {2, 2 + box.ascent}, {});
+  });
+  expecting_user_errors([&] { (void)scenes::parse_note(std::string(text)); });
 }
 
 }  // namespace vibra::fuzz

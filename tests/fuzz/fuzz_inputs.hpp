@@ -19,6 +19,9 @@ void storyboard(std::string_view text);
 void set_assignments(std::string_view text);
 /// An expression in u and t, compiled and evaluated; also as a constant.
 void expression(std::string_view text);
+/// A formula in the LaTeX subset, parsed, laid out and drawn on a small
+/// picture; the same text as a note's rich text (words and $math$).
+void formula(std::string_view text);
 /// A command line, one argument per line (the first names the command), run
 /// in this process as `vibra` runs it, with a tiny picture, files in a
 /// scratch folder, output in memory and a stop after 1.5 s; exit code 0, 2

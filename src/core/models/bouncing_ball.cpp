@@ -41,6 +41,8 @@ std::function<double(double)> exact_height(double h0, double V, double g, double
 ModelDefinition bouncing_ball_model() {
   ModelDefinition m;
   m.name = "bouncing-ball";
+  m.equation = R"(h'' = -g,\quad h'\to -C_R h' \text{ at } h = 0)";
+  m.time_unit = "s";
   m.summary = "ball bouncing on the ground, h'' = -g, restitution C_R (section 1.12.9); impacts located exactly";
   m.keys = {
       {"h0", ValueKind::number, "1", "m", "initial height h(0) >= 0", {}, {}},

@@ -38,6 +38,8 @@ RoadProfile road_of(const Parameters& p, double length) {
 ModelDefinition bumpy_road_model() {
   ModelDefinition m;
   m.name = "bumpy-road";
+  m.equation = R"(m u'' + b u' + k u = -m h''(s t) s^2)";
+  m.time_unit = "s";
   m.summary = "vehicle on a bumpy road, m u'' + b u' + k u = -m h''(s t) s^2 (section 1.12.8), SI units";
   m.keys = {
       {"m", ValueKind::number, "60", "kg", "mass carried by the wheel", {}, {}},

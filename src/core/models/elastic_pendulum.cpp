@@ -10,6 +10,14 @@ namespace vibra {
 ModelDefinition elastic_pendulum_model() {
   ModelDefinition m;
   m.name = "elastic-pendulum";
+  m.equation = R"(x'' = -\frac{\beta}{1 - \beta}(1 - \frac{\beta}{L})x,\quad L = \sqrt{x^2 + (y - 1)^2} \\ y'' = -\frac{\beta}{1 - \beta}(1 - \frac{\beta}{L})(y - 1) - \beta)";
+  m.equation_for = [](const Parameters& p) -> std::string {
+    if (p.number("gamma") == 0)
+      return R"(x'' = -\frac{\beta}{1 - \beta}(1 - \frac{\beta}{L})x,\quad L = \sqrt{x^2 + (y - 1)^2} \\ )"
+             R"(y'' = -\frac{\beta}{1 - \beta}(1 - \frac{\beta}{L})(y - 1) - \beta)";
+    return R"(x'' = -\frac{\beta}{1 - \beta}(1 - \frac{\beta}{L})x - \frac{\gamma}{\beta}|v|x',\quad L = \sqrt{x^2 + (y - 1)^2} \\ )"
+           R"(y'' = -\frac{\beta}{1 - \beta}(1 - \frac{\beta}{L})(y - 1) - \beta - \frac{\gamma}{\beta}|v|y')";
+  };
   m.summary = "pendulum on an elastic wire (1.148), scaled, with optional air drag (Exercise 1.27); "
               "steps_per_period and periods use the book's period P = 2 pi (Exercise 1.26)";
   m.keys = {

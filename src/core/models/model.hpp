@@ -19,7 +19,18 @@ struct ModelDefinition {
   std::vector<std::string> columns;
   TimeDefaults time_defaults;
   std::function<std::unique_ptr<Trajectory>(const Parameters&)> build;
+  /// The equation of motion in the typesetter's LaTeX subset (docs/drawing.md),
+  /// e.g. "u'' + \omega^2 u = 0", as the book writes it.
+  std::string equation;
+  /// The equation for given settings, when they change its form (the damping
+  /// law chosen, a force of zero); unset: `equation` whatever the settings.
+  std::function<std::string(const Parameters&)> equation_for;
+  /// The unit of time of a model in SI units ("s"); "" for a scaled model.
+  std::string time_unit;
 };
+
+/// The model's equation of motion for these settings (ModelDefinition::equation_for, else equation).
+std::string model_equation(const ModelDefinition&, const Parameters&);
 
 /// Every model, in the order `--help` lists them.
 const std::vector<ModelDefinition>& all_models();

@@ -63,6 +63,11 @@ std::unique_ptr<Trajectory> pendulum_trajectory(const Parameters& p, const std::
 ModelDefinition pendulum_model() {
   ModelDefinition m;
   m.name = "pendulum";
+  m.equation = R"(\theta'' + \alpha|\theta'|\theta' + \sin\theta = 0)";
+  m.equation_for = [](const Parameters& p) -> std::string {
+    if (p.given("alpha") && p.number("alpha") == 0) return R"(\theta'' + \sin\theta = 0)";
+    return R"(\theta'' + \alpha|\theta'|\theta' + \sin\theta = 0)";
+  };
   m.summary = "pendulum with quadratic air drag, scaled (1.131); wire force S and drag D in units of mg";
   m.keys = angle_keys("70");
   std::vector<KeySpec> more = {
@@ -99,6 +104,7 @@ ModelDefinition pendulum_model() {
 ModelDefinition physical_pendulum_model() {
   ModelDefinition m;
   m.name = "physical-pendulum";
+  m.equation = R"(I_P\theta'' + c|\theta'|\theta' + M g L_{cm}\sin\theta = 0)";
   m.summary = "rod with mass (and an optional bob) swinging about its end, with air drag on the bob";
   m.keys = angle_keys("70");
   std::vector<KeySpec> more = {

@@ -32,6 +32,15 @@ Parameters model_parameters(const ModelDefinition& model) {
   return Parameters("model " + model.name, std::move(keys));
 }
 
+std::string model_equation(const ModelDefinition& model, const Parameters& p) {
+  if (!model.equation_for) return model.equation;
+  try {
+    return model.equation_for(p);
+  } catch (const UsageError&) {
+    return model.equation;  // a setting the run itself will refuse: the general form meanwhile
+  }
+}
+
 Parameters model_settings(const std::string& model_name, const std::vector<std::string>& assignments) {
   Parameters p = model_parameters(find_model(model_name));
   for (const auto& a : assignments) p.assign(a);

@@ -38,6 +38,10 @@ double steady_amplitude(double beta, double gamma) {
 ModelDefinition resonance_model() {
   ModelDefinition m;
   m.name = "resonance";
+  m.equation = R"(u'' + \beta u' + u = \sin(\gamma t))";
+  m.equation_for = [](const Parameters& p) -> std::string {
+    return p.number("beta") == 0 ? R"(u'' + u = \sin(\gamma t))" : R"(u'' + \beta u' + u = \sin(\gamma t))";
+  };
   m.summary = "u'' + beta u' + u = sin(gamma t), forced vibration scaled (section 1.12.4; the washing machine)";
   m.keys = {
       {"beta", ValueKind::number, "0.05", "", "damping b/(m w), 2 zeta", {}, {}},

@@ -13,6 +13,13 @@ namespace vibra {
 ModelDefinition rlc_model() {
   ModelDefinition m;
   m.name = "rlc";
+  m.equation = R"(L q'' + R q' + \frac{q}{C} = V(t),\quad I = q')";
+  m.equation_for = [](const Parameters& p) -> std::string {
+    const bool driven = p.has_value("V") && VibrationLaw::unless_zero(p.formula("V"));
+    return std::string(p.number("R") == 0 ? R"(L q'' + \frac{q}{C})" : R"(L q'' + R q' + \frac{q}{C})") +
+           (driven ? " = V(t)" : " = 0") + R"(,\quad I = q')";
+  };
+  m.time_unit = "s";
   m.summary = "series RLC circuit L q'' + R q' + q/C = V(t), I = q' (section 1.12.11)";
   m.keys = {
       {"L", ValueKind::number, "1", "H", "inductance L > 0", {}, {}},

@@ -31,6 +31,11 @@ std::function<double(double)> released_from_rest(double I, double mu) {
 ModelDefinition sliding_box_model() {
   ModelDefinition m;
   m.name = "sliding-box";
+  m.equation = R"(u'' + \mu\,\mathrm{sign}(u') + s(u) = 0)";
+  m.equation_for = [](const Parameters& p) -> std::string {
+    if (p.number("alpha") == 0) return R"(u'' + \mu\,\mathrm{sign}(u') + u = 0)";
+    return R"(u'' + \mu\,\mathrm{sign}(u') + \frac{\tanh(\alpha u)}{\alpha} = 0)";
+  };
   m.summary = "box on a spring sliding with Coulomb friction, scaled (section 1.12.3); turning points located exactly";
   m.keys = {
       {"mu", ValueKind::number, "0.08", "", "friction mu m g / (k I): against the initial spring force", {}, {}},

@@ -9,6 +9,7 @@ namespace vibra {
 ModelDefinition two_body_model() {
   ModelDefinition m;
   m.name = "two-body";
+  m.equation = R"(\mathbf{x}'' = -\frac{\mathbf{x}}{|\mathbf{x}|^3})";
   m.summary = "planet around a heavy star, scaled x'' = -x/|x|^3 (Exercise 1.28); default: circular orbit";
   m.keys = {
       {"x0", ValueKind::number, "1", "", "initial x", {}, {}},

@@ -10,6 +10,7 @@ namespace vibra {
 ModelDefinition undamped_model() {
   ModelDefinition m;
   m.name = "undamped";
+  m.equation = R"(u'' + \omega^2 u = 0)";
   m.summary = "u'' + w^2 u = 0, the undamped oscillator of section 1.1";
   m.keys = {
       {"I", ValueKind::number, "1", "length", "initial displacement u(0)", {}, {}},

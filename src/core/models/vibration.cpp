@@ -37,6 +37,15 @@ double reach(const std::function<double(double)>& potential, double u0, double E
 ModelDefinition vibration_model() {
   ModelDefinition m;
   m.name = "vibration";
+  m.equation = R"(m u'' + f(u') + s(u) = F(t))";
+  // The damping and spring chosen, written out: b u' or b|u'|u', k u or s(u), F(t) or 0.
+  m.equation_for = [](const Parameters& p) {
+    const std::string damping = p.choice("damping");
+    std::string f = p.number("b") == 0 || damping == "none" ? "" : damping == "linear" ? R"( + b u')" : R"( + b|u'|u')";
+    const std::string s = p.given("s") ? " + s(u)" : " + k u";
+    const bool forced = p.has_value("F") && VibrationLaw::unless_zero(p.formula("F"));
+    return R"(m u'')" + f + s + (forced ? " = F(t)" : " = 0");
+  };
   m.summary = "m u'' + f(u') + s(u) = F(t), the generalized model (1.71)";
   m.keys = {
       {"m", ValueKind::number, "1", "mass", "mass", {}, {}},
