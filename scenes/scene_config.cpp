@@ -373,18 +373,7 @@ SceneConfig load_scene(const std::string& name_or_path) {
       throw UsageError("no scene '" + name_or_path + "': give a scene file (.toml), a built-in scene (" + names +
                        ") or a model name (vibra solve --help lists them)");
     }
-    errno = 0;
-    std::ifstream in(name_or_path, std::ios::binary);
-    if (!in) {
-      const int error = errno ? errno : EACCES;
-      throw UsageError("cannot read the scene file '" + quoted_value(name_or_path, 80) + "': " + std::strerror(error) +
-                       (error == EACCES ? ": give vibra read permission (chmod a+r) or copy it" : ""));
-    }
-    note_input_file(name_or_path, "the scene file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) throw UsageError("cannot read the scene file '" + quoted_value(name_or_path, 80) + "': " + std::strerror(errno));
-    text = buffer.str();
+    text = read_input_file(name_or_path, "the scene file", "the scene file");
     file = name_or_path;
   }
   return parse_scene(text, file);

@@ -110,13 +110,15 @@ TEST_CASE("adversarial: empty and malformed values of every kind of option", "[c
       // Work without bound is refused with the size it would need (3).
       {"render bumpy_road --set speed=1e12 -o OUT.mp4", "heights, more than 2e7"},
       {"render bumpy_road --set dx=1e-12 -o OUT.mp4", "heights, more than 2e7"},
+      {"render bumpy_road --set dx=1e9 -o OUT.mp4", "coarser than the road's shape"},
+      {"render bumpy_road --set road=bumps --set wavelength=1e-6 --set dx=1 -o OUT.mp4", "coarser than the road's shape"},
       {"solve pendulum --set T=1e15 --set dt=1e-9 -o OUT.csv", "too many"},
       // A window below a time step: once heap corruption, once an endless tick loop (2).
       {"render --window 1e-300 --at 0.5 -o OUT.png", "narrower than one time step"},
       {"render --window 1e-16 --set periods=0.2 -o OUT.mp4", "narrower than one time step"},
   };
   for (const auto& c : cases) check_refused(c.args, c.expected);
-  CHECK(std::size(cases) == 39);
+  CHECK(std::size(cases) == 41);
 }
 
 TEST_CASE("adversarial: long values and newlines are quoted shortened, on one line", "[cli][adversarial]") {
@@ -165,6 +167,31 @@ TEST_CASE("adversarial: outputs onto folders and into read-only places", "[cli][
   }
   for (const char* folder : {"folder.csv", "folder.mp4", "folder.png", "folder.html"}) CHECK(fs::is_empty(dir / folder));
   CHECK_FALSE(fs::exists("/proc/vibra_adversarial.csv"));
+}
+
+TEST_CASE("adversarial: files vibra may not read or write are refused as such, naming them", "[cli][adversarial]") {
+  ScratchDirectory dir;
+  const auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    fs::permissions(dir / name, fs::perms::none);
+    return dir / name;
+  };
+  const std::string scene = write("scene.toml", "model = \"pendulum\"\n");
+  const std::string road = write("road.txt", "0\n0.01\n0\n0.02\n0\n");
+  const std::string storyboard = write("lecture.toml", "[[shot]]\ncard = \"A\"\nseconds = 1\n");
+  fs::create_directory(dir / "read_only");
+  fs::permissions(dir / "read_only", fs::perms::owner_read | fs::perms::owner_exec);
+  // Root reads and writes every file: without the two capabilities that let
+  // it, it meets the permissions as any other user does.
+  const std::string launcher = ::geteuid() == 0 ? "setpriv --bounding-set=-dac_override,-dac_read_search " : "";
+  const std::string denied = "Permission denied: give vibra read permission (chmod a+r) or copy it";
+  check_refused("render " + scene + " --at 1 -o OUT.png", "cannot read the scene file '" + scene + "': " + denied, launcher);
+  check_refused("solve bumpy-road --set road=" + road + " --set dx=0.1 -o OUT.csv",
+                "cannot read the road file '" + road + "': " + denied, launcher);
+  check_refused("lecture " + storyboard + " -o OUT.mp4", "cannot read the storyboard '" + storyboard + "': " + denied,
+                launcher);
+  check_refused("solve pendulum -o " + (dir / "read_only/out.csv"), "is not writable", launcher);
+  CHECK(fs::is_empty(dir / "read_only"));
 }
 
 TEST_CASE("adversarial: concat of broken parts, or onto a part, writes nothing", "[cli][adversarial][video]") {

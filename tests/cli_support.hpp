@@ -31,12 +31,13 @@ inline std::string exact_text(double x) {
   return text;
 }
 
-/// Runs `vibra ARGS` through the shell, capturing stdout and stderr.
-inline CommandResult run_vibra(const std::string& args) {
+/// Runs `vibra ARGS` through the shell, capturing stdout and stderr;
+/// `launcher` goes before the executable (`setpriv ...`).
+inline CommandResult run_vibra(const std::string& args, const std::string& launcher = "") {
   static int counter = 0;
   const auto dir = std::filesystem::temp_directory_path();
   const std::string err_path = (dir / ("vibra_cli_err_" + std::to_string(::getpid()) + "_" + std::to_string(counter++))).string();
-  const std::string command = std::string(VIBRA_EXE) + " " + args + " 2>" + err_path;
+  const std::string command = launcher + VIBRA_EXE + " " + args + " 2>" + err_path;
   CommandResult result;
   std::FILE* pipe = ::popen(command.c_str(), "r");
   std::array<char, 4096> buffer;
@@ -160,13 +161,13 @@ struct ScratchDirectory {
 /// Checks that `vibra ARGS` refuses bad input as every command must: exit
 /// code 2, one line on stderr containing `expected`, nothing written. Each
 /// OUT in `args` becomes a path in a fresh directory, which must stay empty.
-inline void check_refused(std::string args, const std::string& expected) {
+inline void check_refused(std::string args, const std::string& expected, const std::string& launcher = "") {
   ScratchDirectory dir;
   // From past each replacement: the scratch folder's random name may itself hold "OUT".
   const std::string out = dir / "out";
   for (auto at = args.find("OUT"); at != std::string::npos; at = args.find("OUT", at + out.size())) args.replace(at, 3, out);
   INFO("vibra " << args);
-  const auto r = run_vibra(args);
+  const auto r = run_vibra(args, launcher);
   INFO("stderr: " << r.err);
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.err, Catch::Contains(expected));

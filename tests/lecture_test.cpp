@@ -46,7 +46,7 @@ seconds = 0.5
 )";
 
 const std::string kCues = "WEBVTT\n\nNOTE written by vibra lecture\n\n"
-                          "1\n00:00:00.000 --> 00:00:01.000\nSprings\nu'' + \xcf\x89^2 u = 0\n\n"
+                          "1\n00:00:00.000 --> 00:00:01.000\nSprings\nu\u2033 + \u03c9\u00b2u = 0\n\n"
                           "2\n00:00:01.500 --> 00:00:03.500\nheld here\n\n"
                           "3\n00:00:04.100 --> 00:00:04.600\nThe end\n";
 
@@ -148,7 +148,7 @@ TEST_CASE("bad storyboards: one line naming the file, shot and key, exit 2, noth
       {head + "[[shot]]\nscene = \"pendulum\"\nset = { alpha = \"x\" }\n", "shot 1, alpha"},
       {head + "[[shot]]\nscene = \"pendulum\"\nseconds = -1\n", "shot 1, seconds: must be a number of seconds above 0"},
       {head + "[[shot]]\nscene = \"pendulum\"\nseconds = 2\nspeed = 1\n", "shot 1, seconds: and speed both set"},
-      {head + "[[shot]]\nscene = \"pendulum\"\nnotes = [\"later\"]\n", "shot 1, notes: note 'later' is not \"T0-T1: text\""},
+      {head + "[[shot]]\nscene = \"pendulum\"\nnotes = [\"later\"]\n", "shot 1, notes: note 'later' does not start with a time range"},
       {head + "[[shot]]\nscene = \"spring\"\nset = { T = 2 }\nnotes = [\"1-3: late\"]\n", "shot 1: note 1-3 reaches past the run's end"},
       {head + "[[shot]]\nscene = \"spring\"\nset = { T = 2 }\npause = [{ at = 5, seconds = 1 }]\n", "shot 1: pause 5:1 lies past the run's end"},
       {head + "[[shot]]\nscene = \"spring\"\nslow = [\"2-4:0\"]\n", "shot 1, slow: slow motion '2-4:0': the factor must be above 0"},
@@ -163,6 +163,10 @@ TEST_CASE("bad storyboards: one line naming the file, shot and key, exit 2, noth
       {"fps = 0\n[[shot]]\ncard = \"A\"\n", "story.toml:1: fps: must be a whole number"},
       {head + "[[shot]]\ncard = \"A\"\nseconds = \"long\"\n", "shot 1, seconds: must be a number"},
       {head + "[[shot\n", "story.toml:3:"},
+      // Cards are typeset: bad LaTeX is refused at its line, before any work.
+      {head + "[[shot]]\ncard = \"Drag $\\\\alpha\"\n", "story.toml:4: shot 1, card: text 'Drag $\\alpha': a $ opens math that is never closed"},
+      {head + "[[shot]]\nequation = \"\\\\frac{a}{b\"\n", "story.toml:4: shot 1, equation: formula '\\frac{a}{b': a { is never closed"},
+      {"title = \"$x^}$\"\n[[shot]]\ncard = \"A\"\n", "story.toml:1: title: "},
       {head + "shot = 3\n", "shot: no shots"},
   };
   for (const Case& c : cases) {

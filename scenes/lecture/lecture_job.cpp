@@ -21,9 +21,10 @@
 #include "render/output/stop_signal.hpp"
 #include "render/output/temporary_file.hpp"
 #include "render/page/html_page.hpp"
-#include "scenes/lecture/card_text.hpp"
+#include "render/typeset/formula_text.hpp"
 #include "scenes/lecture/storyboard.hpp"
 #include "scenes/lecture/title_card.hpp"
+#include "scenes/note.hpp"
 #include "scenes/render_job.hpp"
 #include "scenes/scene_factory.hpp"
 #include "scenes/time_map.hpp"
@@ -76,8 +77,8 @@ PlannedShot plan_card(const Storyboard& board, const Shot& shot) {
   PlannedShot p;
   p.shot = &shot;
   p.frames = std::max(1LL, std::llround(*shot.seconds * board.fps));
-  std::string text = card_plain_text(shot.card, false);
-  const std::string equation = card_plain_text(shot.equation, true);
+  std::string text = render::rich_text_plain(shot.card);
+  const std::string equation = render::formula_plain_text(shot.equation);
   if (!equation.empty()) text += (text.empty() ? "" : "\n") + equation;
   p.cues.push_back({0, double(p.frames) / board.fps, text});
   return p;
@@ -95,7 +96,8 @@ PlannedShot plan_scene(const Storyboard& board, const Shot& shot) {
   const double end_time = p.scene.frame_per_step ? double(mesh.steps) * mesh.dt : mesh.T;
   const TimeMap map(end_time, video_rate_of(p.scene, mesh), p.scene.pacing);
   const double length = double(p.frames) / board.fps;
-  for (const ShotNote& note : shot.notes) {
+  for (const std::string& spec : p.scene.notes) {
+    const Note note = parse_note(spec);
     if (note.to > end_time * (1 + 1e-12)) {
       char text[160];
       std::snprintf(text, sizeof text, "note %g-%g reaches past the run's end T = %g: end it at most there",
@@ -105,7 +107,8 @@ PlannedShot plan_scene(const Storyboard& board, const Shot& shot) {
     // Shown while simulated time is in [from, to): a pause at `to` belongs to the next note, so notes that
     // meet never overlap (MP4's subtitles cannot).
     const double end = note.to >= end_time ? length : map.first_video_time(note.to);
-    p.cues.push_back({map.first_video_time(note.from), std::min(length, end), note.text});
+    const double start = map.first_video_time(note.from);
+    if (std::min(length, end) > start) p.cues.push_back({start, std::min(length, end), render::rich_text_plain(note.text)});
   }
   return p;
 }
@@ -285,7 +288,7 @@ void run_lecture(const LectureRequest& r) {
     for (std::size_t i = 0; i < kinds.size(); ++i) clip_files[i].push_back(files[i]);
   }
 
-  const std::map<std::string, std::string> metadata = {{"title", board.title},
+  const std::map<std::string, std::string> metadata = {{"title", render::rich_text_plain(board.title)},
                                                        {"comment", "vibra lecture " + r.storyboard}};
   long long frames = 0;
   for (const auto& c : chapters) frames = c.end_frame;
@@ -309,7 +312,7 @@ void run_lecture(const LectureRequest& r) {
   for (std::size_t i = 0; i < kinds.size(); ++i)
     render::join_clips(clip_files[i], staged.path() / (stem + kinds[i]), fps, chapters, cues, metadata);
   render::LecturePage lecture;
-  lecture.title = board.title;
+  lecture.title = render::rich_text_plain(board.title);
   render::PageMedia& media = lecture.media;
   media.kind = render::PageMedia::Kind::video;
   media.width = board.width + (board.width & 1), media.height = board.height + (board.height & 1);

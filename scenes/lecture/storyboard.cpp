@@ -16,6 +16,9 @@
 #include "core/input_files.hpp"
 #include "core/parameters.hpp"
 #include "core/quoted_value.hpp"
+#include "render/typeset/formula_parser.hpp"
+#include "render/typeset/formula_text.hpp"
+#include "scenes/note.hpp"
 #include "scenes/scene_table.hpp"
 
 namespace fs = std::filesystem;
@@ -81,21 +84,36 @@ std::string source_text(const toml::table& shot) {
 /// The first line of a card's text, for its chapter title.
 std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
 
+/// A text value that vibra typesets: a formula (`math`) or text with $math$,
+/// checked here so that bad LaTeX is refused at its line before any work.
+std::string typeset_value(const toml::node& node, const Place& at, bool math) {
+  std::string text = text_value(node, at);
+  try {
+    if (math) render::parse_formula(text);
+    else render::parse_rich_text(text);
+  } catch (const UsageError& e) {
+    at.refuse(e.what());
+  }
+  return text;
+}
+
 Shot card_shot(const toml::table& table, const std::string& file, int number) {
   Shot shot;
   shot.number = number;
   shot.is_card = true;
   for (auto&& [key, node] : table) {
     const Place at{file, number, std::string(key.str()), int(node.source().begin.line)};
-    if (at.key == "card") shot.card = text_value(node, at);
-    else if (at.key == "equation") shot.equation = text_value(node, at);
-    else if (at.key == "title") shot.title = text_value(node, at);
+    if (at.key == "card") shot.card = typeset_value(node, at, false);
+    else if (at.key == "equation") shot.equation = typeset_value(node, at, true);
+    else if (at.key == "title") shot.title = render::rich_text_plain(typeset_value(node, at, false));
     else if (at.key == "seconds") shot.seconds = seconds_value(node, at);
     else refuse_key(at, kCardKeys, "a title card (a scene key belongs to a shot with scene = ...)");
   }
   if (shot.card.empty() && shot.equation.empty())
     Place{file, number, "card", 0}.refuse("is empty: give the card's text, e.g. card = \"The damped pendulum\"");
-  if (shot.title.empty()) shot.title = first_line(shot.card.empty() ? shot.equation : shot.card);
+  if (shot.title.empty())
+    shot.title = first_line(shot.card.empty() ? render::formula_plain_text(shot.equation)
+                                              : render::rich_text_plain(shot.card));
   if (!shot.seconds) shot.seconds = 3;
   return shot;
 }
@@ -127,7 +145,7 @@ Shot scene_shot(const toml::table& table, const std::string& file, const std::st
   for (auto&& [key, node] : table) {
     const Place at{file, number, std::string(key.str()), int(node.source().begin.line)};
     if (at.key == "scene") continue;
-    if (at.key == "title") shot.title = text_value(node, at);
+    if (at.key == "title") shot.title = render::rich_text_plain(typeset_value(node, at, false));
     else if (at.key == "seconds") shot.seconds = seconds_value(node, at);
     else if (at.key == "set") {
       if (!node.is_table()) at.refuse("must be a table of keys, e.g. set = { Theta = 40, alpha = 0.8 }");
@@ -137,7 +155,10 @@ Shot scene_shot(const toml::table& table, const std::string& file, const std::st
       if (!notes) at.refuse("must be a list of \"T0-T1: text\", e.g. notes = [\"2-4: drag takes energy out\"]");
       for (const toml::node& note : *notes) {
         try {
-          shot.notes.push_back(parse_shot_note(text_value(note, at)));
+          // A note is the scene's callout (render --note) and a subtitle while it shows.
+          const std::string spec = text_value(note, at);
+          (void)parse_note(spec);
+          shot.scene.notes.push_back(spec);
         } catch (const UsageError& e) {
           at.refuse(e.what());
         }
@@ -164,31 +185,6 @@ Shot scene_shot(const toml::table& table, const std::string& file, const std::st
 }
 }  // namespace
 
-ShotNote parse_shot_note(const std::string& text) {
-  const auto colon = text.find(':');
-  const std::string range = text.substr(0, colon);
-  const auto dash = range.find('-', 1);
-  auto number = [](const std::string& s) {
-    std::string t = s;
-    while (!t.empty() && t.back() == ' ') t.pop_back();
-    while (!t.empty() && t.front() == ' ') t.erase(0, 1);
-    double x = NAN;
-    const auto [at, error] = std::from_chars(t.data(), t.data() + t.size(), x);
-    return t.empty() || error != std::errc() || at != t.data() + t.size() ? NAN : x;
-  };
-  ShotNote note;
-  note.from = dash == std::string::npos ? NAN : number(range.substr(0, dash));
-  note.to = dash == std::string::npos ? NAN : number(range.substr(dash + 1));
-  std::string body = colon == std::string::npos ? "" : text.substr(colon + 1);
-  while (!body.empty() && body.front() == ' ') body.erase(0, 1);
-  if (colon == std::string::npos || !std::isfinite(note.from) || !std::isfinite(note.to) || body.empty())
-    throw UsageError("note '" + quoted_value(text) + "' is not \"T0-T1: text\": write e.g. \"2-4: drag takes energy out\"");
-  if (note.from < 0 || note.to <= note.from)
-    throw UsageError("note '" + quoted_value(text) + "': its times must run forward from t >= 0, e.g. \"2-4: ...\"");
-  note.text = body;
-  return note;
-}
-
 Storyboard parse_storyboard(const std::string& text, const std::string& file, const std::string& folder) {
   if (text.find('\0') != std::string::npos) throw UsageError(file + ": is a binary file, not a TOML storyboard");
   toml::table table;
@@ -204,7 +200,7 @@ Storyboard parse_storyboard(const std::string& text, const std::string& file, co
   for (auto&& [key, node] : table) {
     const Place at{file, 0, std::string(key.str()), int(node.source().begin.line)};
     if (at.key == "title") {
-      board.title = text_value(node, at);
+      board.title = typeset_value(node, at, false);
     } else if (at.key == "size") {
       try {
         parse_size(text_value(node, at), board.width, board.height);
@@ -244,17 +240,7 @@ Storyboard load_storyboard(const std::string& path) {
   if (!fs::is_regular_file(path, ec))
     throw UsageError("no storyboard '" + quoted_value(path, 80) + "': give a TOML file of [[shot]] tables "
                      "(docs/lecture.md has an example)");
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const int error = errno ? errno : EACCES;
-    throw UsageError("cannot read the storyboard '" + quoted_value(path, 80) + "': " + std::strerror(error));
-  }
-  note_input_file(path, "the storyboard");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw UsageError("cannot read the storyboard '" + quoted_value(path, 80) + "': " + std::strerror(errno));
-  return parse_storyboard(buffer.str(), path, fs::path(path).parent_path().string());
+  return parse_storyboard(read_input_file(path, "the storyboard", "the storyboard"), path, fs::path(path).parent_path().string());
 }
 
 }  // namespace vibra::scenes

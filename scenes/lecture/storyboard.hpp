@@ -8,11 +8,6 @@
 namespace vibra::scenes {
 
 /// A note of a scene shot: text shown while simulated time runs from `from` to `to`.
-struct ShotNote {
-  double from = 0, to = 0;
-  std::string text;
-};
-
 /// One shot of a lecture: a title card, or a scene with what render accepts.
 struct Shot {
   int number = 0;      ///< 1, 2, ... in the storyboard's order
@@ -21,7 +16,6 @@ struct Shot {
   std::string card, equation;  ///< a card's text and equation (the LaTeX subset)
   SceneConfig scene;           ///< a scene shot's scene, its keys applied
   std::optional<double> seconds;  ///< the shot's length of video; a scene shot derives its speed from it
-  std::vector<ShotNote> notes;
   std::string source;  ///< the shot as written (canonical TOML), for telling renders apart
 };
 
@@ -42,7 +36,5 @@ Storyboard load_storyboard(const std::string& path);
 /// A storyboard from TOML text; `file` names it in messages, `folder` is where its scene files are.
 Storyboard parse_storyboard(const std::string& text, const std::string& file, const std::string& folder = "");
 
-/// "2-4: drag takes energy out" -> {2, 4, "drag takes energy out"}; throws UsageError.
-ShotNote parse_shot_note(const std::string& text);
 
 }  // namespace vibra::scenes

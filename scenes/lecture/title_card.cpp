@@ -1,51 +1,76 @@
 #include "scenes/lecture/title_card.hpp"
 
-#include "render/draw/text.hpp"
-#include "scenes/lecture/card_text.hpp"
+#include <algorithm>
+#include <optional>
+
+#include "render/typeset/formula_draw.hpp"
+#include "render/typeset/formula_layout.hpp"
+#include "render/typeset/formula_parser.hpp"
 
 namespace vibra::scenes {
 
 namespace {
-/// The style with its size lowered until `markup` fits `width` pixels across.
-render::TextStyle fitted(render::Canvas& canvas, const std::string& markup, render::TextStyle style, double width) {
-  const double across = render::text_size(canvas, markup, style).x();
-  if (across > width) style.size *= width / across;
-  return style;
+// 720p pixels, scaled with the canvas as labels are.
+constexpr double kLectureTitleSize = 18, kTextSize = 46, kEquationSize = 34;
+
+/// Rich text set at `size`, broken onto lines `width` pixels wide, and made
+/// smaller (down to a third) while it is taller than `most_height`.
+render::MathBox fitted_text(render::Canvas& canvas, const std::string& text, double size, bool bold, double width,
+                            double most_height) {
+  const auto runs = render::parse_rich_text(text);
+  render::MathBox box = render::layout_rich_text(canvas, runs, {size, "DejaVu Sans", bold}, width);
+  for (double shrink = 0.85; box.height() > most_height && shrink > 0.3; shrink *= 0.85)
+    box = render::layout_rich_text(canvas, runs, {size * shrink, "DejaVu Sans", bold}, width);
+  return box;
+}
+
+/// A formula set at `size`, made smaller (down to a third) to fit `width`.
+render::MathBox fitted_formula(render::Canvas& canvas, const std::string& source, double size, double width) {
+  const render::Formula formula = render::parse_formula(source);
+  render::MathBox box = render::layout_formula(canvas, formula, {size});
+  if (box.width > width) box = render::layout_formula(canvas, formula, {std::max(1.0 / 3, width / box.width) * size});
+  return box;
+}
+
+/// The origin that centres `box` across the canvas with its middle at height `y`.
+render::Point centred(const render::Canvas& canvas, const render::MathBox& box, double y) {
+  return {(canvas.width() - box.width) / 2, y - box.height() / 2 + box.ascent};
 }
 }  // namespace
 
 void draw_title_card(render::Canvas& canvas, const TitleCard& card) {
   canvas.clear(render::palette::paper);
   const double w = canvas.width(), h = canvas.height(), s = canvas.scale();
-  render::TextStyle small{18, render::palette::faint};
-  small.max_width = 0.9 * w;
-  if (!card.lecture_title.empty() && card.lecture_title != card.text)
-    render::draw_text(canvas, {w / 2, 0.1 * h}, card_markup(card.lecture_title, false), small);
-  render::TextStyle big{46, render::palette::ink};
-  render::TextStyle equation{34, render::palette::blue, "DejaVu Serif"};
+  if (!card.lecture_title.empty() && card.lecture_title != card.text) {
+    const render::MathBox title = fitted_text(canvas, card.lecture_title, kLectureTitleSize, false, 0.9 * w, 0.12 * h);
+    render::draw_math(canvas, title, centred(canvas, title, 0.1 * h), {render::palette::faint}, card.lecture_title);
+  }
   const bool both = !card.text.empty() && !card.equation.empty();
-  double y = both ? 0.42 * h : 0.5 * h;
-  if (!card.text.empty()) {
-    const std::string markup = "<b>" + card_markup(card.text, false) + "</b>";
-    const render::Point size = render::draw_text(canvas, {w / 2, y}, markup, fitted(canvas, markup, big, 0.9 * w));
-    y += size.y() / 2;
+  std::optional<render::MathBox> text, equation;
+  if (!card.text.empty()) text = fitted_text(canvas, card.text, kTextSize, true, 0.9 * w, (both ? 0.4 : 0.7) * h);
+  if (!card.equation.empty()) equation = fitted_formula(canvas, card.equation, kEquationSize, 0.9 * w);
+  // The text, a rule and the equation, as one block centred on the card.
+  const double gap = 18 * s;
+  const double block = (text ? text->height() : 0) + (equation ? equation->height() : 0) + (both ? 2 * gap : 0);
+  double y = std::max(0.2 * h, (h - block) / 2);
+  if (text) {
+    render::draw_math(canvas, *text, centred(canvas, *text, y + text->height() / 2), {render::palette::ink}, card.text);
+    y += text->height();
   }
   if (both) {  // a rule between the title and its equation
     cairo_t* cr = canvas.cr();
-    const double half = 0.18 * w, rule = y + 18 * s;
+    const double half = 0.18 * w;
+    y += gap;
     cairo_set_source_rgb(cr, 0.72, 0.72, 0.75);
     cairo_set_line_width(cr, 1.5 * s);
-    cairo_move_to(cr, w / 2 - half, rule);
-    cairo_line_to(cr, w / 2 + half, rule);
+    cairo_move_to(cr, w / 2 - half, y);
+    cairo_line_to(cr, w / 2 + half, y);
     canvas.stroke();
-    y = rule + 18 * s;
+    y += gap;
   }
-  if (!card.equation.empty()) {
-    const std::string markup = card_markup(card.equation, true);
-    const render::TextStyle style = fitted(canvas, markup, equation, 0.9 * w);
-    const render::Point size = render::text_size(canvas, markup, style);
-    render::draw_text(canvas, {w / 2, both ? y + size.y() / 2 : y}, markup, style);
-  }
+  if (equation)
+    render::draw_math(canvas, *equation, centred(canvas, *equation, y + equation->height() / 2),
+                      {render::palette::blue}, card.equation);
 }
 
 }  // namespace vibra::scenes

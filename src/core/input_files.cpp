@@ -2,8 +2,15 @@
 
 #include <sys/stat.h>
 
+#include <cerrno>
+#include <cstring>
+#include <fstream>
 #include <mutex>
+#include <sstream>
 #include <vector>
+
+#include "core/error.hpp"
+#include "core/quoted_value.hpp"
 
 namespace vibra {
 
@@ -23,6 +30,21 @@ void note_input_file(const std::filesystem::path& path, std::string role) {
   if (::stat(path.c_str(), &status) != 0) return;
   std::lock_guard lock(mutex);
   noted.push_back({{path, std::move(role)}, status.st_dev, status.st_ino});
+}
+
+std::string read_input_file(const std::string& path, const std::string& what, std::string role) {
+  const auto refuse = [&](int error) {
+    throw UsageError("cannot read " + what + " '" + quoted_value(path, 80) + "': " + std::strerror(error) +
+                     (error == EACCES ? ": give vibra read permission (chmod a+r) or copy it" : ""));
+  };
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) refuse(errno ? errno : EACCES);
+  note_input_file(path, std::move(role));
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) refuse(errno ? errno : EIO);
+  return buffer.str();
 }
 
 std::optional<InputFile> input_at(const std::filesystem::path& output) {

@@ -20,6 +20,11 @@ void note_input_file(const std::filesystem::path& path, std::string role);
 /// spelling), if any.
 std::optional<InputFile> input_at(const std::filesystem::path& output);
 
+/// The whole of the input file at `path`, noted as an input with `role`.
+/// `what` names it in the one-line error a file that cannot be opened or read
+/// gives ("the scene file"): the system's reason, and for a permission the fix.
+std::string read_input_file(const std::string& path, const std::string& what, std::string role);
+
 /// Forgets every input: a process that runs several commands (the Python
 /// module) starts each afresh.
 void forget_input_files();

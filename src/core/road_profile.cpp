@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <random>
+#include <sstream>
 
 #include "core/error.hpp"
 #include "core/input_files.hpp"
@@ -32,9 +32,7 @@ double RoadProfile::height(double x) const { return interpolate(h_, x); }
 double RoadProfile::curvature(double x) const { return interpolate(q_, x); }
 
 RoadProfile RoadProfile::from_file(const std::string& path, double dx) {
-  std::ifstream in(path);
-  if (!in) throw UsageError("cannot read the road file '" + path + "': give a file of heights, one per line");
-  note_input_file(path, "the road profile (--set road)");
+  std::istringstream in(read_input_file(path, "the road file", "the road profile (--set road)"));
   std::vector<double> heights;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {

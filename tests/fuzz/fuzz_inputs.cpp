@@ -1,5 +1,7 @@
 #include "fuzz_inputs.hpp"
 
+#include <glib.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -10,6 +12,7 @@
 #include "render/typeset/formula_draw.hpp"
 #include "render/typeset/formula_layout.hpp"
 #include "render/typeset/formula_parser.hpp"
+#include "render/typeset/formula_text.hpp"
 #include "scenes/frame_clock.hpp"
 #include "scenes/lecture/storyboard.hpp"
 #include "scenes/note.hpp"
@@ -121,6 +124,13 @@ void formula(std::string_view text) {
     render::draw_math(canvas, box, {2, 2 + box.ascent}, {});
   });
   expecting_user_errors([&] { (void)scenes::parse_note(std::string(text)); });
+  // The plain text of subtitles: valid UTF-8 in, valid UTF-8 out.
+  expecting_user_errors([&] {
+    const std::string plain = render::formula_plain_text(text) + render::rich_text_plain(text);
+    if (g_utf8_validate(text.data(), gssize(text.size()), nullptr) &&
+        !g_utf8_validate(plain.data(), gssize(plain.size()), nullptr))
+      std::abort();
+  });
 }
 
 }  // namespace vibra::fuzz

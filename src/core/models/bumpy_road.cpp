@@ -16,6 +16,12 @@ RoadProfile road_of(const Parameters& p, double length) {
   // a fast or long drive asks for a clear refusal, not gigabytes.
   constexpr double kMostHeights = 2e7;
   if (road == "sine" || road == "bumps") {
+    // A generated road sampled coarser than its shape would miss the bumps;
+    // the bound also keeps the number of bumps near the number of heights
+    // (dx = 1e9 once meant a loop over 1e9 bumps for 3 heights).
+    if (!(dx <= wavelength / 4))
+      throw UsageError("dx = " + short_number(dx) + " m is coarser than the road's shape (wavelength/4 = " +
+                       short_number(wavelength / 4) + " m): lower dx, or leave it out (wavelength/100)");
     const double heights = length / dx;
     if (!(heights <= kMostHeights))
       throw UsageError("the road of " + short_number(length) + " m (speed " + quoted_value(p.text("speed")) +
