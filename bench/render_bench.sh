@@ -143,6 +143,10 @@ scene_against_x264 orbit 1280x720 --set periods=$periods
 for scene in pendulum spring washing_machine sliding_box bouncing_ball rlc; do  # the rest, at 720p
   scene_against_x264 $scene 1280x720 --set periods=$periods
 done
+# Slow motion: most frames fall between solver steps, each drawn as the
+# still at its time.
+scene_against_x264 pendulum 1280x720 --set periods=$(( periods / 4 > 0 ? periods / 4 : 1 )) --speed 0.25
+scene_against_x264 spring 1280x720 --set periods=$periods --slow 1-2:0.2
 }
 
 wanted trail && {

@@ -42,14 +42,19 @@ NoteCallouts::NoteCallouts(const std::vector<Note>& notes, const std::vector<Not
                            int height, double t_end, render::Color ink, render::Color card)
     : targets_(targets), courses_(targets.size()), next_sample_(targets.size(), -INFINITY), ink_(ink), card_(card) {
   render::Canvas measure = render::Canvas::image(1, height);
-  // A card takes at most a third of the frame's width; longer notes break between words.
-  const double room = std::max(120 * measure.scale(), width / 3.0);
+  // Longer notes break between words. A card in a panel takes at most a
+  // third of the frame's width; one near the diagram's body a fifth, so that
+  // it fits beside the body's arrows and wire rather than across them (a
+  // third-wide card could only be placed over the pendulum's mg arrow).
+  const double panel_room = std::max(120 * measure.scale(), width / 3.0);
+  const double body_room = std::max(120 * measure.scale(), width / 5.0);
   sample_every_ = std::isfinite(t_end) && t_end > 0 ? t_end / 600 : 0;
   for (const Note& note : notes) {
     Callout c;
     c.note = note;
     c.box = std::make_shared<const render::MathBox>(
-        render::layout_rich_text(measure, render::parse_rich_text(note.text), {kNoteSize}, room));
+        render::layout_rich_text(measure, render::parse_rich_text(note.text), {kNoteSize},
+                                 note.panel.empty() ? body_room : panel_room));
     if (!note.panel.empty()) {
       std::string known;
       for (size_t i = 0; i < targets.size() && c.target < 0; ++i) {

@@ -197,6 +197,30 @@ TEST_CASE("a note shows exactly while its time lasts, and frames drawn one after
   CHECK(shown >= 3);
 }
 
+TEST_CASE("a long note beside a diagram covers nothing drawn, at every time and size", "[lecture]") {
+  // The lecture example's note: a third of the frame wide, it could only be
+  // placed across the pendulum's mg arrow.
+  const std::string note = "0-12: the drag D opposes the motion, growing with speed squared";
+  for (const std::string scene : {"pendulum", "spring", "sliding_box"}) {
+    for (const std::string size : {"1280x720", "640x360"}) {
+      Run r = prepared(scene, {{"size", size}, {"periods", "2"}, {"notes", note}});
+      const int w = std::stoi(size), h = std::stoi(size.substr(size.find('x') + 1));
+      int shown = 0;
+      for (size_t k = 0; k < r.rows.size(); k += std::max<size_t>(1, r.rows.size() / 12)) {
+        render::Canvas canvas = render::Canvas::image(w, h);
+        r.scene->draw(canvas, r.rows[k]);
+        for (const auto& label : r.scene->last_layout()->placed) {
+          if (!label.request.typeset) continue;
+          INFO(scene << " at " << size << ", t = " << r.rows[k][0]);
+          CHECK(label.free);
+          ++shown;
+        }
+      }
+      CHECK(shown >= 6);
+    }
+  }
+}
+
 TEST_CASE("a note @PANEL goes into that panel with an arrow to its curve", "[lecture]") {
   const std::vector<std::pair<std::string, std::string>> base = {{"size", "1280x720"}, {"periods", "2"}};
   Run plain = prepared("pendulum", base);

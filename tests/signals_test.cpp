@@ -131,6 +131,9 @@ TEST_CASE("Ctrl-C stops every long loop within a second: solver passes, analyses
       {"analyze", "convergence", "undamped", "--set", "T=1e9", "--levels", "3"},
       {"plot", "pendulum", "--set", "T=1e10", "-o", "OUT.png"},
       {"render", "--set", "T=1e6", "--window", "10", "--size", "160x90", "-q", "-o", "OUT.mp4"},
+      // A page (video, WebM, CSV and the HTML) and an analysis figure.
+      {"render", "--set", "T=1e6", "--window", "10", "--size", "160x90", "-q", "-o", "OUT.html"},
+      {"analyze", "convergence", "undamped", "--set", "T=1e9", "--levels", "3", "-o", "OUT.png"},
   };
   for (auto args : runs) {
     ScratchDirectory dir, logs;
@@ -175,4 +178,33 @@ TEST_CASE("a solver run of 1e8 steps or more shows its progress with an estimate
   CHECK(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 130);
   CHECK(dir.empty());
+}
+
+TEST_CASE("a killed render leaves no final file, and the next run there removes its temporary and says so",
+          "[signals][render]") {
+  ScratchDirectory dir, logs;
+  const std::string target = dir / "clip.mp4";
+  const auto temporaries = [&] {
+    std::vector<fs::path> found;
+    for (const auto& e : fs::directory_iterator(dir.path))
+      if (e.path().filename().string().find(".vibra-tmp-") != std::string::npos) found.push_back(e.path());
+    return found;
+  };
+  const pid_t pid = vibra::test::spawn_vibra({"render", "--set", "periods=500", "--size", "320x180", "-q", "-o", target},
+                                             logs / "out", logs / "err");
+  for (int i = 0; i < 1000 && temporaries().empty(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  kill(pid, SIGKILL);  // no handler runs: the temporary stays
+  waitpid(pid, nullptr, 0);
+  REQUIRE(temporaries().size() == 1);
+  const std::string left = temporaries().front().filename().string();
+  CHECK_FALSE(fs::exists(target));
+
+  const auto next = vibra::test::run_vibra("render --set periods=0.5 --size 160x90 -o " + target);
+  INFO(next.err);
+  CHECK(next.exit_code == 0);
+  CHECK_THAT(next.err, Catch::Contains("vibra: removed " + (dir.path / left).string() +
+                                       ", a temporary left by a run that was killed"));
+  CHECK(temporaries().empty());
+  CHECK(fs::file_size(target) > 0);
 }

@@ -104,7 +104,8 @@ TEST_CASE("Greek letters map to their code points, lowercase italic and capitals
 }
 
 TEST_CASE("variables are italic, digits, function names and text upright, the minus U+2212", "[typeset]") {
-  const auto leaves = glyph_leaves(set(R"(2x - \sin\theta + \text{at rest})"));
+  const MathBox box = set(R"(2x - \sin\theta + \text{at rest})");  // the leaves point into it
+  const auto leaves = glyph_leaves(box);
   REQUIRE(leaves.size() == 7);
   CHECK(leaves[0]->text == "2");
   CHECK(leaves[0]->font == MathFont::upright);
@@ -333,7 +334,9 @@ TEST_CASE("bad LaTeX gets one line naming the problem and the fix", "[typeset]")
       {std::string(30, '{') + "x" + std::string(30, '}'), "nests deeper than"},
       {std::string(2000, 'x'), "too long"},
   };
-  for (const auto& [source, expected] : cases) {
+  for (const auto& c : cases) {
+    const std::string& source = c.first;
+    const std::string& expected = c.second;
     INFO(source);
     const std::string message = error_of([&] { parse_formula(source); });
     CHECK(message.find(expected) != std::string::npos);
