@@ -114,11 +114,18 @@ void GroundProfile::draw(Canvas& canvas, const WorldView& view) const {
     paint(cr, at, road_points(at, clip_x0 - column0, clip_x1 - column0), -column0, 0);
     return;
   }
-  if (!(placement_ == at)) tiles_.clear(), placement_ = at;
+  if (!(placement_ == at)) tiles_.clear(), spare_.clear(), placement_ = at;
   const auto first = static_cast<long long>(std::floor((clip_x0 - column0) / kTileWidth));
   const auto last = static_cast<long long>(std::floor((clip_x1 - column0 - 1) / kTileWidth));
   // Tiles out of sight go (a following view does not come back to them).
-  std::erase_if(tiles_, [&](const auto& kept) { return kept.first < first - 1 || kept.first > last + 1; });
+  for (auto it = tiles_.begin(); it != tiles_.end();) {
+    if (it->first >= first - 1 && it->first <= last + 1) {
+      ++it;
+      continue;
+    }
+    if (spare_.size() < kSpareTiles) spare_.push_back(std::move(it->second.image));
+    it = tiles_.erase(it);
+  }
   for (long long k = first; k <= last; ++k) {
     const double p0 = double(k) * kTileWidth, p1 = p0 + kTileWidth;
     Tile& tile = tiles_[k];
@@ -126,10 +133,25 @@ void GroundProfile::draw(Canvas& canvas, const WorldView& view) const {
       std::vector<Point> points = road_points(at, p0, p1);
       double highest = at.bottom;
       for (const Point& p : points) highest = std::min(highest, p.y());
-      tile.top = static_cast<int>(std::floor(highest - 2 * stroke_.width * at.scale - 1));
+      // The top rounded up to whole bands of rows, so that tiles come in few
+      // heights and a tile gone out of sight can be reused: a fresh image
+      // costs a page fault for every 4 KiB of it.
+      const int top = static_cast<int>(std::floor(highest - 2 * stroke_.width * at.scale - 1));
+      tile.top = int(at.bottom) - kTileRows * ((int(at.bottom) - top + kTileRows - 1) / kTileRows);
       const int rows = std::max(1, int(at.bottom) - tile.top);
-      tile.image.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, kTileWidth, rows), cairo_surface_destroy);
+      const auto reusable = std::find_if(spare_.begin(), spare_.end(), [&](const auto& image) {
+        return cairo_image_surface_get_height(image.get()) == rows;
+      });
+      if (reusable != spare_.end()) {
+        tile.image = std::move(*reusable);
+        spare_.erase(reusable);
+      } else {
+        tile.image.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, kTileWidth, rows), cairo_surface_destroy);
+      }
       cairo_t* tile_cr = cairo_create(tile.image.get());
+      cairo_set_operator(tile_cr, CAIRO_OPERATOR_CLEAR);  // a reused tile starts as clear as a new one
+      cairo_paint(tile_cr);
+      cairo_set_operator(tile_cr, CAIRO_OPERATOR_OVER);
       cairo_set_antialias(tile_cr, CAIRO_ANTIALIAS_GOOD);  // as the canvas draws
       paint(tile_cr, at, std::move(points), p0, tile.top);
       const bool drawn = cairo_status(tile_cr) == CAIRO_STATUS_SUCCESS;

@@ -32,6 +32,8 @@ class GroundProfile {
   void draw(Canvas&, const WorldView&) const;
 
   static constexpr int kTileWidth = 256;
+  static constexpr int kTileRows = 32;    ///< tile heights are whole multiples of this
+  static constexpr size_t kSpareTiles = 4;  ///< tiles out of sight kept for reuse
 
  private:
   /// What places the ground on a canvas, but for its horizontal scroll.
@@ -57,6 +59,7 @@ class GroundProfile {
   Stroke stroke_;
   mutable Placement placement_;
   mutable std::map<long long, Tile> tiles_;  ///< by index k: columns [k, k + 1) tile widths
+  mutable std::vector<std::shared_ptr<cairo_surface_t>> spare_;  ///< tiles out of sight, for reuse
 };
 
 }  // namespace vibra::render

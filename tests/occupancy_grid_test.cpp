@@ -1,0 +1,64 @@
+// The label placer's occupancy grid (render/labels/occupancy_grid.hpp):
+// which cells a stroke takes, against the definition cell by cell, and
+// placed labels' boxes counted without rebuilding the table.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "render/labels/occupancy_grid.hpp"
+#include "render/labels/outline.hpp"
+
+using namespace vibra::render;
+
+namespace {
+constexpr double kCell = 3, kClearance = 2.25;
+const PixelRect kArea{10, 20, 300, 200};
+
+/// A box inside cell (column, row) alone: taken() says whether that cell is.
+PixelRect inside_cell(int column, int row) {
+  return {kArea.x + (column + 0.25) * kCell, kArea.y + (row + 0.25) * kCell, 0.5 * kCell, 0.5 * kCell};
+}
+}  // namespace
+
+TEST_CASE("occupancy grid: a stroke takes exactly the cells whose centre lies within its reach", "[labels]") {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> x(-40, 350), y(-20, 260), width(0, 6);
+  const int columns = int(std::ceil(kArea.w / kCell)), rows = int(std::ceil(kArea.h / kCell));
+  for (int trial = 0; trial < 200; ++trial) {
+    OutlineShape shape;
+    Point a(x(random), y(random)), b(x(random), y(random));
+    if (trial % 10 == 0) b = Point(x(random), a.y());  // horizontal
+    if (trial % 10 == 1) b = Point(a.x(), y(random));  // vertical
+    if (trial % 10 == 2) b = a;                        // a dot
+    shape.segments = {{a, b}};
+    shape.half_width = width(random);
+    shape.bounds = {std::min(a.x(), b.x()) - shape.half_width, std::min(a.y(), b.y()) - shape.half_width,
+                    std::abs(a.x() - b.x()) + 2 * shape.half_width, std::abs(a.y() - b.y()) + 2 * shape.half_width};
+    OccupancyGrid grid(kArea, kCell, kClearance);
+    grid.add(shape);
+    const double reach = shape.half_width + kClearance + 0.7072 * kCell;
+    int mismatched = 0;
+    for (int row = 0; row < rows; ++row)
+      for (int column = 0; column < columns; ++column) {
+        const Point centre(kArea.x + (column + 0.5) * kCell, kArea.y + (row + 0.5) * kCell);
+        const double distance = distance_to_segment(centre, a, b);
+        if (std::abs(distance - reach) < 1e-9) continue;  // on the edge: either answer
+        const bool expected = distance < reach, got = grid.taken(inside_cell(column, row)) > 0;
+        mismatched += expected != got;
+      }
+    INFO("trial " << trial << ": (" << a.x() << ", " << a.y() << ") to (" << b.x() << ", " << b.y() << ")");
+    CHECK(mismatched == 0);
+  }
+}
+
+TEST_CASE("occupancy grid: a placed label's box is taken with its clearance, and nothing else", "[labels]") {
+  OccupancyGrid grid(kArea, kCell, kClearance);
+  const PixelRect label{100, 100, 40, 15};
+  CHECK(grid.taken(label) == 0);
+  grid.add_box(label);
+  CHECK(grid.taken(label) > 0);
+  CHECK(grid.taken({label.x + label.w + kClearance - 1, label.y, 5, 5}) > 0);  // within the clearance
+  CHECK(grid.taken({label.x + label.w + kClearance + kCell + 1, label.y, 5, 5}) == 0);  // beyond it
+  CHECK(grid.taken({label.x, label.y - kClearance - kCell - 6, 30, 5}) == 0);
+  CHECK(grid.taken({0, 0, 1000, 1000}) == grid.taken({kArea.x, kArea.y, kArea.w, kArea.h}));
+}
