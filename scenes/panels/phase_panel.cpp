@@ -62,7 +62,9 @@ void PhasePanel::draw(render::Canvas& canvas, double t, std::span<const double> 
   cairo_save(cr);
   cairo_rectangle(cr, area.x, area.y, area.w, area.h);
   cairo_clip(cr);
-  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  // Butt ends: the polylines of two fade steps meet at a shared point, where
+  // round ends would overlap into a darker dot.
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_width(cr, 2.4 * canvas.scale());
   for (size_t i = 0; i < curves_.size(); ++i) {
