@@ -60,7 +60,9 @@ NoteCallouts::NoteCallouts(const std::vector<Note>& notes, const std::vector<Not
       for (size_t i = 0; i < targets.size() && c.target < 0; ++i) {
         if (std::find(targets[i].names.begin(), targets[i].names.end(), note.panel) != targets[i].names.end())
           c.target = int(i);
-        known += (known.empty() ? "" : ", ") + targets[i].names.back();
+        // Its name as asked for (--panels error), else its label's first word.
+        const auto& names = targets[i].names;
+        known += (known.empty() ? "" : ", ") + (names.size() > 1 ? names[1] : names.front());
       }
       if (targets.empty())
         throw UsageError("note '" + quoted_value(note.text, 40) + " @" + quoted_value(note.panel, 20) +

@@ -46,7 +46,10 @@ SeriesSpec exact_series(const std::function<double(double)>& exact, double facto
           true, [exact, factor](double t) { return factor * exact(t); }};
 }
 void check_panel_options(const SceneConfig& config) {
-  if (!config.panels.empty() && config.layout != Layout::fbd_plot)
+  // A single run's plot layout stacks the chosen panels; a comparison's plot
+  // is its main quantity, one curve per member.
+  const bool stacked = config.layout == Layout::plot && config.compare.empty();
+  if (!config.panels.empty() && config.layout != Layout::fbd_plot && !stacked)
     throw UsageError("panels are drawn beside the diagram: use --layout fbd+plot, or drop --panels");
   if (config.energy_bars && (config.layout == Layout::plot || config.layout == Layout::grid))
     throw UsageError("energy bars stand beside the diagram: use --layout fbd or fbd+plot, or drop --energy-bars");
@@ -86,9 +89,23 @@ std::unique_ptr<Scene> make_scene(const SceneConfig& config, const TrajectoryInf
                      "or choose fbd, fbd+plot or plot");
   check_panel_options(config);
   const SceneStyle style = style_of(config, info, caption);
-  if (config.layout == Layout::plot)
-    return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style,
-                                       std::vector{main_quantity_panel(style, info.columns[1], info.exact, info.exact_label)});
+  if (config.layout == Layout::plot) {
+    if (config.panels.empty())
+      return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style,
+                                         std::vector{main_quantity_panel(style, info.columns[1], info.exact, info.exact_label)});
+    // --panels without a diagram: the chosen panels against time, one above another.
+    std::vector<PanelSpec> stacked;
+    for (const auto& name : config.panels) {
+      QuantityPanelSpec q = quantity_panel(name, info, config.colors.bob, "", render::palette::vermillion);
+      if (q.is_phase())
+        throw UsageError("panel '" + name + "' is the phase plane, which the plot layout does not draw: choose "
+                         "panels against time here, or a model with a diagram and --layout fbd+plot");
+      PanelSpec panel{std::move(q.label), std::move(q.curves), q.least_span, std::move(q.empty_note), name};
+      for (auto& reference : q.references) panel.series.push_back(std::move(reference));
+      stacked.push_back(std::move(panel));
+    }
+    return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style, std::move(stacked));
+  }
   const DiagramKind& kind = diagram_for(config);
   const Parameters parameters = model_parameters_of(config);
   std::vector<QuantityPanelSpec> panels;

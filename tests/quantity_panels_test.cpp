@@ -132,6 +132,25 @@ TEST_CASE("every panel kind draws for every built-in scene, whole run and window
   }
 }
 
+TEST_CASE("a model without a diagram stacks its --panels against time", "[panels][render]") {
+  test::ScratchDirectory dir;
+  for (const std::string panels : {"u,error", "v,energy,period", "error"}) {
+    const auto r = test::run_vibra("render undamped --panels " + panels + " --at 3 -q -o " + (dir / "still.png"));
+    INFO(panels << ": " << r.err);
+    CHECK(r.exit_code == 0);
+  }
+  // The panels are the ones asked for: a note can point at each, and at no other.
+  const auto at_error = test::run_vibra("render undamped --panels u,error --note '1-2: the error grows @error' --at 1.5 -q -o " +
+                                        (dir / "note.png"));
+  INFO(at_error.err);
+  CHECK(at_error.exit_code == 0);
+  test::check_refused("render undamped --panels u,error --note '1-2: here @v' --at 1.5 -o OUT.png",
+                      "which is no panel here: choose one of u, error");
+  test::check_refused("render undamped --panels u,phase --at 1 -o OUT.png", "panel 'phase' is the phase plane");
+  test::check_refused("render undamped --compare scheme=centered,rk4 --panels u,error --at 1 -o OUT.png",
+                      "panels are drawn beside the diagram");
+}
+
 TEST_CASE("a scene file chooses panels and energy bars", "[panels]") {
   scenes::SceneConfig config = scenes::parse_scene("model = \"undamped\"\npanels = \"u, phase,energy\"\nenergy_bars = true\n",
                                                    "lecture.toml");

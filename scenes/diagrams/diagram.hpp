@@ -50,6 +50,9 @@ inline void center_horizontally_on(WorldBox& world, double x) {
 struct PanelSpec {
   std::string label;  ///< Pango markup, e.g. "<i>u</i>"
   std::vector<SeriesSpec> series;
+  double least_span = 0;   ///< the y range spans at least this much (SeriesPanel::set_least_span)
+  std::string empty_note;  ///< shown when the first curve has no value in the run
+  std::string name;        ///< the name it was asked for by (`--panels error`), "" for a scene's own
 };
 
 /// A physical system drawn at one instant in world units (y up, equal

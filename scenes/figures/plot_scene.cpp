@@ -35,7 +35,7 @@ PlotScene::PlotScene(int width, int height, double t_end, SceneStyle style, std:
   const double h = (height - top - bottom) / std::max<size_t>(1, panels.size());
   std::vector<NoteTarget> targets;
   for (size_t i = 0; i < panels.size(); ++i)
-    targets.push_back({panel_names(i, "", panels[i].label),
+    targets.push_back({panel_names(i, panels[i].name, panels[i].label),
                        panels[i].series.empty() ? std::function<double(std::span<const double>)>() : panels[i].series.front().value});
   if (!style_.notes.empty()) {
     // Without a diagram, a note with no panel named goes to the first panel.
@@ -44,9 +44,12 @@ PlotScene::PlotScene(int width, int height, double t_end, SceneStyle style, std:
       if (note.panel.empty() && !targets.empty()) note.panel = "1";
     notes_.emplace(notes, targets, width, height, t_end, style_.colors.wire, style_.colors.background.with_alpha(1));
   }
-  for (size_t i = 0; i < panels.size(); ++i)
+  for (size_t i = 0; i < panels.size(); ++i) {
     panels_.emplace_back(render::PixelRect{0, top + i * h, w, h}, scale, std::move(panels[i].label),
                          std::move(panels[i].series), t_end, style_.window_mode, style_.window);
+    panels_.back().set_least_span(panels[i].least_span);
+    panels_.back().set_empty_note(std::move(panels[i].empty_note));
+  }
 }
 
 void PlotScene::record(std::span<const double> row) {
