@@ -5,10 +5,10 @@
 
 #include "core/error.hpp"
 #include "core/quoted_value.hpp"
+#include "render/draw/text.hpp"
 #include "render/labels/label_placer.hpp"
 #include "render/typeset/formula_layout.hpp"
 #include "render/typeset/formula_parser.hpp"
-#include "scenes/run_caption.hpp"
 
 namespace vibra::scenes {
 
@@ -31,7 +31,7 @@ std::string latin(const std::string& text) {
 std::vector<std::string> panel_names(size_t index, const std::string& given, const std::string& label_markup) {
   std::vector<std::string> names = {std::to_string(index + 1)};
   if (!given.empty()) names.push_back(given);
-  const std::string plain = plain_text(label_markup);
+  const std::string plain = render::markup_plain_text(label_markup);
   const size_t end = plain.find_first_of(" (/");
   std::string first = latin(plain.substr(0, end));
   if (!first.empty()) names.push_back(first);

@@ -22,20 +22,6 @@ std::string markup_escaped(const std::string& text) {
   return out;
 }
 
-std::string plain_text(const std::string& markup) {
-  std::string out;
-  bool in_tag = false;
-  for (char c : markup) {
-    if (c == '<') in_tag = true;
-    else if (c == '>') in_tag = false;
-    else if (!in_tag) out += c;
-  }
-  for (const auto& [entity, c] : {std::pair{"&lt;", '<'}, {"&gt;", '>'}, {"&amp;", '&'}})
-    for (size_t at = 0; (at = out.find(entity, at)) != std::string::npos; ++at)
-      out.replace(at, std::string_view(entity).size(), 1, c);
-  return out;
-}
-
 namespace {
 /// A key as the book writes it, in Pango markup: Greek names as letters,
 /// one-letter names italic, C_D as C with subscript D.

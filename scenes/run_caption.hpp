@@ -10,8 +10,6 @@ namespace vibra::scenes {
 
 /// A user's text made safe inside Pango markup (formulas may hold < or &).
 std::string markup_escaped(const std::string& text);
-/// Pango markup without its tags and with the entities above unescaped (file metadata, names).
-std::string plain_text(const std::string& markup);
 
 /// One line of Pango markup describing a run: the settings given (time
 /// keys aside, as dt stands for them) with their units, dt and the scheme,
