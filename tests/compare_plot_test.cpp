@@ -1,11 +1,11 @@
 // `vibra plot --compare KEY=V1,V2,...`: one curve per member in its own
 // colour, the exact solution dashed, blow-ups marked, bad input refused.
-#include <cairo.h>
 
 #include <catch2/catch.hpp>
 #include <memory>
 
 #include "cli_support.hpp"
+#include "png_compare.hpp"
 #include "core/comparison.hpp"
 #include "render/draw/color.hpp"
 #include "scenes/diagrams/comparison_labels.hpp"
@@ -13,24 +13,11 @@
 #include "test_support.hpp"
 
 using namespace vibra;
+using test::colour_pixels;
 using test::run_vibra;
 using test::ScratchDirectory;
 
 namespace {
-/// Pixels of colour c in a PNG.
-int colour_pixels(const std::string& png, const render::Color& c) {
-  std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> s(cairo_image_surface_create_from_png(png.c_str()),
-                                                                   cairo_surface_destroy);
-  const unsigned char* data = cairo_image_surface_get_data(s.get());
-  const int stride = cairo_image_surface_get_stride(s.get());
-  int n = 0;
-  for (int y = 0; y < cairo_image_surface_get_height(s.get()); ++y)
-    for (int x = 0; x < cairo_image_surface_get_width(s.get()); ++x) {
-      const unsigned char* p = data + y * stride + 4 * x;
-      n += std::abs(p[2] - c.r * 255) < 25 && std::abs(p[1] - c.g * 255) < 25 && std::abs(p[0] - c.b * 255) < 25;
-    }
-  return n;
-}
 
 Parameters settings(const std::string& model, const std::vector<std::string>& assignments) {
   Parameters p = model_parameters(find_model(model));

@@ -1,16 +1,18 @@
 // `vibra plot`: panel names, defaults, and the figure the executable writes.
-#include <cairo.h>
 
 #include <catch2/catch.hpp>
 #include <memory>
 
 #include "cli_support.hpp"
+#include "png_compare.hpp"
 #include "core/error.hpp"
 #include "render/draw/color.hpp"
 #include "scenes/figures/trajectory_figure.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;
+using test::colour_pixels;
+using test::png_size;
 using test::run_vibra;
 using test::ScratchDirectory;
 
@@ -19,27 +21,6 @@ using Names = std::vector<std::string>;
 
 Names defaults_for(const std::string& model) {
   return scenes::default_plot_panels(test::trajectory(model, {})->info());
-}
-
-/// Pixels of colour c in the rows [y0, y1) of a PNG.
-int colour_pixels(const std::string& png, const render::Color& c, int y0, int y1) {
-  std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> s(cairo_image_surface_create_from_png(png.c_str()),
-                                                                   cairo_surface_destroy);
-  const unsigned char* data = cairo_image_surface_get_data(s.get());
-  const int stride = cairo_image_surface_get_stride(s.get()), width = cairo_image_surface_get_width(s.get());
-  int n = 0;
-  for (int y = y0; y < y1; ++y)
-    for (int x = 0; x < width; ++x) {
-      const unsigned char* p = data + y * stride + 4 * x;
-      n += std::abs(p[2] - c.r * 255) < 30 && std::abs(p[1] - c.g * 255) < 30 && std::abs(p[0] - c.b * 255) < 30;
-    }
-  return n;
-}
-
-std::pair<int, int> png_size(const std::string& png) {
-  std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> s(cairo_image_surface_create_from_png(png.c_str()),
-                                                                   cairo_surface_destroy);
-  return {cairo_image_surface_get_width(s.get()), cairo_image_surface_get_height(s.get())};
 }
 }  // namespace
 
@@ -51,6 +32,8 @@ TEST_CASE("plot panels default to the chapter's figures for each model", "[plot]
   CHECK(defaults_for("elastic-pendulum") == Names{"path"});
   CHECK(defaults_for("two-body") == Names{"path"});
   CHECK(scenes::plot_panel_names(test::trajectory("undamped", {})->info()) == Names{"u", "v", "exact", "phase"});
+  CHECK(scenes::plot_panel_names(test::trajectory("sliding-box", {})->info()) ==
+        Names{"u", "v", "exact", "phase", "friction"});
 }
 
 TEST_CASE("plot refuses unknown panels and an exact solution that does not exist", "[plot]") {

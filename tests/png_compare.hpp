@@ -3,7 +3,10 @@
 #include <cairo.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
+
+#include "render/draw/color.hpp"
 
 namespace vibra::test {
 
@@ -30,6 +33,25 @@ inline double psnr(const std::string& a, const std::string& b) {
   cairo_surface_destroy(x);
   cairo_surface_destroy(y);
   return result;
+}
+
+/// Pixels of a PNG within `tolerance` (of 255, per channel) of colour c, in
+/// the rows [y0, y1) (all rows when y1 < 0); -1 when the file cannot be read.
+inline int colour_pixels(const std::string& png, const render::Color& c, int y0 = 0, int y1 = -1, int tolerance = 30) {
+  std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> s(cairo_image_surface_create_from_png(png.c_str()),
+                                                                   cairo_surface_destroy);
+  if (cairo_surface_status(s.get()) != CAIRO_STATUS_SUCCESS) return -1;
+  const unsigned char* data = cairo_image_surface_get_data(s.get());
+  const int stride = cairo_image_surface_get_stride(s.get()), width = cairo_image_surface_get_width(s.get());
+  const int end = y1 < 0 ? cairo_image_surface_get_height(s.get()) : y1;
+  int n = 0;
+  for (int y = y0; y < end; ++y)
+    for (int x = 0; x < width; ++x) {
+      const unsigned char* p = data + y * stride + 4 * x;
+      n += std::abs(p[2] - c.r * 255) < tolerance && std::abs(p[1] - c.g * 255) < tolerance &&
+           std::abs(p[0] - c.b * 255) < tolerance;
+    }
+  return n;
 }
 
 }  // namespace vibra::test

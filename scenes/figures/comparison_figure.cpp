@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "render/output/stop_signal.hpp"
 #include "scenes/diagrams/comparison_labels.hpp"
+#include "scenes/figures/friction_panel.hpp"
 #include "scenes/panels/plot_panels.hpp"
 #include "scenes/panels/rows_inside_step.hpp"
 #include "scenes/run_caption.hpp"
@@ -66,7 +67,15 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
   render::Figure figure(width, height, title);
   std::vector<Feed> feeds;
   std::vector<std::vector<render::Series*>> labelled(comparison.size());  // the legend's entries, per member
+  std::optional<FrictionPanel> friction;
   for (const auto& name : order) {
+    if (name == "friction") {
+      std::vector<FrictionPanel::Member> members;
+      for (size_t m = 0; m < comparison.size(); ++m)
+        members.push_back({&comparison.trajectory(m).info(), render::palette::series(m), member_markup(comparison, m)});
+      friction.emplace(figure, std::move(members));
+      continue;
+    }
     const bool time_panel = name != "path" && name != "phase";
     const int x = name == "path" ? column_index(first, "x") : time_panel ? 0 : 1;
     const int y = name == "path" ? column_index(first, "y") : name == "phase" ? velocity_column(first) : column_index(first, name);
@@ -105,6 +114,7 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
     auto feed = [&](std::span<const double> r) {
       for (const Feed& f : feeds)
         if (f.member == member) f.series->add(f.x_factor * r[f.x_column], f.y_factor * r[f.y_column]);
+      if (friction) friction->observe(member, r);
     };
     const Trajectory& run = comparison.trajectory(member);
     between.resize(row.size());
@@ -113,6 +123,8 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
     last[member].assign(row.begin(), row.end());
     if ((++samples & 0xffff) == 0) render::throw_if_stop_requested();
   });
+
+  if (friction) friction->finish();
 
   // Where a member left the view or blew up: a dot at its last point and a note in the legend.
   for (size_t m = 0; m < comparison.size(); ++m) {

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "render/output/stop_signal.hpp"
+#include "scenes/figures/friction_panel.hpp"
 #include "scenes/panels/rows_inside_step.hpp"
 
 namespace vibra::scenes {
@@ -32,7 +33,12 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
   std::vector<Feed> feeds;
   std::vector<Feed> starts;  // markers at the start of paths, fed the first row only
   int time_panels = 0;
+  std::optional<FrictionPanel> friction;
   for (const auto& name : order) {
+    if (name == "friction") {
+      friction.emplace(figure, std::vector<FrictionPanel::Member>{{&info, blue, ""}});
+      continue;
+    }
     if (name == "path" || name == "phase") {
       const int x = name == "path" ? column_index(info, "x") : 1;
       const int y = name == "path" ? column_index(info, "y") : velocity_column(info);
@@ -64,6 +70,7 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
   for (const Feed& f : starts) f.series->add(f.x_factor * row[f.x_column], f.y_factor * row[f.y_column]);
   auto feed = [&](std::span<const double> r) {
     for (const Feed& f : feeds) f.series->add(f.x_factor * r[f.x_column], f.y_factor * r[f.y_column]);
+    if (friction) friction->observe(0, r);
   };
   const double spacing = inside_step_spacing(info.mesh, width);
   double previous = trajectory.t();
@@ -74,6 +81,7 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
     previous = trajectory.t();
     if ((trajectory.index() & 0xffff) == 0) render::throw_if_stop_requested();
   } while (trajectory.advance());
+  if (friction) friction->finish();
   return figure;
 }
 

@@ -25,7 +25,7 @@ PagePlotCollector::PagePlotCollector(const TrajectoryInfo& info, const std::vect
   if (mesh.adaptive()) grid_ = mesh.dt;
   auto data = [&] { return render::PageSeriesData(0, mesh.T, mesh.dt, mesh.steps + 1); };
   for (const auto& name : order) {
-    if (name == "phase" || name == "path")
+    if (name == "phase" || name == "path" || name == "friction")
       throw UsageError("panel '" + name + "' is not against t, and a page plots against t: drop it, or draw it in "
                        "-o FILE.png, FILE.svg or FILE.pdf");
     const int column = column_index(info, name);

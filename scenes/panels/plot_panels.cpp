@@ -36,6 +36,7 @@ std::vector<std::string> plot_panel_names(const TrajectoryInfo& info) {
   names.push_back("exact");
   names.push_back("phase");
   if (has_path(info)) names.push_back("path");
+  if (info.spring_and_friction) names.push_back("friction");
   return names;
 }
 

@@ -24,7 +24,8 @@ std::string quantity_markup(const std::string& column);
 /// The panels `vibra plot` can draw for a run: every column but t (against
 /// t), `exact` (the exact solution over the main quantity's panel), `phase`
 /// (the main quantity against its velocity) and, for models with x and y
-/// columns, `path` (y against x, equal aspect).
+/// columns, `path` (y against x, equal aspect); for the sliding box,
+/// `friction` (its spring force and friction against u).
 std::vector<std::string> plot_panel_names(const TrajectoryInfo&);
 
 /// What `vibra plot` draws without --panels: the path for models with x and

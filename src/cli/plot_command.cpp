@@ -44,8 +44,9 @@ constexpr const char* kExamples =
     "\nPanels: any column of the model but t (against t; neighbours share the t axis), exact (the exact\n"
     "solution over the main quantity, dashed), error (main quantity - exact solution, where one is known),\n"
     "phase (main quantity against its velocity), path (y against x,\n"
-    "equal aspect; elastic-pendulum and two-body). Defaults: theta,S,D for the pendulums, path for\n"
-    "elastic-pendulum and two-body, the main quantity otherwise.\n"
+    "equal aspect; elastic-pendulum and two-body), friction (sliding-box: the spring force s(u) against u,\n"
+    "the friction band +-mu where the box can rest, and the run's turning points).\n"
+    "Defaults: theta,S,D for the pendulums, path for elastic-pendulum and two-body, the main quantity otherwise.\n"
     "\n--compare KEY=V1,V2,... runs the model once per value (up to 8) of one key: scheme, dt,\n"
     "steps_per_period or a model key. Every panel draws one curve per run, the exact solution dashed where\n"
     "known; a run that grows without bound is marked 'left the view at t = ...', one that overflows 'blew up at t = ...'. Default panels: the main quantity and\n"
@@ -56,6 +57,7 @@ constexpr const char* kExamples =
     "  vibra plot elastic-pendulum --set Theta=40 --set eps=0.1 -o path.pdf\n"
     "  vibra plot undamped --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 --set steps_per_period=40 \\\n"
     "      --set periods=4 -o schemes.png\n"
+    "  vibra plot sliding-box --compare alpha=0,1,2,4 --panels friction,u -o springs.png   # Exercise 1.23\n"
     "  vibra plot pendulum --set periods=200 -o pendulum.html   # interactive, zoomable (time panels only)\n";
 
 int figure_height(size_t panels) { return panels > 2 ? 960 : 720; }

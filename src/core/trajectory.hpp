@@ -2,6 +2,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -40,6 +41,14 @@ struct TrajectoryInfo {
   /// per time unit): its integral is the work in E - E(0). Empty for a model
   /// without an external force.
   std::function<double(std::span<const double> row)> forcing_power;
+  /// A restoring force against friction, drawn against u by `--panels
+  /// friction` (the sliding box, Exercise 1.23a): the spring force s(u) and
+  /// the kinetic friction mu, both in units of the initial spring force.
+  struct SpringAndFriction {
+    std::function<double(double u)> spring;
+    double mu = 0;
+  };
+  std::optional<SpringAndFriction> spring_and_friction;
 };
 
 /// The column holding the main quantity's velocity: v<name> where the model

@@ -63,6 +63,7 @@ ModelDefinition sliding_box_model() {
       return EnergyParts{0.5 * row[2] * row[2], law->potential(row[1])};
     };
     info.energy_unit = "k I^2";
+    info.spring_and_friction = TrajectoryInfo::SpringAndFriction{[law](double u) { return law->spring(u); }, law->mu};
 
     // The friction of the current half swing: -mu times its direction.
     auto direction = std::make_shared<double>(0);
