@@ -21,6 +21,7 @@
 #include "core/quoted_value.hpp"
 #include "core/value_ranges.hpp"
 #include "core/word_list.hpp"
+#include "scenes/annotations.hpp"
 #include "render/typeset/formula_parser.hpp"
 #include "scenes/builtin_scenes.hpp"
 #include "scenes/note.hpp"
@@ -161,6 +162,7 @@ const std::vector<KeySpec>& scene_keys() {
       {"window_mode", ValueKind::choice, "movement", "", "drawing, movement or jumps (the moving plot window)", {"drawing", "movement", "jumps"}, {}},
       {"panels", ValueKind::choice, "", "", "fbd+plot panels: columns, phase, energy, error, period", {}, {}},
       {"energy_bars", ValueKind::choice, "false", "", "kinetic, potential, dissipated energy beside the diagram", {"true", "false"}, {}},
+      {"annotate", ValueKind::choice, "", "", "marks of the book's figures: geometry (the pendulum's i_r, i_theta, pivot, L)", {}, {}},
       {"slow", ValueKind::text, "", "", "T0-T1:FACTOR: simulated [T0, T1] FACTOR times slower (4: a quarter speed), repeatable", {}, {}},
       {"pause", ValueKind::text, "", "", "T:SECONDS: hold simulated time T for SECONDS of video, repeatable", {}, {}},
       {"drag_magnification", ValueKind::number, "5", "", "drag arrow drawn this many times longer", {}, {}},
@@ -253,6 +255,13 @@ void apply_setting(SceneConfig& c, const Setting& s) {
     }
   } else if (k == "energy_bars") {
     c.energy_bars = parse_bool(s);
+  } else if (k == "annotate") {
+    try {
+      c.annotate = word_list("annotate", s.value);
+      for (const auto& name : c.annotate) check_annotation_name(name, "render");
+    } catch (const UsageError& e) {
+      throw UsageError(s.origin + ": " + e.what());
+    }
   } else if (pacing_key(k)) {
     try {
       k == "slow" ? c.pacing.add_slow(s.value) : c.pacing.add_pause(s.value);

@@ -33,6 +33,9 @@ struct SceneConfig {
   /// Panels beside the diagram (layout fbd+plot), by name; empty = the diagram's own.
   std::vector<std::string> panels;
   bool energy_bars = false;  ///< kinetic, potential and dissipated energy beside the diagram
+  /// Marks of the book's figures on the diagram, by name (scene key
+  /// `annotate`, --annotate): "geometry" for the pendulum (Fig 1.21).
+  std::vector<std::string> annotate;
   double drag_magnification = 5;
   SceneColors colors;
   /// "KEY=V1,V2,...": one run per value, drawn together; "" = one run.

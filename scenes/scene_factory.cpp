@@ -1,5 +1,6 @@
 #include "scenes/scene_factory.hpp"
 
+#include <algorithm>
 #include <iterator>
 
 #include "core/error.hpp"
@@ -53,6 +54,18 @@ void check_panel_options(const SceneConfig& config) {
     throw UsageError("panels are drawn beside the diagram: use --layout fbd+plot, or drop --panels");
   if (config.energy_bars && (config.layout == Layout::plot || config.layout == Layout::grid))
     throw UsageError("energy bars stand beside the diagram: use --layout fbd or fbd+plot, or drop --energy-bars");
+  for (const auto& name : config.annotate) {
+    if (config.layout == Layout::plot || config.layout == Layout::grid)
+      throw UsageError("--annotate " + name + " marks the diagram: use --layout fbd or fbd+plot, or drop --annotate");
+    const DiagramKind& kind = diagram_for(config);
+    if (std::find(kind.annotations.begin(), kind.annotations.end(), name) != kind.annotations.end()) continue;
+    std::string drawn_on;
+    for (const DiagramKind& other : all_diagrams())
+      if (std::find(other.annotations.begin(), other.annotations.end(), name) != other.annotations.end())
+        drawn_on += (drawn_on.empty() ? "" : ", ") + other.name;
+    throw UsageError("--annotate " + name + " is drawn on the " + drawn_on + " diagram, and this scene's is " +
+                     kind.name + ": render a model it draws, or drop --annotate");
+  }
 }
 
 /// A comparison's panel `name`: each member's curves (or phase curves) in its

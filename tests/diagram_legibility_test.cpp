@@ -3,6 +3,7 @@
 // the data, a force-scale key per diagram, and a pendulum support that its
 // own swing does not cut.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -186,4 +187,28 @@ TEST_CASE("a pendulum that swings up past its pivot hangs from a bearing block, 
   CHECK(support_in_diameters({{"Theta", "60", "test"}}) > 4);
   CHECK(support_in_diameters({{"Theta", "170", "test"}, {"alpha", "0", "test"}}) < 2);
   CHECK(support_in_diameters({{"Theta", "100", "test"}}) < 2);
+}
+
+TEST_CASE("the pendulum's geometry (Fig 1.21): i_r, i_theta, (x0, y0) and L are drawn and labelled, clear of the rest",
+          "[legibility][pendulum]") {
+  const std::vector<std::string> wanted = {"<b>i</b><sub><i>r</i></sub>", "<b>i</b><sub><i>θ</i></sub>",
+                                           "(<i>x</i><sub>0</sub>, <i>y</i><sub>0</sub>)", "<i>L</i>"};
+  auto arrows = [](const DrawingRecord& frame) {
+    return std::count_if(frame.outline.shapes().begin(), frame.outline.shapes().end(),
+                         [](const OutlineShape& s) { return s.kind == OutlineKind::arrow; });
+  };
+  for (double moment : {0.03, 0.1, 0.25}) {
+    INFO("at " << moment << " of the run");
+    const DrawingRecord plain = frame_at("pendulum", {}, moment);
+    const DrawingRecord frame = frame_at("pendulum", {{"annotate", "geometry", "test"}}, moment);
+    for (const std::string& markup : wanted) {
+      INFO("label " << markup);
+      const auto placed = std::find_if(frame.placed.begin(), frame.placed.end(),
+                                       [&](const vibra::render::PlacedLabel& p) { return p.request.markup == markup; });
+      REQUIRE(placed != frame.placed.end());
+      CHECK(placed->free);  // on no body, wire, arrow or other label
+    }
+    for (const auto& p : plain.placed) CHECK(std::find(wanted.begin(), wanted.end(), p.request.markup) == wanted.end());
+    CHECK(arrows(frame) > arrows(plain));  // the two unit vectors
+  }
 }

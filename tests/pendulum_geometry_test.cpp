@@ -46,3 +46,23 @@ TEST_CASE("at 30 degrees: positions and the angle arc", "[scene]") {
   check_point(g.drag_tip, 0.5 + 2 * 0.6 * 0.1 * std::cos(th), -std::cos(th) + 2 * 0.6 * 0.1 * std::sin(th));
   CHECK(g.arc_to - g.arc_from == Approx(th));
 }
+
+TEST_CASE("the unit vectors of Fig 1.21: i_r along the wire outwards, i_theta a quarter turn on, from the bob's edge",
+          "[scene]") {
+  for (double th : {-2.5, -0.4, 0.0, 0.7, 3.0}) {
+    INFO("theta = " << th);
+    const PendulumDiagramOptions o;
+    const PendulumGeometry g = pendulum_geometry({0, th, 0.3, 1, 0}, o);
+    // The book's i_r = sin(theta) i - cos(theta) j and i_theta = cos(theta) i + sin(theta) j.
+    check_point(g.unit_origin, (1 + o.bob_radius) * std::sin(th), -(1 + o.bob_radius) * std::cos(th));
+    check_point(g.radial_unit_tip - g.unit_origin, o.unit_vector_length * std::sin(th),
+                -o.unit_vector_length * std::cos(th));
+    check_point(g.azimuthal_unit_tip - g.unit_origin, o.unit_vector_length * std::cos(th),
+                o.unit_vector_length * std::sin(th));
+    // i_theta is where the bob goes as theta grows: the bob's position's derivative.
+    const double h = 1e-6;
+    const Point ahead = pendulum_geometry({0, th + h, 0.3, 1, 0}, o).bob;
+    const Point velocity = (ahead - g.bob) / h;
+    CHECK(velocity.dot(g.azimuthal_unit_tip - g.unit_origin) == Approx(o.unit_vector_length).epsilon(1e-5));
+  }
+}

@@ -28,6 +28,8 @@ struct DiagramKind {
   std::string summary;
   std::vector<std::string> models;
   std::function<std::unique_ptr<Diagram>(const DiagramInput&)> make;
+  /// The `annotate` names it draws (e.g. "geometry"); none by default.
+  std::vector<std::string> annotations = {};
 };
 
 /// Every diagram, in the order `vibra render --help` lists them.

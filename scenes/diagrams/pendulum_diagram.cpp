@@ -1,6 +1,7 @@
 #include "scenes/panels/plot_panels.hpp"
 #include "scenes/diagrams/pendulum_diagram.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -48,6 +49,7 @@ void PendulumDiagram::record(std::span<const double> row, WorldBox& world) {
   for (const Point& p : {Point(g.bob + Point(r, r)), Point(g.bob - Point(r, r)), g.gravity_tip, g.wire_force_tip,
                          g.drag_tip})
     world.extend(p);
+  if (options_.geometry) world.extend(g.radial_unit_tip), world.extend(g.azimuthal_unit_tip);
 }
 
 void PendulumDiagram::finish_recording(WorldBox& world) {
@@ -104,6 +106,29 @@ void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::s
     const Point direction(g.theta_label_direction.x(), -g.theta_label_direction.y());
     render::request_label(canvas, {"<i>θ</i>", label, at, direction, 4 * scale});
   }
+  if (o.geometry) draw_geometry(canvas, view, g, side * outward);
+}
+
+void PendulumDiagram::draw_geometry(Canvas& canvas, const render::WorldView& view, const PendulumGeometry& g,
+                                    const Point& away_from_vertical) const {
+  // Fig 1.21's geometry: the bob is at r = x0 i + y0 j + L i_r, with
+  // i_r = sin(theta) i - cos(theta) j and i_theta = cos(theta) i + sin(theta) j.
+  const auto& c = colors_;
+  const double scale = canvas.scale();
+  const render::ForceArrow vectors[] = {
+      {g.unit_origin, g.radial_unit_tip, c.wire, "<b>i</b><sub><i>r</i></sub>"},
+      {g.unit_origin, g.azimuthal_unit_tip, c.wire, "<b>i</b><sub><i>θ</i></sub>"}};
+  for (const auto& v : vectors) draw_force_arrow(canvas, view, v, c.background);
+  TextStyle label{22, c.wire};
+  label.halo = true, label.halo_color = c.background;
+  // The pivot's coordinates beside it, away from the bob; L beside the
+  // wire's middle on the side of the vertical, where no arrow runs.
+  const Point pivot = view.to_pixel(g.pivot);
+  const Point bob_side = view.to_pixel(g.bob) - pivot;
+  const Point away_from_bob = Point(bob_side.x() > 0 ? -1 : 1, 0.6).normalized();
+  render::request_label(canvas, {"(<i>x</i><sub>0</sub>, <i>y</i><sub>0</sub>)", label, pivot, away_from_bob, 8 * scale});
+  render::request_label(canvas, {"<i>L</i>", label, view.to_pixel(0.5 * (g.pivot + g.bob)), -away_from_vertical,
+                                 4 * scale});
 }
 
 std::optional<ForceKey> PendulumDiagram::force_key() const {
@@ -119,8 +144,11 @@ DiagramKind pendulum_diagram_kind() {
           {"pendulum", "physical-pendulum"}, [](const DiagramInput& in) {
             PendulumDiagramOptions options;
             options.drag_magnification = in.config.drag_magnification;
+            options.geometry = std::find(in.config.annotate.begin(), in.config.annotate.end(), "geometry") !=
+                               in.config.annotate.end();
             return std::make_unique<PendulumDiagram>(options, in.config.colors);
-          }};
+          },
+          {"geometry"}};
 }
 
 }  // namespace vibra::scenes

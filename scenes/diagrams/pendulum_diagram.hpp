@@ -22,6 +22,10 @@ class PendulumDiagram final : public Diagram {
   std::optional<ForceKey> force_key() const override;
 
  private:
+  /// `--annotate geometry`: the unit vectors, the pivot (x0, y0) and L.
+  void draw_geometry(render::Canvas&, const render::WorldView&, const PendulumGeometry&,
+                     const Point& away_from_vertical) const;
+
   /// Whether the bob or the wire ever rises to the pivot's height, where a
   /// ceiling would cut them: the pivot is then a bearing block.
   bool above_pivot_ = false;

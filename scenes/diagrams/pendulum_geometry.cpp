@@ -19,6 +19,9 @@ PendulumGeometry pendulum_geometry(const PendulumState& s, const PendulumDiagram
   g.arc_to = -M_PI / 2 + s.theta;
   const double middle = -M_PI / 2 + s.theta / 2;
   g.theta_label_direction = Point(std::cos(middle), std::sin(middle));
+  g.unit_origin = g.bob + o.bob_radius * radial;
+  g.radial_unit_tip = g.unit_origin + o.unit_vector_length * radial;
+  g.azimuthal_unit_tip = g.unit_origin + o.unit_vector_length * azimuthal;
   return g;
 }
 

@@ -18,6 +18,10 @@ struct PendulumDiagramOptions {
   double bob_radius = 1.0 / 20;     ///< L/20
   double arc_radius = 1.0 / 6;      ///< L/6
   double vertical_length = 1.0 / 3; ///< dashed reference line, L/3
+  double unit_vector_length = 0.25; ///< i_r and i_theta as drawn by `--annotate geometry`
+  /// `--annotate geometry` (Fig 1.21): the unit vectors i_r and i_theta, the
+  /// pivot (x0, y0) and the wire's length L.
+  bool geometry = false;
 };
 
 /// Every point of the diagram in world units, pivot at the origin, y up.
@@ -28,6 +32,10 @@ struct PendulumGeometry {
   Point vertical_end;
   double arc_from = 0, arc_to = 0;  ///< world angles (radians ccw from +x) of the theta arc
   Point theta_label_direction;      ///< unit vector from the pivot through the arc's midpoint
+  /// The unit vectors i_r (pivot to bob) and i_theta (increasing theta), drawn
+  /// from the bob's far edge so that they stand clear of the force arrows,
+  /// which start at its centre.
+  Point unit_origin, radial_unit_tip, azimuthal_unit_tip;
 };
 
 PendulumGeometry pendulum_geometry(const PendulumState&, const PendulumDiagramOptions&);

@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "render/output/stop_signal.hpp"
 #include "scenes/figures/friction_panel.hpp"
+#include "scenes/figures/mesh_marks.hpp"
 #include "scenes/panels/rows_inside_step.hpp"
 
 namespace vibra::scenes {
@@ -22,7 +23,7 @@ struct Feed {
 }  // namespace
 
 render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::string>& panels, int width, int height,
-                                 const std::string& title) {
+                                 const std::string& title, bool mark_mesh) {
   const TrajectoryInfo& info = trajectory.info();
   const std::vector<std::string> order = ordered_plot_panels(info, panels);
   const bool with_exact = std::find(panels.begin(), panels.end(), "exact") != panels.end();
@@ -34,6 +35,8 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
   std::vector<Feed> starts;  // markers at the start of paths, fed the first row only
   int time_panels = 0;
   std::optional<FrictionPanel> friction;
+  std::optional<MeshMarks> mesh;
+  if (mark_mesh) mesh.emplace(info, width);
   for (const auto& name : order) {
     if (name == "friction") {
       friction.emplace(figure, std::vector<FrictionPanel::Member>{{&info, blue, ""}});
@@ -51,11 +54,13 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
     }
     const int column = column_index(info, name);
     const int p = figure.add_panel({quantity_markup(name), "<i>t</i>", render::AxisScale::linear,
-                                    render::AxisScale::linear, false, std::make_pair(0.0, T)});
+                                    render::AxisScale::linear, false, std::make_pair(0.0, T),
+                                    mesh ? mesh->ticks() : std::vector<double>{}});
     const bool overlay = with_exact && name == main;
     const double f = display_factor(name);
-    feeds.push_back(
-        {&figure.add_curve(p, overlay ? "numerical" : "", {time_panel_color(time_panels++), 2.2}, 0, T), 0, column, 1, f});
+    const render::Color color = time_panel_color(time_panels++);
+    feeds.push_back({&figure.add_curve(p, overlay ? "numerical" : "", {color, 2.2}, 0, T), 0, column, 1, f});
+    if (mesh) mesh->mark_panel(figure, p, column, f, color);
     if (overlay) {
       // The exact solution is a function: sample it at least as finely as the
       // mesh (so its envelope holds every peak) and at least 4 times per pixel column.
@@ -78,6 +83,7 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
     rows_inside_step(trajectory, previous, spacing, row, feed);
     trajectory.row(row);
     feed(row);
+    if (mesh) mesh->observe_step(row);
     previous = trajectory.t();
     if ((trajectory.index() & 0xffff) == 0) render::throw_if_stop_requested();
   } while (trajectory.advance());

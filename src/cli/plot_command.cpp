@@ -16,6 +16,7 @@
 #include "render/page/html_page.hpp"
 #include "render/plot/figure.hpp"
 #include "scenes/diagrams/comparison_labels.hpp"
+#include "scenes/annotations.hpp"
 #include "scenes/figures/comparison_figure.hpp"
 #include "scenes/figures/trajectory_figure.hpp"
 #include "scenes/panels/page_plot_collector.hpp"
@@ -32,6 +33,7 @@ struct PlotOptions {
   std::string panels;
   std::string size;
   std::vector<std::string> compare;
+  std::string annotate;
   bool help = false;
   bool quiet = false;
   bool transparent = false;
@@ -39,7 +41,7 @@ struct PlotOptions {
 
 constexpr const char* kUsage =
     "Usage: vibra plot MODEL [--set KEY=VALUE]... [--compare KEY=V1,V2,...] -o FILE.png|svg|pdf|html [--panels LIST] "
-    "[--size WxH]\n";
+    "[--annotate mesh] [--size WxH]\n";
 constexpr const char* kExamples =
     "\nPanels: any column of the model but t (against t; neighbours share the t axis), exact (the exact\n"
     "solution over the main quantity, dashed), error (main quantity - exact solution, where one is known),\n"
@@ -58,6 +60,8 @@ constexpr const char* kExamples =
     "  vibra plot undamped --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 --set steps_per_period=40 \\\n"
     "      --set periods=4 -o schemes.png\n"
     "  vibra plot sliding-box --compare alpha=0,1,2,4 --panels friction,u -o springs.png   # Exercise 1.23\n"
+    "  vibra plot undamped --set scheme=staggered --set steps_per_period=8 --set periods=2 --panels u,v \\\n"
+    "      --annotate mesh -o mesh.png                           # Fig 1.12\n"
     "  vibra plot pendulum --set periods=200 -o pendulum.html   # interactive, zoomable (time panels only)\n";
 
 int figure_height(size_t panels) { return panels > 2 ? 960 : 720; }
@@ -79,6 +83,14 @@ bool wants_error(const std::vector<std::string>& panels) {
   return std::find(panels.begin(), panels.end(), "error") != panels.end();
 }
 
+/// `--annotate LIST`: whether to mark the mesh (the one annotation plot draws).
+bool marks_mesh(const PlotOptions& o) {
+  if (o.annotate.empty()) return false;
+  for (const auto& name : app::word_list("--annotate", o.annotate)) scenes::check_annotation_name(name, "plot");
+  if (!o.compare.empty()) throw UsageError("--annotate mesh marks one run's steps: drop --compare, or --annotate");
+  return true;
+}
+
 render::Figure trajectory_plot(const PlotOptions& o, const Parameters& parameters) {
   std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
   const std::vector<std::string> panels =
@@ -87,7 +99,7 @@ render::Figure trajectory_plot(const PlotOptions& o, const Parameters& parameter
   int width = 1280, height = figure_height(panels.size());
   if (!o.size.empty()) scenes::parse_size(o.size, width, height);
   const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);
-  return scenes::trajectory_figure(*trajectory, panels, width, height, title);
+  return scenes::trajectory_figure(*trajectory, panels, width, height, title, marks_mesh(o));
 }
 
 /// FIGURE.html: the run's time series as a page of linked, zoomable plots.
@@ -124,6 +136,8 @@ void run_plot(const PlotOptions& o) {
   if (o.output.empty())
     throw UsageError("vibra plot needs an output file: add -o FILE.png, FILE.svg, FILE.pdf or FILE.html");
   const bool page = std::filesystem::path(o.output).extension() == ".html";
+  if (page && !o.annotate.empty())
+    throw UsageError("--annotate marks a picture; a page's plots are zoomable: give -o FILE.png, .svg or .pdf");
   if (page && o.transparent)
     throw UsageError("--transparent is for pictures; a page has no background to drop: give -o FILE.png, .svg or .pdf");
   if (!page) render::require_picture_extension(o.output);
@@ -132,6 +146,7 @@ void run_plot(const PlotOptions& o) {
     write_figure_page(o, target.file);
   } else {
     const Parameters parameters = model_settings(o.model, o.settings);
+    if (!o.compare.empty()) marks_mesh(o);  // refused with --compare
     render::Figure figure = o.compare.empty() ? trajectory_plot(o, parameters) : comparison_plot(o, parameters);
     figure.set_transparent(o.transparent);
     figure.write(target.file);
@@ -153,6 +168,8 @@ void add_plot_command(CLI::App& app) {
   cmd->add_option("--panels", o->panels, "Comma-separated panels, e.g. theta,S,D or u,exact or path");
   cmd->add_option("--compare", o->compare, "KEY=V1,V2,...: one run per value of KEY, drawn together (up to 8)")
       ->allow_extra_args(false);
+  cmd->add_option("--annotate", o->annotate,
+                  "mesh: a dot at every step on the time panels, the staggered scheme's v at the half steps (Fig 1.12)");
   cmd->add_option("--size", o->size, "Picture size WxH in pixels (default 1280x720, 1280x960 for 3+ panels)");
   cmd->add_flag("--transparent", o->transparent, "No background: PNG with alpha, SVG/PDF without the paper rectangle");
   add_allow_unstable_flag(*cmd);

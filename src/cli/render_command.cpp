@@ -33,6 +33,7 @@ struct RenderOptions {
   std::string compare;
   std::string panels;
   bool energy_bars = false;
+  std::string annotate;
   std::optional<std::string> title;
   bool equation = false;
   std::vector<std::string> notes;
@@ -110,6 +111,7 @@ void run(const RenderOptions& o) {
   flag("window_mode", o.window_mode, "--window-mode");
   flag("compare", o.compare, "--compare");
   flag("panels", o.panels, "--panels");
+  flag("annotate", o.annotate, "--annotate");
   for (const auto& range : o.slow) scenes::apply_setting(request.scene, {"slow", range, "--slow"});
   for (const auto& pause : o.pauses) scenes::apply_setting(request.scene, {"pause", pause, "--pause"});
   if (o.energy_bars) request.scene.energy_bars = true;
@@ -163,6 +165,9 @@ void add_render_command(CLI::App& app) {
                   "(each measured period against the exact one); default: the system's own");
   cmd->add_flag("--energy-bars", o->energy_bars,
                 "Kinetic, potential and dissipated energy as bars beside the diagram, on one scale over the run");
+  cmd->add_option("--annotate", o->annotate,
+                  "Marks of the book's figures on the diagram: geometry (the pendulum's unit vectors i_r and i_theta, "
+                  "its pivot (x0, y0) and length L, Fig 1.21)");
   cmd->add_option("--title", o->title, "A title across the top of the frame (text; $math$ in the LaTeX subset)");
   cmd->add_flag("--equation", o->equation,
                 "The model's equation of motion typeset under the title; with --compare scheme=..., each scheme's "
