@@ -166,6 +166,7 @@ const std::vector<KeySpec>& scene_keys() {
       {"slow", ValueKind::text, "", "", "T0-T1:FACTOR: simulated [T0, T1] FACTOR times slower (4: a quarter speed), repeatable", {}, {}},
       {"pause", ValueKind::text, "", "", "T:SECONDS: hold simulated time T for SECONDS of video, repeatable", {}, {}},
       {"drag_magnification", ValueKind::number, "5", "", "drag arrow drawn this many times longer", {}, {}},
+      {"exaggerate", ValueKind::number, "0", "", "bumpy road: heights drawn this many times larger (0: automatic, 1: true scale)", {}, {}},
       {"title", ValueKind::text, "", "", "a title across the top (text; $math$ in the LaTeX subset)", {}, {}},
       {"equation", ValueKind::choice, "false", "", "the model's equation of motion under the title", {"true", "false"}, {}},
       {"notes", ValueKind::text, "", "", "callouts \"T0-T1: TEXT\" (a list; @PANEL points at a panel)", {}, {}},
@@ -270,6 +271,11 @@ void apply_setting(SceneConfig& c, const Setting& s) {
     }
   } else if (k == "drag_magnification") {
     c.drag_magnification = parse_number(s);
+  } else if (k == "exaggerate") {
+    c.exaggerate = parse_number(s);
+    if (c.exaggerate > 0 && c.exaggerate < 1)
+      throw UsageError(s.origin + ": exaggerate=" + s.value +
+                       " would shrink the motion: give 1 (true scale), more than 1, or 0 (chosen from the run)");
   } else if (k == "title") {
     try {
       (void)render::parse_rich_text(s.value);

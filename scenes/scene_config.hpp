@@ -37,6 +37,9 @@ struct SceneConfig {
   /// `annotate`, --annotate): "geometry" for the pendulum (Fig 1.21).
   std::vector<std::string> annotate;
   double drag_magnification = 5;
+  /// Small vertical motions drawn this many times larger (the bumpy road);
+  /// 0 = chosen from the run, 1 = true scale.
+  double exaggerate = 0;
   SceneColors colors;
   /// "KEY=V1,V2,...": one run per value, drawn together; "" = one run.
   std::string compare;

@@ -54,6 +54,10 @@ void check_panel_options(const SceneConfig& config) {
     throw UsageError("panels are drawn beside the diagram: use --layout fbd+plot, or drop --panels");
   if (config.energy_bars && (config.layout == Layout::plot || config.layout == Layout::grid))
     throw UsageError("energy bars stand beside the diagram: use --layout fbd or fbd+plot, or drop --energy-bars");
+  if (config.exaggerate > 1 && config.layout != Layout::plot && config.layout != Layout::grid &&
+      !diagram_for(config).exaggerates)
+    throw UsageError("--exaggerate draws small motions larger, and the " + diagram_for(config).name +
+                     " diagram is drawn true to scale: drop --exaggerate (the bumpy road has it)");
   for (const auto& name : config.annotate) {
     if (config.layout == Layout::plot || config.layout == Layout::grid)
       throw UsageError("--annotate " + name + " marks the diagram: use --layout fbd or fbd+plot, or drop --annotate");
@@ -197,6 +201,9 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
   for (size_t i = 0; i < columns.size(); ++i) {
     SceneConfig member = config;
     member.colors.bob = legend[i].color;
+    // Each member would choose its own factor from its own run: one scale for
+    // all, the one given or true scale, keeps the ghosts comparable.
+    if (member.exaggerate == 0) member.exaggerate = 1;
     members.push_back({kind.make({member, comparison.parameters(i), comparison.trajectory(i).info()}), columns[i],
                        std::move(legend[i])});
   }

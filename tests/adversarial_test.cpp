@@ -39,10 +39,10 @@ std::size_t longest_line(const std::string& text) {
 }  // namespace
 
 TEST_CASE("adversarial: every numeric render option refuses hostile numbers", "[cli][adversarial]") {
-  // 7 options x 10 values = 70 cases.
+  // 8 options x 10 values = 80 cases.
   const std::vector<std::pair<std::string, std::string>> options = {
       {"--fps", "fps"},         {"--speed", "speed"},     {"--every", "--every"}, {"--threads", "--threads"},
-      {"--crf", "--crf"},       {"--window", "window"},   {"--at", "--at"}};
+      {"--crf", "--crf"},       {"--window", "window"},   {"--at", "--at"},       {"--exaggerate", "exaggerate"}};
   int cases = 0;
   for (const auto& [option, named] : options)
     for (const auto& value : kBadNumbers) {
@@ -50,7 +50,7 @@ TEST_CASE("adversarial: every numeric render option refuses hostile numbers", "[
       check_refused("render --set periods=0.2 " + option + " " + value + out, named);
       ++cases;
     }
-  CHECK(cases == 70);
+  CHECK(cases == 80);
 }
 
 TEST_CASE("adversarial: model keys refuse hostile numbers, blamed on the key", "[cli][adversarial]") {

@@ -1,5 +1,6 @@
-// `--annotate`: the staggered mesh of Fig 1.12 (vibra plot) and the refusals
-// that send each annotation to the command that draws it.
+// Drawing options for the book's figures: `--annotate` (the staggered mesh of
+// Fig 1.12 in vibra plot, the pendulum's geometry in render) with the refusals
+// that send each annotation to the command that draws it, and `--exaggerate`.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -99,4 +100,14 @@ TEST_CASE("vibra plot --annotate mesh draws the dots; each annotation is refused
   check_refused("plot undamped --annotate mesh -o OUT.png", "400 steps do not fit");
   check_refused("plot undamped --annotate mesh --compare dt=0.1,0.2 -o OUT.png", "drop --compare");
   check_refused("plot undamped --annotate mesh -o OUT.html", "a page's plots are zoomable");
+}
+
+TEST_CASE("--exaggerate: the bumpy road's, refused elsewhere and below 1", "[annotate]") {
+  check_refused("render pendulum --exaggerate 3 --at 1 -o OUT.png", "the pendulum diagram is drawn true to scale");
+  check_refused("render bumpy_road --exaggerate 0.5 --at 1 -o OUT.png", "would shrink the motion");
+  check_refused("render bumpy_road --exaggerate 1e5 --at 1 -o OUT.png", "exaggerate");
+  ScratchDirectory dir;
+  const auto r = run_vibra("render bumpy_road --exaggerate 10 --at 1 --size 640x360 -o " + (dir / "road.png"));
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
 }

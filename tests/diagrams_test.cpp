@@ -147,10 +147,14 @@ TEST_CASE("washing machine diagram: the drum's mass at the forcing's phase, arro
 
 TEST_CASE("bumpy road diagram: the wheel on the road, the body at L + u over the axle, arrows -k u and -b u'",
           "[scene][diagram]") {
-  const Recorded r = record("bumpy_road");
+  const Recorded r = record("bumpy_road", {{"exaggerate", "1"}});
   auto& d = as<BumpyRoadDiagram>(r);
   const Parameters p = model_parameters_of(r.config);
   const double R = p.number("R"), L = p.number("L"), k = p.number("k"), b = p.number("b");
+  CHECK(d.exaggeration() == 1);
+  CHECK(d.force_key()->note.empty());
+  // Spring and damper stand outside the wheel: neither crosses its rim.
+  CHECK(d.strut_offset() - 0.45 * R / 2 > R);
   for (size_t i = 0; i < r.rows.size(); i += 5) {
     const auto& row = r.rows[i];
     CHECK(d.axle(row).y() == Approx(row[4] + R));
@@ -163,6 +167,34 @@ TEST_CASE("bumpy road diagram: the wheel on the road, the body at L + u over the
     REQUIRE(view);
     CHECK(view->center().x() == Approx(row[3]));
   }
+}
+
+TEST_CASE("bumpy road diagram: heights drawn F times larger, F chosen so that the motion shows and stays a vehicle",
+          "[scene][diagram]") {
+  // exaggerate = 4: the road and the body's u four times taller, R and L true, and the key says so.
+  const Recorded r = record("bumpy_road", {{"exaggerate", "4"}});
+  auto& d = as<BumpyRoadDiagram>(r);
+  const Parameters p = model_parameters_of(r.config);
+  const double R = p.number("R"), L = p.number("L");
+  CHECK(d.exaggeration() == 4);
+  CHECK(d.force_key()->note == "heights drawn ×4");
+  for (size_t i = 0; i < r.rows.size(); i += 7) {
+    CHECK(d.axle(r.rows[i]).y() == Approx(4 * r.rows[i][4] + R));
+    CHECK(d.body_bottom(r.rows[i]) - d.axle(r.rows[i]).y() == Approx(L + 4 * r.rows[i][1]));
+  }
+  // Automatic: the largest of 1, 2, 3, 4, 5 x 10^k keeping the swing within L/2 and the bumps within 0.8 R.
+  const BumpyRoadDiagram::Vehicle v{6e4, 600, 0.3, 0.6};
+  CHECK(BumpyRoadDiagram::automatic_exaggeration(0.08, 0.06, v) == 3);       // 3.75 and 4 allowed
+  CHECK(BumpyRoadDiagram::automatic_exaggeration(1e-4, 1e-4, v) == 2000);    // 0.24 / 1e-4 = 2400
+  CHECK(BumpyRoadDiagram::automatic_exaggeration(0.1, 0.01, v) == 1);        // a swing of L/6 shows already
+  CHECK(BumpyRoadDiagram::automatic_exaggeration(0, 0, v) == 1);             // nothing moves
+  const Recorded automatic = record("bumpy_road");
+  auto& a = as<BumpyRoadDiagram>(automatic);
+  double swing = 0;
+  for (const auto& row : automatic.rows) swing = std::max(swing, std::abs(row[1]));
+  CHECK(a.exaggeration() > 1);
+  CHECK(a.exaggeration() * swing <= 0.5 * L);
+  CHECK(a.exaggeration() * swing > L / 7);  // now it shows
 }
 
 TEST_CASE("bouncing ball diagram: the ball on the ground at h, v to one scale, the weight down, impacts as the model's",

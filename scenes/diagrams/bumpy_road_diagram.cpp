@@ -1,6 +1,8 @@
 #include "scenes/diagrams/bumpy_road_diagram.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/models/model.hpp"
 #include "render/draw/annotations.hpp"
@@ -10,8 +12,9 @@
 
 namespace vibra::scenes {
 
-BumpyRoadDiagram::BumpyRoadDiagram(std::shared_ptr<const RoadProfile> road, Vehicle vehicle, SceneColors colors)
-    : road_(std::move(road)), vehicle_(vehicle), colors_(colors) {
+BumpyRoadDiagram::BumpyRoadDiagram(std::shared_ptr<const RoadProfile> road, Vehicle vehicle, SceneColors colors,
+                                   double exaggerate)
+    : road_(std::move(road)), vehicle_(vehicle), colors_(colors), requested_(exaggerate) {
   body_width_ = 3.2 * vehicle_.R, body_height_ = 0.9 * vehicle_.R;
   half_width_ = 1.4 * (vehicle_.R + vehicle_.L + body_height_);
 }
@@ -30,19 +33,34 @@ std::vector<PanelSpec> BumpyRoadDiagram::panels() const {
 void BumpyRoadDiagram::record(std::span<const double> row, WorldBox&) {
   scale_.see(vehicle_.k * row[1]);
   scale_.see(vehicle_.b * row[2]);
-  low_ = std::min(low_, row[4]);
-  high_ = std::max(high_, body_bottom(row) + body_height_);
+  lowest_road_ = std::min(lowest_road_, row[4]);
+  highest_road_ = std::max(highest_road_, row[4]);
+  highest_top_ = std::max(highest_top_, row[4] + row[1]);  // the body's top is F (h + u) + R + L + its height
+  swing_ = std::max(swing_, std::abs(row[1]));
+}
+
+double BumpyRoadDiagram::automatic_exaggeration(double swing, double bumps, const Vehicle& v) {
+  if (swing >= v.L / 7 || !(swing > 0)) return 1;
+  double best = 1;
+  for (double decade = 1; decade <= 1000; decade *= 10)
+    for (double m : {1, 2, 3, 4, 5})
+      if (m * decade * swing <= 0.5 * v.L && m * decade * bumps <= 0.8 * v.R) best = std::max(best, m * decade);
+  return best;
 }
 
 void BumpyRoadDiagram::finish_recording(WorldBox& world) {
   scale_.set_longest(0.9 * vehicle_.L);
   const double reach = scale_.length(scale_.largest());
-  low_ -= 0.35 * vehicle_.R;
+  factor_ = requested_ > 0 ? requested_
+                           : automatic_exaggeration(swing_, highest_road_ - lowest_road_, vehicle_);
+  low_ = factor_ * lowest_road_ - 0.35 * vehicle_.R;
+  high_ = factor_ * highest_top_ + vehicle_.R + vehicle_.L + body_height_;
   high_ += std::max(0.4 * vehicle_.R, reach - 0.5 * body_height_ + 0.3 * vehicle_.R);
   world.extend(Point(-half_width_, low_));
   world.extend(Point(half_width_, high_));
   // The ground reaches below the view: a pale band under the road, hatched.
-  ground_.emplace([road = road_](double s) { return road->height(s); }, road_->dx(), 0.3 * vehicle_.R + (high_ - low_),
+  ground_.emplace([road = road_, f = factor_](double s) { return f * road->height(s); }, road_->dx(),
+                  0.3 * vehicle_.R + (high_ - low_),
                   render::Stroke{colors_.wire, 2.2});
 }
 
@@ -69,11 +87,12 @@ void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& vie
   render::draw_wheel(canvas, view, a, vehicle_.R, -x / vehicle_.R, colors_.background, {colors_.wire, 2});
   render::SpringShape spring;
   spring.width = 0.45 * vehicle_.R, spring.lead = 0.18 * vehicle_.L, spring.coils = 6;
-  render::draw_spring(canvas, view, a + Point(-0.25 * body_width_, 0), Point(x - 0.25 * body_width_, bottom), spring, ink);
+  const double strut = strut_offset();
+  render::draw_spring(canvas, view, a + Point(-strut, 0), Point(x - strut, bottom), spring, ink);
   render::DashpotShape dashpot;
   dashpot.width = 0.4 * vehicle_.R, dashpot.rest_length = vehicle_.L, dashpot.cylinder = 0.45;
-  render::draw_dashpot(canvas, view, a + Point(0.25 * body_width_, 0), Point(x + 0.25 * body_width_, bottom), dashpot, ink);
-  render::draw_line(canvas, view, a + Point(-0.25 * body_width_, 0), a + Point(0.25 * body_width_, 0), {colors_.wire, 3});
+  render::draw_dashpot(canvas, view, a + Point(strut, 0), Point(x + strut, bottom), dashpot, ink);
+  render::draw_line(canvas, view, a + Point(-strut, 0), a + Point(strut, 0), {colors_.wire, 3});
   render::draw_box(canvas, view, Point(x - 0.5 * body_width_, bottom), Point(x + 0.5 * body_width_, bottom + body_height_),
                    colors_.bob.with_alpha(0.85), {colors_.wire, 1.8});
   if (ghost()) return;
@@ -83,7 +102,11 @@ void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& vie
   render::draw_force_arrow(canvas, view, {arrows[1].from, arrows[1].to, colors_.drag, "−<i>bu</i>′"}, colors_.background);
 }
 
-std::optional<ForceKey> BumpyRoadDiagram::force_key() const { return ForceKey{scale_.per_force(), "N", ""};}
+std::optional<ForceKey> BumpyRoadDiagram::force_key() const {
+  char note[64] = "";
+  if (factor_ != 1) std::snprintf(note, sizeof note, "heights drawn ×%g", factor_);
+  return ForceKey{scale_.per_force(), "N", note};
+}
 
 DiagramKind bumpy_road_diagram_kind() {
   return {"bumpy_road", "vehicle on a bumpy road: road profile, rolling wheel, spring and damper, view following (section 1.12.8)",
@@ -93,8 +116,10 @@ DiagramKind bumpy_road_diagram_kind() {
             auto road = std::make_shared<const RoadProfile>(road_of(p, distance + 2 * p.positive("wavelength")));
             return std::make_unique<BumpyRoadDiagram>(
                 road, BumpyRoadDiagram::Vehicle{p.number("k"), p.number("b"), p.number("R"), p.number("L")},
-                in.config.colors);
-          }};
+                in.config.colors, in.config.exaggerate);
+          },
+          {},
+          true};
 }
 
 }  // namespace vibra::scenes

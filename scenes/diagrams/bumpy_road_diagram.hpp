@@ -16,13 +16,17 @@ namespace vibra::scenes {
 /// and a damper from the axle up to the body, whose height over the axle is
 /// L + u; arrows on the body for the spring force -k u and the damper force
 /// -b u' (in newtons, to one scale). The view follows the vehicle; heights
-/// are fixed from the pre-pass. Rows: t, u, v, x, h.
+/// are fixed from the pre-pass. Heights (the road's and the body's u) are
+/// drawn `exaggeration()` times larger, said in the force key: a few
+/// centimetres under a metre-high vehicle would otherwise be a few pixels.
+/// Rows: t, u, v, x, h.
 class BumpyRoadDiagram final : public Diagram {
  public:
   struct Vehicle {
     double k, b, R, L;
   };
-  BumpyRoadDiagram(std::shared_ptr<const RoadProfile>, Vehicle, SceneColors);
+  /// `exaggerate`: the factor for heights; 0 chooses it from the run (automatic_exaggeration).
+  BumpyRoadDiagram(std::shared_ptr<const RoadProfile>, Vehicle, SceneColors, double exaggerate = 1);
 
   void record(std::span<const double> row, WorldBox& world) override;
   void finish_recording(WorldBox& world) override;
@@ -31,8 +35,18 @@ class BumpyRoadDiagram final : public Diagram {
   std::vector<PanelSpec> panels() const override;
   std::optional<ForceKey> force_key() const override;
 
-  Point axle(std::span<const double> row) const { return {row[3], row[4] + vehicle_.R}; }
-  double body_bottom(std::span<const double> row) const { return axle(row).y() + vehicle_.L + row[1]; }
+  Point axle(std::span<const double> row) const { return {row[3], factor_ * row[4] + vehicle_.R}; }
+  double body_bottom(std::span<const double> row) const { return axle(row).y() + vehicle_.L + factor_ * row[1]; }
+  /// How many times larger heights are drawn (known after finish_recording).
+  double exaggeration() const { return factor_; }
+  /// The factor `exaggerate = 0` chooses: 1 when the body's swing already
+  /// shows (a seventh of L or more), else the largest of 1, 2, 3, 4, 5 times
+  /// a power of ten that keeps the swing within half of L and the road's
+  /// bumps within 0.8 R, so that the drawing stays a vehicle on a road.
+  static double automatic_exaggeration(double swing, double bumps, const Vehicle&);
+  /// Where the spring (left) and the damper (right) stand, from the axle's
+  /// centre: outside the wheel, so that neither crosses its rim.
+  double strut_offset() const { return 0.4 * body_width_; }
   /// Spring and damper force arrows at a row, in world units.
   std::array<Arrow, 2> force_arrows(std::span<const double> row) const;
 
@@ -42,7 +56,9 @@ class BumpyRoadDiagram final : public Diagram {
   SceneColors colors_;
   ForceScale scale_;
   std::optional<render::GroundProfile> ground_;  ///< once the run's heights are known
+  double requested_ = 1, factor_ = 1;
   double low_ = 1e300, high_ = -1e300;
+  double lowest_road_ = 1e300, highest_road_ = -1e300, highest_top_ = -1e300, swing_ = 0;  ///< raw, from the pre-pass
   double half_width_ = 1, body_width_ = 1, body_height_ = 0.3;
 };
 

@@ -30,6 +30,8 @@ struct DiagramKind {
   std::function<std::unique_ptr<Diagram>(const DiagramInput&)> make;
   /// The `annotate` names it draws (e.g. "geometry"); none by default.
   std::vector<std::string> annotations = {};
+  /// Whether it draws small motions larger (`exaggerate`); the others are true to scale.
+  bool exaggerates = false;
 };
 
 /// Every diagram, in the order `vibra render --help` lists them.

@@ -34,6 +34,7 @@ struct RenderOptions {
   std::string panels;
   bool energy_bars = false;
   std::string annotate;
+  std::string exaggerate;
   std::optional<std::string> title;
   bool equation = false;
   std::vector<std::string> notes;
@@ -112,6 +113,7 @@ void run(const RenderOptions& o) {
   flag("compare", o.compare, "--compare");
   flag("panels", o.panels, "--panels");
   flag("annotate", o.annotate, "--annotate");
+  flag("exaggerate", o.exaggerate, "--exaggerate");
   for (const auto& range : o.slow) scenes::apply_setting(request.scene, {"slow", range, "--slow"});
   for (const auto& pause : o.pauses) scenes::apply_setting(request.scene, {"pause", pause, "--pause"});
   if (o.energy_bars) request.scene.energy_bars = true;
@@ -168,6 +170,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--annotate", o->annotate,
                   "Marks of the book's figures on the diagram: geometry (the pendulum's unit vectors i_r and i_theta, "
                   "its pivot (x0, y0) and length L, Fig 1.21)");
+  cmd->add_option("--exaggerate", o->exaggerate,
+                  "F: the bumpy road's heights (road and body) drawn F times larger, said under the diagram; default: "
+                  "chosen from the run when its motion is too small to see, 1 for true scale");
   cmd->add_option("--title", o->title, "A title across the top of the frame (text; $math$ in the LaTeX subset)");
   cmd->add_flag("--equation", o->equation,
                 "The model's equation of motion typeset under the title; with --compare scheme=..., each scheme's "

@@ -27,6 +27,7 @@ const std::vector<ValueRange>& value_ranges() {
       {"video_speed", 0, 1e12, false, false, false, "simulated time per second of video, e.g. 2 (0: automatic)"},
       {"window", 0, 1e15, true, false, false, "e.g. window=10 or window=8periods"},
       {"drag_magnification", 0, 1e6, true, false, false, "e.g. drag_magnification=5"},
+      {"exaggerate", 0, 1e4, false, false, false, "e.g. exaggerate=5, 1 for true scale, 0 to choose automatically"},
       // Command-line options.
       {"--at", -1e15, 1e15, false, false, false, "a time of the run, e.g. --at 3.2 or --at pi/2"},
       {"--every", 1, 1e15, false, true, false, "e.g. --every 10"},
