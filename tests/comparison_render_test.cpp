@@ -221,3 +221,47 @@ TEST_CASE("render --compare refuses bad input with one line and writes nothing",
   check_refused("render spring --layout grid -o OUT.mp4", "add --compare");
   check_refused("render spring --compare scheme -o OUT.mp4", "not KEY=V1,V2");
 }
+
+TEST_CASE("ghosts on top of each other and of the first run all show, each in its colour", "[comparison]") {
+  // At t = 0 every scheme's bob is at Theta: three runs in one place.
+  scenes::SceneConfig config = scenes::load_scene("pendulum");
+  for (const auto& [k, v] : std::vector<std::pair<std::string, std::string>>{
+           {"compare", "scheme=rk4,crank-nicolson,euler-cromer"}, {"layout", "fbd"}, {"size", "1280x720"}})
+    scenes::apply_setting(config, {k, v, "test"});
+  auto pre_pass = scenes::build_scene_runs(config);
+  auto scene = scenes::make_scene_for(config, *pre_pass, "test");
+  std::vector<double> row(pre_pass->width());
+  do {
+    pre_pass->row(row);
+    scene->record(row);
+  } while (pre_pass->advance());
+  auto runs = scenes::build_scene_runs(config);
+  runs->row(row);
+  render::Canvas canvas = render::Canvas::image(1280, 720);
+  scene->draw(canvas, row);
+  canvas.flush();
+  const render::WorldView view = dynamic_cast<scenes::SystemScene&>(*scene).view_at(row);
+  const scenes::PendulumGeometry g = scenes::pendulum_geometry({0, row[1], 0, 1, 0}, {});
+  const render::Point bob = view.to_pixel(g.bob);
+  const double radius = scenes::PendulumDiagramOptions{}.bob_radius * view.zoom();
+  // Pixels of a colour, at full strength, within a few pixels of the bob's
+  // edge, away from where the arrows mg (down) and S (to the pivot) leave it:
+  // their colours are among the members'.
+  const render::Point down(0, 1), to_pivot = (view.to_pixel(g.pivot) - bob).normalized();
+  auto on_rim = [&](const render::Color& c) {
+    int n = 0;
+    for (int y = int(bob.y() - radius - 6); y <= int(bob.y() + radius + 6); ++y)
+      for (int x = int(bob.x() - radius - 6); x <= int(bob.x() + radius + 6); ++x) {
+        const render::Point d(x + 0.5 - bob.x(), y + 0.5 - bob.y());
+        if (std::abs(d.norm() - radius) > 4) continue;
+        if (d.normalized().dot(down) > 0.8 || d.normalized().dot(to_pivot) > 0.8) continue;
+        const unsigned char* p = canvas.data() + y * canvas.stride() + 4 * x;
+        n += std::abs(p[2] - c.r * 255) < 40 && std::abs(p[1] - c.g * 255) < 40 && std::abs(p[0] - c.b * 255) < 40;
+      }
+    return n;
+  };
+  for (size_t member = 1; member < 3; ++member) {
+    INFO("member " << member);
+    CHECK(on_rim(scenes::member_color(config.colors.bob, member)) > 15);
+  }
+}

@@ -5,11 +5,49 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "render/labels/drawing_record.hpp"
+
 namespace vibra::scenes {
 
 namespace {
 /// Ghosts are this opaque: the first member shows through them.
 constexpr double kGhostAlpha = 0.5;
+/// 720p pixels of a dash in a ghost's outline.
+constexpr double kGhostDash = 7;
+
+/// The filled bodies a drawing recorded (a bob, a box, a wheel's rim), as
+/// polygons in pixels; small ones (a wheel's hub) are left out.
+std::vector<std::vector<render::Point>> body_polygons(const render::Outline& outline, double smallest) {
+  std::vector<std::vector<render::Point>> out;
+  for (const render::OutlineShape& shape : outline.shapes())
+    if (shape.kind == render::OutlineKind::body && shape.bounds.w >= smallest && shape.bounds.h >= smallest)
+      for (const auto& polygon : shape.polygons) out.push_back(polygon);
+  return out;
+}
+
+/// Ghost k of n's bodies outlined in its colour over everything, dashed so
+/// that the ghosts' dashes take turns along a shared edge: runs that
+/// coincide (Crank-Nicolson and RK4 at a coarse step) all show, and a ghost
+/// on the first run shows over it.
+void outline_ghost(render::Canvas& canvas, const std::vector<std::vector<render::Point>>& bodies, size_t k, size_t n,
+                   const render::Color& color) {
+  if (bodies.empty()) return;
+  const double scale = canvas.scale(), dash = kGhostDash * scale;
+  cairo_t* cr = canvas.cr();
+  cairo_save(cr);
+  cairo_new_path(cr);
+  for (const auto& polygon : bodies) {
+    cairo_move_to(cr, polygon.front().x(), polygon.front().y());
+    for (size_t i = 1; i < polygon.size(); ++i) cairo_line_to(cr, polygon[i].x(), polygon[i].y());
+    cairo_close_path(cr);
+  }
+  const double pattern[] = {dash, std::max<double>(1, n - 1) * dash};
+  cairo_set_dash(cr, pattern, 2, -double(k) * dash);
+  cairo_set_line_width(cr, 2.4 * scale);
+  cairo_set_source_rgba(cr, color.r, color.g, color.b, color.a);
+  cairo_stroke(cr);
+  cairo_restore(cr);
+}
 }  // namespace
 
 ComparisonDiagram::ComparisonDiagram(std::vector<Member> members, bool shared_exact, std::string exact_label)
@@ -56,15 +94,27 @@ void ComparisonDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
     const auto member = m.columns.slice(row, slice_);
     if (std::isfinite(member[1])) m.diagram->draw(canvas, view, member);
   };
+  std::vector<std::vector<std::vector<render::Point>>> ghost_bodies(members_.size());
   if (members_.size() > 1) {
     // All ghosts in one group, made faint together (one layer per frame),
-    // under the first run, which stays clear with its forces.
+    // under the first run, which stays clear with its forces. Each ghost is
+    // recorded on its own to find its bodies, then into the frame's record.
+    render::DrawingRecord* frame = canvas.record();
     cairo_push_group(canvas.cr());
-    for (size_t i = 1; i < members_.size(); ++i) draw_member(members_[i]);
+    for (size_t i = 1; i < members_.size(); ++i) {
+      render::DrawingRecord ghost;
+      canvas.record_into(&ghost);
+      draw_member(members_[i]);
+      canvas.record_into(frame);
+      ghost_bodies[i] = body_polygons(ghost.outline, 8 * canvas.scale());
+      if (frame) frame->outline.append(ghost.outline);
+    }
     cairo_pop_group_to_source(canvas.cr());
     cairo_paint_with_alpha(canvas.cr(), kGhostAlpha);
   }
   draw_member(members_.front());
+  for (size_t i = 1; i < members_.size(); ++i)
+    outline_ghost(canvas, ghost_bodies[i], i - 1, members_.size() - 1, members_[i].entry.color);
 }
 
 std::vector<PanelSpec> ComparisonDiagram::panels() const {
