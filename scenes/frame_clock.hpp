@@ -38,6 +38,21 @@ class FrameClock {
   double interval() const { return interval_; }
   /// Whether frame k shows the same time as frame k - 1 (a pause): the same picture.
   bool repeats(long long k) const { return map_ && k > 0 && time(k) == time(k - 1); }
+  /// The first frame that shows time t or later; frames() when none does.
+  long long first_frame_from(double t) const {
+    long long lo = 0, hi = frames_;  // time(hi) >= t holds for the answer, and time(lo - 1) < t
+    while (lo < hi) {
+      const long long mid = lo + (hi - lo) / 2;
+      if (time(mid) >= t) hi = mid;
+      else lo = mid + 1;
+    }
+    return lo;
+  }
+  /// The frame whose picture frame k shows: the first of a pause's repeats.
+  long long drawn_frame(long long k) const {
+    while (k > 0 && k < frames_ && repeats(k)) --k;
+    return k;
+  }
   /// The pacing's time map; nullopt for a steady clock.
   const std::optional<TimeMap>& time_map() const { return map_; }
 

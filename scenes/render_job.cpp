@@ -3,6 +3,7 @@
 #include <cairo.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -243,6 +244,26 @@ void write_still(const RenderRequest& r, const render::OutputTarget& target, Sce
   if (!r.quiet) std::fprintf(stderr, "vibra: wrote %s (t = %g)\n", one_line_message(target.shown(), 4096).c_str(), row[0]);
 }
 
+/// Labels keep their spots from frame to frame within chains of this many
+/// frames (half a second at 30 fps): a still or a segment replays at most
+/// this many frames before its own to draw what the whole render draws.
+constexpr long long kLabelChainFrames = 15;
+
+/// Draws, on a canvas thrown away, the frames of drawn frame `d`'s label chain
+/// before it, so that its labels keep the spots a whole render gives them.
+/// The scratch canvas tracks damage when the frames after it go to one that
+/// does, so that the layers made on it are made alike.
+void replay_label_chain(Scene& scene, const FrameClock& clock, long long d, int width, int height, bool track_damage,
+                        const std::function<std::span<const double>(double)>& row_at) {
+  scene.set_label_chain(d / kLabelChainFrames);
+  const long long start = d - d % kLabelChainFrames;
+  if (start == d) return;
+  render::Canvas scratch = render::Canvas::image(width, height);
+  if (track_damage) scratch.track_damage();
+  for (long long j = start; j < d; ++j)
+    if (!clock.repeats(j)) scene.draw(scratch, row_at(clock.time(j)));
+}
+
 double steady_speed(const SceneConfig& scene, const TimeMesh& mesh) {
   return scene.speed > 0 ? scene.speed : (mesh.period > 0 ? mesh.period / 2 : 1);
 }
@@ -416,7 +437,13 @@ void run_render(const RenderRequest& r) {
   std::unique_ptr<Trajectory> trajectory = build_scene_runs(r.scene);
   HistoryFeed history(*trajectory, *scene, scene->sample_interval());
   auto row_at = [&](double t) { return history.row_at(t); };
-  if (still) return write_still(r, target, *scene, row_at(*r.at));
+  if (still) {
+    // The frame that shows the still's time (or would), and its chain's frames before it.
+    const long long k = clock.first_frame_from(*r.at);
+    const long long d = k < clock.frames() && clock.time(k) == *r.at ? clock.drawn_frame(k) : k;
+    replay_label_chain(*scene, clock, d, r.scene.width, r.scene.height, false, row_at);
+    return write_still(r, target, *scene, row_at(*r.at));
+  }
 
   std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name}, {"comment", render::markup_plain_text(caption)}};
   if (r.segment) metadata["description"] = segment.tag();  // what vibra concat checks
@@ -435,10 +462,12 @@ void run_render(const RenderRequest& r) {
   // A segment's earlier frames are not drawn, but the solver passes through
   // them (moving plots see every step) and the scene keeps up with them, so
   // its frames are the whole render's, byte for byte.
-  for (long long k = 0; k < segment.first(); ++k) {
+  const long long first_drawn = clock.drawn_frame(segment.first());
+  for (long long k = 0; k < first_drawn - first_drawn % kLabelChainFrames; ++k) {
     if ((k & 0xff) == 0) render::throw_if_stop_requested();
     scene->skip(canvas, row_at(clock.time(k)));
   }
+  replay_label_chain(*scene, clock, first_drawn, r.scene.width, r.scene.height, true, row_at);
   render::Progress progress(r.progress_label, segment.frames(), r.quiet);
   const render::Damage unchanged(r.scene.width, r.scene.height);
   for (long long k = segment.first(); k < segment.end(); ++k) {
@@ -449,6 +478,7 @@ void run_render(const RenderRequest& r) {
       continue;
     }
     canvas.begin_frame();
+    scene->set_label_chain((k == segment.first() ? first_drawn : k) / kLabelChainFrames);
     scene->draw(canvas, row_at(clock.time(k)));
     canvas.flush();
     const render::Damage changed = canvas.changed();

@@ -32,6 +32,11 @@ class Scene {
   /// What the last drawn frame's diagram part covers and where its labels
   /// went (for checks of the layout); null for a scene without a diagram.
   virtual const render::DrawingRecord* last_layout() const { return nullptr; }
+  /// Labels keep their spots from one drawn frame to the next within a chain
+  /// of frames (render::LabelMemory); a frame of another chain forgets them.
+  /// The render job numbers the chains, so that a still or a segment replays
+  /// the frames of its chain before it and draws what the whole render draws.
+  virtual void set_label_chain(long long chain) { (void)chain; }
 };
 
 }  // namespace vibra::scenes

@@ -180,7 +180,8 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   // Notes are placed after every other label, near the middle of the view.
   if (notes_)
     for (auto& request : notes_->body_requests(row[0], view_area_.center())) last_frame_.labels.push_back(std::move(request));
-  last_frame_.placed = render::place_labels(canvas, last_frame_.labels, last_frame_.outline, label_area(canvas.scale()));
+  last_frame_.placed =
+      render::place_labels(canvas, last_frame_.labels, last_frame_.outline, label_area(canvas.scale()), &label_memory_);
   render::draw_placed_labels(canvas, last_frame_.placed);
   if (notes_)
     notes_->draw_panel_notes(canvas, row[0], [this](size_t i) { return i < panels_.size() ? panels_[i]->time_plot() : nullptr; });

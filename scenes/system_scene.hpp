@@ -6,6 +6,7 @@
 #include "core/trajectory.hpp"
 #include "render/draw/caption.hpp"
 #include "render/labels/drawing_record.hpp"
+#include "render/labels/label_placer.hpp"
 #include "scenes/diagrams/diagram.hpp"
 #include "scenes/frame_heading.hpp"
 #include "scenes/note_callouts.hpp"
@@ -40,6 +41,9 @@ class SystemScene final : public Scene {
   void draw(render::Canvas&, std::span<const double> row) override;
   void skip(const render::Canvas&, std::span<const double> row) override;
   const render::DrawingRecord* last_layout() const override { return &last_frame_; }
+  void set_label_chain(long long chain) override {
+    if (chain != label_chain_) label_memory_.clear(), label_chain_ = chain;
+  }
 
   /// The diagram's world box over the run (after record()).
   const WorldBox& world_box() const { return world_; }
@@ -86,6 +90,8 @@ class SystemScene final : public Scene {
   render::Outline static_outline_;
   /// The last frame's diagram part: its outline and labels.
   render::DrawingRecord last_frame_;
+  render::LabelMemory label_memory_;  ///< where the labels of the last frame drawn went
+  long long label_chain_ = -1;
 };
 
 }  // namespace vibra::scenes

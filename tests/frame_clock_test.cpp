@@ -33,3 +33,22 @@ TEST_CASE("a frame count that overflows or exceeds the bound is refused, not wra
   CHECK_THROWS_AS(FrameClock::per_step(1e-9, 2'000'000'000LL), UsageError);
   CHECK(FrameClock::by_speed(1e6, 30, 1).frames() == 30'000'001);  // a big but sane count passes
 }
+
+TEST_CASE("the frame showing a time, and the frame a pause's repeats show", "[frames]") {
+  auto c = FrameClock::by_speed(1, 10, 1);  // t_k = k / 10
+  CHECK(c.first_frame_from(0) == 0);
+  CHECK(c.first_frame_from(0.3) == 3);   // a frame's own time
+  CHECK(c.first_frame_from(0.31) == 4);  // between frames: the next
+  CHECK(c.first_frame_from(1.5) == 11);  // after the last frame: none
+  CHECK(c.drawn_frame(7) == 7);          // no pauses: every frame is drawn
+  vibra::scenes::Pacing pacing;
+  pacing.add_pause("0.5:0.3");  // frames 5..8 all show t = 0.5
+  auto paused = FrameClock::paced(1, 10, 1, pacing);
+  REQUIRE(paused.time(5) == Approx(0.5));
+  REQUIRE(paused.repeats(8));
+  REQUIRE_FALSE(paused.repeats(9));
+  CHECK(paused.first_frame_from(paused.time(5)) == 5);
+  CHECK(paused.drawn_frame(8) == 5);
+  CHECK(paused.drawn_frame(5) == 5);
+  CHECK(paused.drawn_frame(9) == 9);
+}

@@ -16,6 +16,10 @@ constexpr double kTurnCost = 9;      ///< 720p pixels a turn of 22.5 degrees cos
 constexpr double kStep = 2;          ///< 720p pixels between the distances tried along a direction
 constexpr double kFarthest = 180;    ///< 720p pixels a label may be pushed beyond its gap
 constexpr double kLeaderAfter = 10;  ///< 720p pixels pushed out (or a turn) beyond which a leader line is drawn
+/// How much more (in the cost's 720p pixels) a label's spot of the frame
+/// before may cost than the best free one and still be kept: a turn and a
+/// half, or ten steps out.
+constexpr double kKeep = 20;
 
 struct Candidate {
   int turn;   ///< signed, in steps of 22.5 degrees
@@ -126,12 +130,15 @@ void draw_pointer(Canvas& canvas, const PlacedLabel& label) {
 }  // namespace
 
 std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelRequest>& requests, Outline& outline,
-                                      const PixelRect& bounds) {
+                                      const PixelRect& bounds, LabelMemory* memory) {
   const double scale = canvas.scale();
   OccupancyGrid grid(bounds, 2 * scale, 1.5 * scale);
   for (const OutlineShape& shape : outline.shapes()) grid.add(shape);
   std::vector<PlacedLabel> placed;
+  LabelMemory spots;
+  std::map<std::string, int> seen;  // occurrences of each text so far
   for (const LabelRequest& request : requests) {
+    const std::string key = request.markup + "#" + std::to_string(seen[request.markup]++);
     const Point size = label_size(canvas, request);
     const double n = request.direction.norm();
     const Point preferred = n > 1e-12 ? Point(request.direction / n) : Point(1, 0);
@@ -154,8 +161,19 @@ std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelReq
       }
       if (least < 0 || taken < least) least = taken, least_covered = &c;
     }
-    const Candidate& c = chosen ? *chosen : least_covered ? *least_covered : candidates().front();
-    PlacedLabel label{request, box_for(c), chosen != nullptr, false};
+    Candidate c = chosen ? *chosen : least_covered ? *least_covered : candidates().front();
+    if (memory && chosen) {
+      // The spot of the frame before, if still free and not much worse.
+      const auto kept = memory->find(key);
+      if (kept != memory->end() && !(kept->second == LabelSpot{c.turn, c.steps})) {
+        const LabelSpot& s = kept->second;
+        const Candidate before{s.turn, s.steps, s.steps * kStep + std::abs(s.turn) * kTurnCost};
+        const PixelRect box = box_for(before);
+        if (before.cost <= c.cost + kKeep && within(box, bounds) && grid.taken(box) == 0) c = before;
+      }
+    }
+    spots[key] = {c.turn, c.steps};
+    PlacedLabel label{request, box_for(c), chosen != nullptr, false, {c.turn, c.steps}};
     label.leader = request.leader == LabelRequest::Leader::arrow ||
                    (request.leader == LabelRequest::Leader::when_moved &&
                     (c.steps * kStep > kLeaderAfter || std::abs(c.turn) * kTurnCost > kLeaderAfter));
@@ -163,6 +181,7 @@ std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelReq
     outline.add_box(label.box, OutlineKind::label, request.markup);
     placed.push_back(std::move(label));
   }
+  if (memory) *memory = std::move(spots);
   return placed;
 }
 

@@ -1,4 +1,6 @@
 #pragma once
+#include <map>
+#include <string>
 #include <vector>
 
 #include "render/labels/label_request.hpp"
@@ -6,23 +8,41 @@
 
 namespace vibra::render {
 
+/// Where a label sits relative to its anchor: turned from its preferred
+/// direction by `turn` steps of 22.5 degrees, pushed out by `steps` steps.
+struct LabelSpot {
+  int turn = 0, steps = 0;
+  bool operator==(const LabelSpot&) const = default;
+};
+
+/// The spots labels took in the frame before, by their text (and, for a
+/// text that occurs twice, its occurrence): a label keeps its spot while that
+/// is free and not much worse than the best one, so it does not flicker
+/// between two spots as what surrounds it moves a pixel. The render job
+/// starts it afresh every few frames, so a still replays at most those.
+using LabelMemory = std::map<std::string, LabelSpot>;
+
 /// Where a label went.
 struct PlacedLabel {
   LabelRequest request;
   PixelRect box;       ///< the text with its halo, in pixels
   bool free = true;    ///< it overlaps nothing (false: no free spot in reach, the least covered one)
   bool leader = false; ///< away from its anchor: a thin line leads back
+  LabelSpot spot;
 };
 
 /// Places labels one after another, each where its box (text and halo)
 /// overlaps nothing in `outline` and no label placed before it, inside
 /// `bounds`: its preferred spot if free, else the free spot around the
 /// anchor that costs least (distance pushed out plus turn away from the
-/// preferred direction). A pure function of the picture, so that a frame is
-/// the still at its time; a label moves between frames only as its anchor
-/// and what surrounds it do. The placed boxes join `outline` as labels.
+/// preferred direction). With `memory`, a label keeps the spot it had in the
+/// frame before while that spot is free and costs at most a little more than
+/// the best, and `memory` then holds this frame's spots. A pure function of
+/// the picture and the memory, so that a frame is the still at its time when
+/// the still replays the frames since the memory began. The placed boxes
+/// join `outline` as labels.
 std::vector<PlacedLabel> place_labels(Canvas&, const std::vector<LabelRequest>&, Outline& outline,
-                                      const PixelRect& bounds);
+                                      const PixelRect& bounds, LabelMemory* memory = nullptr);
 
 /// Draws placed labels with their halos, and leader lines where they moved away.
 void draw_placed_labels(Canvas&, const std::vector<PlacedLabel>&);

@@ -1,0 +1,106 @@
+// Labels that hold still: a label keeps its spot from one frame to the next
+// while that spot is free (render::LabelMemory), instead of flickering between
+// two spots as what surrounds it moves a pixel.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "render/draw/canvas.hpp"
+#include "render/draw/text.hpp"
+#include "render/labels/drawing_record.hpp"
+#include "render/labels/label_placer.hpp"
+#include "scene_run_support.hpp"
+#include "scenes/scene_config.hpp"
+#include "scenes/scene_factory.hpp"
+
+using vibra::render::Canvas;
+using vibra::render::DrawingRecord;
+using vibra::render::LabelMemory;
+using vibra::render::LabelRequest;
+using vibra::render::Outline;
+using vibra::render::OutlineKind;
+using vibra::render::PixelRect;
+using vibra::render::PlacedLabel;
+using vibra::render::Point;
+
+namespace {
+/// Places one label at (200, 200) preferring the right, with or without a
+/// block covering that preferred spot.
+PlacedLabel place(Canvas& canvas, bool blocked, LabelMemory* memory) {
+  Outline outline;
+  if (blocked) outline.add_box({207, 185, 8, 30}, OutlineKind::body);  // a thin bar just right of the anchor
+  LabelRequest request{"<i>F</i>", {24, vibra::render::palette::ink}, Point(200, 200), Point(1, 0), 5};
+  return vibra::render::place_labels(canvas, {request}, outline, {0, 0, 640, 360}, memory).front();
+}
+
+/// How often a label goes to another spot and comes back within two frames,
+/// over the first `frames` solver steps of a scene (one step a frame), its
+/// spots kept within chains of `chain` frames (1: kept never).
+int flickers(const std::string& scene_name, long long chain, long long frames) {
+  vibra::scenes::SceneConfig config = vibra::scenes::load_scene(scene_name);
+  long long steps = 0;
+  auto scene = vibra::test::scene_after_pre_pass(config, steps);
+  auto runs = vibra::scenes::build_scene_runs(config);
+  Canvas canvas = Canvas::image(config.width, config.height);
+  std::vector<double> row(runs->width());
+  std::map<std::string, std::vector<PixelRect>> boxes;  // each label's last three boxes
+  int count = 0;
+  for (long long frame = 0; frame < std::min(steps, frames); ++frame) {
+    runs->row(row);
+    scene->observe(row);
+    scene->set_label_chain(frame / chain);
+    scene->draw(canvas, row);
+    for (const PlacedLabel& p : scene->last_layout()->placed) {
+      auto& seen = boxes[p.request.markup];
+      seen.push_back(p.box);
+      if (seen.size() > 3) seen.erase(seen.begin());
+      if (seen.size() < 3) continue;
+      auto centre = [](const PixelRect& b) { return Point(b.x + b.w / 2, b.y + b.h / 2); };
+      const double away = (centre(seen[1]) - centre(seen[0])).norm(), back = (centre(seen[2]) - centre(seen[0])).norm();
+      if (away > 12 && back < 0.25 * away) ++count;
+    }
+    if (!runs->advance()) break;
+  }
+  return count;
+}
+}  // namespace
+
+TEST_CASE("a label keeps its spot while it is free, and leaves it only when it is taken or far worse", "[labels]") {
+  Canvas canvas = Canvas::image(640, 360);
+  const PlacedLabel open = place(canvas, false, nullptr);
+  const PlacedLabel pushed = place(canvas, true, nullptr);
+  REQUIRE(pushed.box.x != open.box.x);  // the block moves it
+  INFO("pushed to spot " << pushed.spot.turn << ", " << pushed.spot.steps);
+  // Without memory it jumps back as soon as the block goes; with memory it stays.
+  LabelMemory memory;
+  const PlacedLabel first = place(canvas, true, &memory);
+  CHECK(first.box.x == pushed.box.x);
+  CHECK(memory.at("<i>F</i>#0") == first.spot);
+  const PlacedLabel kept = place(canvas, false, &memory);
+  CHECK(kept.box.x == first.box.x);
+  CHECK(kept.box.y == first.box.y);
+  CHECK(kept.free);
+  // A spot of the frame before that is far worse than the best is not kept.
+  memory["<i>F</i>#0"] = {8, 0};  // right behind the anchor
+  CHECK(place(canvas, false, &memory).box.x == open.box.x);
+  // Nor is one that is taken now.
+  LabelMemory taken{{"<i>F</i>#0", open.spot}};
+  CHECK(place(canvas, true, &taken).box.x == pushed.box.x);
+}
+
+TEST_CASE("labels flicker far less with their spots kept, as a render keeps them", "[heavy][labels]") {
+  // On a render without kept spots, each of these scenes has labels that go to
+  // another spot and come straight back; keeping spots removes most of it.
+  int kept = 0, unkept = 0;
+  for (const char* scene : {"pendulum", "spring_dashpot", "washing_machine", "elastic_pendulum"}) {
+    const int with = flickers(scene, 15, 400), without = flickers(scene, 1, 400);
+    INFO(scene << ": " << with << " flickers with spots kept, " << without << " without");
+    CHECK(with <= without);
+    kept += with, unkept += without;
+  }
+  INFO(kept << " flickers with spots kept, " << unkept << " without");
+  CHECK(unkept >= 20);
+  CHECK(kept * 2 <= unkept);
+}
