@@ -22,6 +22,9 @@ class RunLegend {
   bool empty() const { return entries_.empty(); }
   /// The column's width in pixels.
   double width() const { return width_; }
+  /// The column's height in pixels at `scale` (known after the pre-pass:
+  /// a run that ends early has a row for its note).
+  double height(double scale) const { return row_top(entries_.size(), scale); }
   /// Leaves the formulas out (a frame too small for them beside the
   /// drawing: the legend would cover it); the names stay.
   void drop_formulas();

@@ -113,6 +113,7 @@ void SystemScene::prepare() {
     view_area_.h -= caption_->height() - caption_->line_height;
   }
   diagram_->finish_recording(world_);
+  place_legend();
   view_.emplace(world_, view_area_);
   for (auto& panel : panels_) panel->finish_recording();
 }
@@ -130,7 +131,10 @@ void SystemScene::draw_static(render::Canvas& canvas) {
   canvas.record_into(&record);
   heading_.draw(canvas, style_.colors.wire);
   diagram_->draw_static(canvas, *view_);
-  if (!legend_.empty()) legend_.draw_static(canvas, legend_corner(canvas.scale()));
+  if (!legend_.empty()) {
+    render::OutlineKindScope kind(canvas, render::OutlineKind::legend);
+    legend_.draw_static(canvas, legend_corner(canvas.scale()));
+  }
   const double scale = canvas.scale();
   double bottom = diagram_area_.y + diagram_area_.h - 12 * scale;
   if (caption_) {
@@ -173,7 +177,10 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   } else {
     diagram_->draw(canvas, view, row);
   }
-  if (!legend_.empty()) legend_.draw(canvas, legend_corner(canvas.scale()), row[0]);
+  if (!legend_.empty()) {
+    render::OutlineKindScope kind(canvas, render::OutlineKind::legend);
+    legend_.draw(canvas, legend_corner(canvas.scale()), row[0]);
+  }
   if (bars_) bars_->draw(canvas, row);
   draw_readout(canvas, diagram_area_, row[0], style_);
   canvas.record_into(nullptr);
@@ -192,8 +199,28 @@ void SystemScene::skip(const render::Canvas& canvas, std::span<const double> row
   background_.skip(canvas, progress_to(row[0]));
 }
 
+void SystemScene::place_legend() {
+  if (legend_.empty() || world_.isEmpty()) return;
+  // The legend above the view instead of beside it: the view gets the
+  // legend's column back and gives up its rows. Taken when the diagram, fitted
+  // to its world box, comes out larger (by a twentieth at least). A
+  // comparison has no energy bars, so the column is the view's to take.
+  const double scale = render::scale_for_height(height_);
+  const double legend_bottom = legend_corner(scale).y() + legend_.height(scale) + 8 * scale;
+  render::PixelRect above = view_area_;
+  above.w = view_area_.w + legend_.width();
+  above.h = view_area_.y + view_area_.h - legend_bottom;
+  above.y = legend_bottom;
+  auto zoom = [&](const render::PixelRect& r) {
+    const Point size = world_.sizes();
+    return std::min(r.w / size.x(), r.h / size.y());
+  };
+  if (above.h > 0 && above.w > 0 && zoom(above) > 1.05 * zoom(view_area_)) view_area_ = above, legend_on_top_ = true;
+}
+
 render::PixelRect SystemScene::drawing_area() const {
-  const double w = std::max(diagram_area_.w - legend_.width(), view_area_.x + view_area_.w - diagram_area_.x);
+  const double w = legend_on_top_ ? diagram_area_.w
+                                  : std::max(diagram_area_.w - legend_.width(), view_area_.x + view_area_.w - diagram_area_.x);
   return {diagram_area_.x, diagram_area_.y, w, diagram_area_.h};
 }
 

@@ -75,8 +75,13 @@ class SystemScene final : public Scene {
   render::PixelRect label_area(double scale) const;
   /// The legend column's top right corner.
   render::Point legend_corner(double scale) const;
+  /// Beside the drawing, or above it when that draws the diagram larger (prepare()).
+  void place_legend();
 
   render::PixelRect diagram_area_, view_area_;
+  /// The comparison's legend sits above the drawing instead of in a column
+  /// beside it, when that draws the diagram larger (a wide drawing).
+  bool legend_on_top_ = false;
   RunLegend legend_;
   std::vector<std::unique_ptr<ScenePanel>> panels_;
   size_t time_labels_panel_ = 0;  ///< the lowest panel against time labels the time axis

@@ -265,3 +265,55 @@ TEST_CASE("ghosts on top of each other and of the first run all show, each in it
     CHECK(on_rim(scenes::member_color(config.colors.bob, member)) > 15);
   }
 }
+
+namespace {
+/// The scene of `settings` after its pre-pass, drawn at t = 0 at 1280x720.
+struct DrawnScene {
+  std::unique_ptr<scenes::Scene> scene;
+  double zoom;
+};
+DrawnScene drawn_at_start(const std::string& name, const std::vector<std::pair<std::string, std::string>>& settings) {
+  scenes::SceneConfig config = scenes::load_scene(name);
+  for (const auto& [k, v] : settings) scenes::apply_setting(config, {k, v, "test"});
+  auto pre_pass = scenes::build_scene_runs(config);
+  auto scene = scenes::make_scene_for(config, *pre_pass, "test");
+  std::vector<double> row(pre_pass->width());
+  do {
+    pre_pass->row(row);
+    scene->record(row);
+  } while (pre_pass->advance());
+  auto runs = scenes::build_scene_runs(config);
+  runs->row(row);
+  render::Canvas canvas = render::Canvas::image(config.width, config.height);
+  scene->draw(canvas, row);
+  const double zoom = dynamic_cast<scenes::SystemScene&>(*scene).view_at(row).zoom();
+  return {std::move(scene), zoom};
+}
+}  // namespace
+
+TEST_CASE("a comparison's diagram is drawn as large as one run's: the legend goes above a wide drawing",
+          "[comparison]") {
+  struct Case {
+    std::string scene, compare, alone;
+  };
+  for (const Case& c : {Case{"pendulum", "Theta=40,60", "Theta=60"}, Case{"spring", "scheme=rk4,crank-nicolson", ""}}) {
+    INFO(c.scene << " --compare " << c.compare);
+    std::vector<std::pair<std::string, std::string>> alone;
+    if (!c.alone.empty()) alone.push_back({c.alone.substr(0, c.alone.find('=')), c.alone.substr(c.alone.find('=') + 1)});
+    const DrawnScene one = drawn_at_start(c.scene, alone);
+    const DrawnScene both = drawn_at_start(c.scene, {{"compare", c.compare}});
+    CHECK(both.zoom >= 0.9 * one.zoom);
+    // The legend covers none of the drawing.
+    const auto& shapes = both.scene->last_layout()->outline.shapes();
+    for (const auto& legend : shapes) {
+      if (legend.kind != render::OutlineKind::legend) continue;
+      for (const auto& shape : shapes)
+        if (shape.kind == render::OutlineKind::body || shape.kind == render::OutlineKind::spring ||
+            shape.kind == render::OutlineKind::wire || shape.kind == render::OutlineKind::arrow ||
+            shape.kind == render::OutlineKind::ground) {
+          INFO("a legend shape at " << legend.bounds.x << ", " << legend.bounds.y << " and a " << outline_kind_name(shape.kind));
+          CHECK_FALSE(render::overlaps(legend.bounds, shape));
+        }
+    }
+  }
+}
