@@ -113,6 +113,12 @@ void SystemScene::prepare() {
     view_area_.h -= caption_->height() - caption_->line_height;
   }
   diagram_->finish_recording(world_);
+  // The force key's names take rows above its scale's line (known now: a
+  // pendulum without drag names no drag).
+  if (const std::optional<ForceKey> key = diagram_->force_key()) {
+    render::Canvas measure = render::Canvas::image(1, height_);
+    view_area_.h -= force_names_height(measure, *key, key_width(measure.scale()));
+  }
   place_legend();
   view_.emplace(world_, view_area_);
   for (auto& panel : panels_) panel->finish_recording();
@@ -142,7 +148,7 @@ void SystemScene::draw_static(render::Canvas& canvas) {
     bottom -= caption_->height() + 8 * scale;
   }
   if (const std::optional<ForceKey> key = diagram_->force_key())
-    draw_force_key(canvas, *key, view_->zoom(), {diagram_area_.x + 16 * scale, bottom},
+    draw_force_key(canvas, *key, view_->zoom(), {diagram_area_.x + 16 * scale, bottom}, key_width(scale),
                    style_.colors.wire.with_alpha(0.75));
   canvas.record_into(nullptr);
   static_outline_ = std::move(record.outline);
@@ -228,6 +234,11 @@ render::PixelRect SystemScene::label_area(double scale) const {
   render::PixelRect area = drawing_area();
   if (bars_) area.w = bars_->area().x - 8 * scale - area.x;
   return area;
+}
+
+double SystemScene::key_width(double scale) const {
+  const double right = bars_ ? bars_->area().x - 8 * scale : diagram_area_.x + diagram_area_.w;
+  return right - diagram_area_.x - 32 * scale;
 }
 
 render::Point SystemScene::legend_corner(double scale) const {

@@ -75,6 +75,8 @@ class SystemScene final : public Scene {
   render::PixelRect label_area(double scale) const;
   /// The legend column's top right corner.
   render::Point legend_corner(double scale) const;
+  /// How wide the force key may be: the diagram's part, short of the energy bars.
+  double key_width(double scale) const;
   /// Beside the drawing, or above it when that draws the diagram larger (prepare()).
   void place_legend();
 

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -142,6 +143,39 @@ TEST_CASE("a diagram with force arrows shows its force key, saying what is drawn
   REQUIRE(box.size() == 1);
   CHECK(box[0].find("not to scale") != std::string::npos);
   CHECK(key_texts("rlc", {}).empty());  // a circuit has no force arrows
+}
+
+TEST_CASE("the force key names each force drawn, in its arrow's colour, clear of the drawing", "[legibility][forces]") {
+  auto names_in = [](const std::string& scene, const std::vector<vibra::scenes::Setting>& settings) {
+    std::vector<std::string> names;
+    const DrawingRecord frame = frame_at(scene, settings, 0.3);
+    for (const OutlineShape& s : frame.outline.shapes()) {
+      if (s.kind != OutlineKind::text) continue;
+      for (const char* force : {"gravity", "wire force", "air drag", "spring", "damping", "damper", "friction",
+                                "driving force", "forcing", "weight, floor", "wire (spring) force"})
+        if (s.name.size() > std::strlen(force) && s.name.compare(s.name.size() - std::strlen(force), std::string::npos, force) == 0) {
+          names.push_back(s.name);
+          // A name covers nothing the diagram draws.
+          for (const OutlineShape& other : frame.outline.shapes())
+            if (other.kind == OutlineKind::body || other.kind == OutlineKind::spring || other.kind == OutlineKind::arrow ||
+                other.kind == OutlineKind::wire || other.kind == OutlineKind::ground) {
+              INFO(scene << ": '" << s.name << "' and a " << vibra::render::outline_kind_name(other.kind));
+              CHECK_FALSE(vibra::render::overlaps(s.bounds, other));
+            }
+        }
+    }
+    return names;
+  };
+  using Names = std::vector<std::string>;
+  CHECK(names_in("pendulum", {}) == Names{"<i>mg</i> gravity", "<i>S</i> wire force", "<i>D</i> air drag"});
+  CHECK(names_in("pendulum", {{"alpha", "0", "test"}}) == Names{"<i>mg</i> gravity", "<i>S</i> wire force"});
+  CHECK(names_in("spring", {}) == Names{"−<i>ku</i> spring"});
+  CHECK(names_in("spring_dashpot", {}) ==
+        Names{"−<i>ku</i> spring", "−<i>bu</i>′ damping", "<i>F</i>(<i>t</i>) driving force"});
+  CHECK(names_in("sliding_box", {}).size() == 3);
+  CHECK(names_in("washing_machine", {}).size() == 3);
+  CHECK(names_in("bumpy_road", {}) == Names{"−<i>ku</i> spring", "−<i>bu</i>′ damper"});
+  CHECK(names_in("elastic_pendulum", {}).size() == 3);
 }
 
 TEST_CASE("a panel's legend sits on its title row, off the data, where the row has room", "[legibility][panels]") {

@@ -387,13 +387,14 @@ TEST_CASE("layout fbd centres every diagram: the pendulums' pivots on the centre
       continue;
     }
     // Any other drawing's extent over the run (below the read-out, above the
-    // caption) is centred: its left and right margins differ by under 3% of w.
+    // force key and the caption) is centred: its left and right margins
+    // differ by under 3% of w.
     int left = w, right = -1;
     const size_t every = std::max<size_t>(1, rows.size() / 40);
     for (size_t i = 0; i < rows.size(); i += every) {
       scene->draw(canvas, rows[i]);
       canvas.flush();
-      for (int y = 60; y < h - 60; y += 2)
+      for (int y = 60; y < h - 110; y += 2)
         for (int x = 0; x < w; ++x)
           if (!blank(canvas, x, y, config.colors.background)) left = std::min(left, x), right = std::max(right, x);
     }
@@ -401,4 +402,21 @@ TEST_CASE("layout fbd centres every diagram: the pendulums' pivots on the centre
     REQUIRE(right > left);
     CHECK(std::abs(left - (w - 1 - right)) < 0.03 * w);
   }
+}
+
+TEST_CASE("the force key's names are in the colours the arrows are drawn in", "[scene][diagram]") {
+  using Colours = std::vector<vibra::render::Color>;
+  auto check = [](const std::string& scene, auto pick) {
+    const Recorded r = record(scene);
+    Colours names;
+    const auto key = r.diagram->force_key();  // kept: its names are read below
+    REQUIRE(key);
+    for (const auto& n : key->names) names.push_back(n.color);
+    CHECK(names == pick(r.config.colors));
+  };
+  using C = const vibra::scenes::SceneColors&;
+  check("pendulum", [](C c) { return Colours{c.gravity, c.wire_force, c.drag}; });
+  check("spring_dashpot", [](C c) { return Colours{c.gravity, c.drag, c.wire_force}; });
+  check("sliding_box", [](C c) { return Colours{c.gravity, c.drag, c.wire_force}; });
+  check("bumpy_road", [](C c) { return Colours{c.gravity, c.drag}; });
 }

@@ -105,7 +105,9 @@ void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& vie
 std::optional<ForceKey> BumpyRoadDiagram::force_key() const {
   char note[64] = "";
   if (factor_ != 1) std::snprintf(note, sizeof note, "heights drawn ×%g", factor_);
-  return ForceKey{scale_.per_force(), "N", note};
+  std::vector<ForceName> names = {{colors_.gravity, "−<i>ku</i> spring"}};
+  if (vehicle_.b > 0) names.push_back({colors_.drag, "−<i>bu</i>′ damper"});
+  return ForceKey{scale_.per_force(), "N", note, names};
 }
 
 DiagramKind bumpy_road_diagram_kind() {

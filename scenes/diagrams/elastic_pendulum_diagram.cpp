@@ -80,7 +80,11 @@ void ElasticPendulumDiagram::draw(render::Canvas& canvas, const render::WorldVie
   for (const auto& f : forces) render::draw_force_arrow(canvas, view, f, colors_.background);
 }
 
-std::optional<ForceKey> ElasticPendulumDiagram::force_key() const { return ForceKey{scale_.per_force(), "<i>mg</i>", ""};}
+std::optional<ForceKey> ElasticPendulumDiagram::force_key() const {
+  return ForceKey{scale_.per_force(), "<i>mg</i>", "",
+                  {{colors_.gravity, "<i>mg</i> gravity"}, {colors_.wire_force, "<i>S</i> wire (spring) force"},
+                   {colors_.drag, "<i>D</i> air drag"}}};
+}
 
 DiagramKind elastic_pendulum_diagram_kind() {
   return {"elastic_pendulum",

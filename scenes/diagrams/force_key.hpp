@@ -1,17 +1,26 @@
 #pragma once
 #include <string>
+#include <vector>
 
 #include "render/draw/canvas.hpp"
 #include "render/draw/color.hpp"
 
 namespace vibra::scenes {
 
-/// What an arrow's length means in a free-body diagram: one scale for every
-/// arrow (except those named in `note`), shown once per diagram as a key.
+/// One force's colour and what it is, for the key's names: "<i>mg</i> gravity".
+struct ForceName {
+  render::Color color;
+  std::string name;  ///< markup: the arrow's label, then the force's name
+};
+
+/// What an arrow means in a free-body diagram: which force each colour is,
+/// and one scale for every arrow's length (except those named in `note`),
+/// shown once per diagram as a key.
 struct ForceKey {
   double world_per_force = 0;  ///< world units of arrow per unit of force
   std::string unit;            ///< markup: "N", "<i>mg</i>"; "" for scaled forces
   std::string note;            ///< arrows drawn at another scale, e.g. "<i>D</i> drawn ×5"
+  std::vector<ForceName> names = {};  ///< the forces drawn, in their arrows' colours
 };
 
 /// The force the key's arrow stands for: a round number (1, 2 or 5 times a
@@ -19,9 +28,14 @@ struct ForceKey {
 /// at `pixels_per_world`. 0 when the scale is not positive and finite.
 double force_key_value(const ForceKey&, double pixels_per_world, double scale);
 
-/// Draws the key (an arrow, "= 2 N" and the note) with its bottom-left
-/// corner at `bottom_left` (pixels); returns its height (0 when nothing is drawn).
+/// The height of the key's names (rows of coloured arrows and names, as
+/// many as `width` pixels need), at the canvas's scale; 0 without names.
+double force_names_height(render::Canvas&, const ForceKey&, double width);
+
+/// Draws the key with its bottom-left corner at `bottom_left` (pixels): the
+/// names in rows within `width`, then a line with the scale's arrow, "= 2 N"
+/// and the note. Returns its height (0 when nothing is drawn).
 double draw_force_key(render::Canvas&, const ForceKey&, double pixels_per_world, const render::Point& bottom_left,
-                      const render::Color& ink);
+                      double width, const render::Color& ink);
 
 }  // namespace vibra::scenes

@@ -123,7 +123,12 @@ void OscillatorDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
     render::draw_force_arrow(canvas, view, {arrows[i].from, arrows[i].to, colors[i], labels[i]}, colors_.background);
 }
 
-std::optional<ForceKey> OscillatorDiagram::force_key() const { return ForceKey{scale_.per_force(), "", ""};}
+std::optional<ForceKey> OscillatorDiagram::force_key() const {
+  std::vector<ForceName> names = {{colors_.gravity, std::string(kSpringLabel[law_.s ? 1 : 0]) + " spring"}};
+  if (has_damper()) names.push_back({colors_.drag, damper_label(law_.damping) + " damping"});
+  if (law_.F) names.push_back({colors_.wire_force, "<i>F</i>(<i>t</i>) driving force"});
+  return ForceKey{scale_.per_force(), "", "", names};
+}
 
 DiagramKind oscillator_diagram_kind() {
   return {"oscillator",

@@ -136,7 +136,9 @@ std::optional<ForceKey> PendulumDiagram::force_key() const {
   std::string note;
   if (has_drag_ && options_.drag_magnification != 1)
     note = magnification_label(options_.drag_magnification).insert(8, " drawn");
-  return ForceKey{options_.force_unit, "<i>mg</i>", note};
+  std::vector<ForceName> names = {{colors_.gravity, "<i>mg</i> gravity"}, {colors_.wire_force, "<i>S</i> wire force"}};
+  if (has_drag_) names.push_back({colors_.drag, "<i>D</i> air drag"});
+  return ForceKey{options_.force_unit, "<i>mg</i>", note, names};
 }
 
 DiagramKind pendulum_diagram_kind() {

@@ -108,7 +108,9 @@ std::optional<ForceKey> SlidingBoxDiagram::force_key() const {
     std::snprintf(magnified, sizeof magnified, "<i>f</i> drawn \u00d7%g, ", friction_magnification_);
     note = magnified + note;
   }
-  return ForceKey{scale_.per_force(), "", note};
+  return ForceKey{scale_.per_force(), "", note,
+                  {{colors_.gravity, "−<i>s</i>(<i>u</i>) spring"}, {colors_.drag, "<i>f</i> friction"},
+                   {colors_.wire_force, "<i>mg</i>, <i>N</i> weight, floor"}}};
 }
 
 DiagramKind sliding_box_diagram_kind() {

@@ -92,7 +92,12 @@ void WashingMachineDiagram::draw(render::Canvas& canvas, const render::WorldView
     render::draw_force_arrow(canvas, view, {arrows[i].from, arrows[i].to, colors[i], labels[i]}, colors_.background);
 }
 
-std::optional<ForceKey> WashingMachineDiagram::force_key() const { return ForceKey{scale_.per_force(), "", ""};}
+std::optional<ForceKey> WashingMachineDiagram::force_key() const {
+  std::vector<ForceName> names = {{colors_.gravity, "−<i>u</i> spring"}};
+  if (beta_ > 0) names.push_back({colors_.drag, "−<i>βu</i>′ damping"});
+  names.push_back({colors_.wire_force, "sin(<i>γt</i>) forcing"});
+  return ForceKey{scale_.per_force(), "", "", names};
+}
 
 DiagramKind washing_machine_diagram_kind() {
   return {"washing_machine",
