@@ -80,7 +80,7 @@ TEST_CASE("mesh: more steps than the picture can show apart are refused", "[anno
       UsageError);
 }
 
-TEST_CASE("vibra plot --annotate mesh draws the dots; each annotation is refused where it is not drawn", "[annotate]") {
+TEST_CASE("vibra plot --annotate mesh draws the dots and each annotation is refused where it is not drawn", "[annotate]") {
   ScratchDirectory dir;
   const auto r = run_vibra(
       "plot undamped --set scheme=staggered --set steps_per_period=8 --set periods=2 --panels u,v --annotate mesh -o " +
@@ -102,7 +102,7 @@ TEST_CASE("vibra plot --annotate mesh draws the dots; each annotation is refused
   check_refused("plot undamped --annotate mesh -o OUT.html", "a page's plots are zoomable");
 }
 
-TEST_CASE("--exaggerate: the bumpy road's, refused elsewhere and below 1", "[annotate]") {
+TEST_CASE("exaggerate belongs to the bumpy road: refused elsewhere and below 1", "[annotate]") {
   check_refused("render pendulum --exaggerate 3 --at 1 -o OUT.png", "the pendulum diagram is drawn true to scale");
   check_refused("render bumpy_road --exaggerate 0.5 --at 1 -o OUT.png", "would shrink the motion");
   check_refused("render bumpy_road --exaggerate 1e5 --at 1 -o OUT.png", "exaggerate");
