@@ -50,6 +50,34 @@ std::string frame_count(const std::string& video) {
   return test::shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 '" +
                      video + "'");
 }
+
+/// A scene after its pre-pass, drawn at t = 0 on a canvas of its size.
+struct DrawnScene {
+  std::unique_ptr<scenes::Scene> scene;
+  render::Canvas canvas;
+  std::vector<double> row;
+  render::WorldView view() const { return dynamic_cast<scenes::SystemScene&>(*scene).view_at(row); }
+  /// The canvas's pixel at p: r, g, b.
+  std::array<int, 3> pixel(const render::Point& p) const {
+    const unsigned char* px = canvas.data() + int(p.y()) * canvas.stride() + 4 * int(p.x());
+    return {px[2], px[1], px[0]};
+  }
+};
+DrawnScene drawn_at_start(const std::string& name, const std::vector<std::pair<std::string, std::string>>& settings) {
+  scenes::SceneConfig config = scenes::load_scene(name);
+  for (const auto& [k, v] : settings) scenes::apply_setting(config, {k, v, "test"});
+  auto pre_pass = scenes::build_scene_runs(config);
+  DrawnScene d{scenes::make_scene_for(config, *pre_pass, "test"), render::Canvas::image(config.width, config.height),
+               std::vector<double>(pre_pass->width())};
+  do {
+    pre_pass->row(d.row);
+    d.scene->record(d.row);
+  } while (pre_pass->advance());
+  scenes::build_scene_runs(config)->row(d.row);
+  d.scene->draw(d.canvas, d.row);
+  d.canvas.flush();
+  return d;
+}
 }  // namespace
 
 TEST_CASE("a comparison's rows hold every member exactly at its own samples, on the union of their meshes",
@@ -163,30 +191,12 @@ TEST_CASE("a run that stays bounded stays in view: one that grows leaves it, one
 }
 
 TEST_CASE("each member's ghost is drawn at its own state", "[comparison]") {
-  scenes::SceneConfig config = scenes::load_scene("pendulum");
-  for (const auto& [k, v] : std::vector<std::pair<std::string, std::string>>{
-           {"compare", "Theta=10,60"}, {"layout", "fbd"}, {"alpha", "0"}, {"size", "640x360"}})
-    scenes::apply_setting(config, {k, v, "test"});
-  auto pre_pass = scenes::build_scene_runs(config);
-  auto scene = scenes::make_scene_for(config, *pre_pass, "test");
-  std::vector<double> row(pre_pass->width());
-  do {
-    pre_pass->row(row);
-    scene->record(row);
-  } while (pre_pass->advance());
-
-  auto runs = scenes::build_scene_runs(config);
-  runs->row(row);  // t = 0: the bobs at 10 and 60 degrees
-  render::Canvas canvas = render::Canvas::image(640, 360);
-  scene->draw(canvas, row);
-  canvas.flush();
-  auto& system = dynamic_cast<scenes::SystemScene&>(*scene);
-  const render::WorldView view = system.view_at(row);
+  // t = 0: the bobs at 10 and 60 degrees.
+  const DrawnScene d = drawn_at_start("pendulum", {{"compare", "Theta=10,60"}, {"layout", "fbd"}, {"alpha", "0"},
+                                                   {"size", "640x360"}});
+  const render::WorldView view = d.view();
   auto pixel_at = [&](double degrees) {
-    const scenes::PendulumGeometry g = scenes::pendulum_geometry({0, degrees * M_PI / 180, 0, 1, 0}, {});
-    const render::Point p = view.to_pixel(g.bob);
-    const unsigned char* px = canvas.data() + int(p.y()) * canvas.stride() + 4 * int(p.x());
-    return std::array<int, 3>{px[2], px[1], px[0]};  // r, g, b
+    return d.pixel(view.to_pixel(scenes::pendulum_geometry({0, degrees * M_PI / 180, 0, 1, 0}, {}).bob));
   };
   const auto first = pixel_at(10), ghost = pixel_at(60), nothing = pixel_at(-60);
   CHECK(first[2] > first[0] + 80);  // the first run's bob: solid blue
@@ -224,24 +234,10 @@ TEST_CASE("render --compare refuses bad input with one line and writes nothing",
 
 TEST_CASE("ghosts on top of each other and of the first run all show, each in its colour", "[comparison]") {
   // At t = 0 every scheme's bob is at Theta: three runs in one place.
-  scenes::SceneConfig config = scenes::load_scene("pendulum");
-  for (const auto& [k, v] : std::vector<std::pair<std::string, std::string>>{
-           {"compare", "scheme=rk4,crank-nicolson,euler-cromer"}, {"layout", "fbd"}, {"size", "1280x720"}})
-    scenes::apply_setting(config, {k, v, "test"});
-  auto pre_pass = scenes::build_scene_runs(config);
-  auto scene = scenes::make_scene_for(config, *pre_pass, "test");
-  std::vector<double> row(pre_pass->width());
-  do {
-    pre_pass->row(row);
-    scene->record(row);
-  } while (pre_pass->advance());
-  auto runs = scenes::build_scene_runs(config);
-  runs->row(row);
-  render::Canvas canvas = render::Canvas::image(1280, 720);
-  scene->draw(canvas, row);
-  canvas.flush();
-  const render::WorldView view = dynamic_cast<scenes::SystemScene&>(*scene).view_at(row);
-  const scenes::PendulumGeometry g = scenes::pendulum_geometry({0, row[1], 0, 1, 0}, {});
+  const DrawnScene d = drawn_at_start("pendulum", {{"compare", "scheme=rk4,crank-nicolson,euler-cromer"},
+                                                   {"layout", "fbd"}, {"size", "1280x720"}});
+  const render::WorldView view = d.view();
+  const scenes::PendulumGeometry g = scenes::pendulum_geometry({0, d.row[1], 0, 1, 0}, {});
   const render::Point bob = view.to_pixel(g.bob);
   const double radius = scenes::PendulumDiagramOptions{}.bob_radius * view.zoom();
   // Pixels of a colour, at full strength, within a few pixels of the bob's
@@ -252,44 +248,20 @@ TEST_CASE("ghosts on top of each other and of the first run all show, each in it
     int n = 0;
     for (int y = int(bob.y() - radius - 6); y <= int(bob.y() + radius + 6); ++y)
       for (int x = int(bob.x() - radius - 6); x <= int(bob.x() + radius + 6); ++x) {
-        const render::Point d(x + 0.5 - bob.x(), y + 0.5 - bob.y());
-        if (std::abs(d.norm() - radius) > 4) continue;
-        if (d.normalized().dot(down) > 0.8 || d.normalized().dot(to_pivot) > 0.8) continue;
-        const unsigned char* p = canvas.data() + y * canvas.stride() + 4 * x;
-        n += std::abs(p[2] - c.r * 255) < 40 && std::abs(p[1] - c.g * 255) < 40 && std::abs(p[0] - c.b * 255) < 40;
+        const render::Point p(x + 0.5 - bob.x(), y + 0.5 - bob.y());
+        if (std::abs(p.norm() - radius) > 4) continue;
+        if (p.normalized().dot(down) > 0.8 || p.normalized().dot(to_pivot) > 0.8) continue;
+        const auto px = d.pixel({double(x), double(y)});
+        n += std::abs(px[0] - c.r * 255) < 40 && std::abs(px[1] - c.g * 255) < 40 && std::abs(px[2] - c.b * 255) < 40;
       }
     return n;
   };
+  const scenes::SceneConfig config = scenes::load_scene("pendulum");
   for (size_t member = 1; member < 3; ++member) {
     INFO("member " << member);
     CHECK(on_rim(scenes::member_color(config.colors.bob, member)) > 15);
   }
 }
-
-namespace {
-/// The scene of `settings` after its pre-pass, drawn at t = 0 at 1280x720.
-struct DrawnScene {
-  std::unique_ptr<scenes::Scene> scene;
-  double zoom;
-};
-DrawnScene drawn_at_start(const std::string& name, const std::vector<std::pair<std::string, std::string>>& settings) {
-  scenes::SceneConfig config = scenes::load_scene(name);
-  for (const auto& [k, v] : settings) scenes::apply_setting(config, {k, v, "test"});
-  auto pre_pass = scenes::build_scene_runs(config);
-  auto scene = scenes::make_scene_for(config, *pre_pass, "test");
-  std::vector<double> row(pre_pass->width());
-  do {
-    pre_pass->row(row);
-    scene->record(row);
-  } while (pre_pass->advance());
-  auto runs = scenes::build_scene_runs(config);
-  runs->row(row);
-  render::Canvas canvas = render::Canvas::image(config.width, config.height);
-  scene->draw(canvas, row);
-  const double zoom = dynamic_cast<scenes::SystemScene&>(*scene).view_at(row).zoom();
-  return {std::move(scene), zoom};
-}
-}  // namespace
 
 TEST_CASE("a comparison's diagram is drawn as large as one run's: the legend goes above a wide drawing",
           "[comparison]") {
@@ -302,7 +274,7 @@ TEST_CASE("a comparison's diagram is drawn as large as one run's: the legend goe
     if (!c.alone.empty()) alone.push_back({c.alone.substr(0, c.alone.find('=')), c.alone.substr(c.alone.find('=') + 1)});
     const DrawnScene one = drawn_at_start(c.scene, alone);
     const DrawnScene both = drawn_at_start(c.scene, {{"compare", c.compare}});
-    CHECK(both.zoom >= 0.9 * one.zoom);
+    CHECK(both.view().zoom() >= 0.9 * one.view().zoom());
     // The legend covers none of the drawing.
     const auto& shapes = both.scene->last_layout()->outline.shapes();
     for (const auto& legend : shapes) {
