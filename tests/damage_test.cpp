@@ -52,6 +52,7 @@ double covered_fraction(const Damage& changed, int width, int height) {
 
 struct Run {
   double largest_covered = 0, mean_covered = 0;
+  double last_covered = 0;  ///< the last frame's
 };
 
 vibra::scenes::SceneConfig small_scene(const std::vector<std::pair<std::string, std::string>>& settings,
@@ -109,6 +110,7 @@ Run compare_redraws(const std::vector<std::pair<std::string, std::string>>& sett
       const double covered = covered_fraction(tracked.changed(), config.width, config.height);
       run.largest_covered = std::max(run.largest_covered, covered);
       run.mean_covered += covered / (frames - 1);
+      run.last_covered = covered;
     }
     previous = now;
     if (!trajectory->advance()) break;
@@ -202,6 +204,20 @@ TEST_CASE("damage: a comparison's ghosts, legend and blow-up notes redraw exactl
   }
   compare_redraws({{"compare", "Theta=10,60,120"}}, 40, "pendulum");
   compare_redraws({{"compare", "scheme=euler-cromer,pefrl"}, {"layout", "fbd"}}, 40, "orbit");
+}
+
+TEST_CASE("damage: after a run leaves the view, frames redraw only what moves, not a strip from where it left",
+          "[damage][comparison]") {
+  // Forward Euler leaves the view after about two periods; by the end of the
+  // sixth the growing curves' strip must be as narrow as with runs that all
+  // go on, not reach back to where it left.
+  const Run left = compare_redraws({{"layout", "plot"}, {"compare", "scheme=forward-euler,rk4"}, {"periods", "6"}}, 360,
+                                   "spring");
+  const Run stayed = compare_redraws({{"layout", "plot"}, {"compare", "scheme=crank-nicolson,rk4"}, {"periods", "6"}},
+                                     360, "spring");
+  INFO("part of the last frame redrawn: " << left.last_covered << " with a run that left, " << stayed.last_covered
+                                          << " without");
+  CHECK(left.last_covered < 1.5 * stayed.last_covered + 0.02);
 }
 
 TEST_CASE("damage: a scene moved to a new canvas paints its whole background there", "[damage]") {

@@ -34,6 +34,9 @@ class GrowingPolyline {
   void draw_piece(Canvas&, double from_x, int last_column, const Stroke&) const;
   /// The x of the last point through `last_column`, if any.
   std::optional<double> last_x(int last_column) const;
+  /// Whether every point is through `last_column`: the curve has ended there
+  /// (a run that left the view), so nothing of it is still to come.
+  bool complete_through(int last_column) const { return end_of(last_column) == int(points_.size()); }
 
  private:
   int end_of(int last_column) const;

@@ -142,9 +142,13 @@ void SeriesPanel::draw_progress(LayerGrowth& growth, double t) {
   const render::PixelRect& area = panel_.area();
   render::Canvas& layer = growth.layer;
   const double reach = render::GrowingPolyline::reach(2.4 * layer.scale());
+  // Where every curve still to grow is final: a curve that has ended (a run
+  // that left the view) holds nothing back, or every frame after its end
+  // would redraw a strip from there, wider and wider.
   double last_x = 1e300;
   for (size_t i = 0; i < series_.size(); ++i)
-    if (const auto x = whole_curves()[i].last_x(to)) last_x = std::min(last_x, *x);
+    if (const auto x = whole_curves()[i].last_x(to); x && !whole_curves()[i].complete_through(to))
+      last_x = std::min(last_x, *x);
   cairo_save(layer.cr());
   cairo_rectangle(layer.cr(), area.x, area.y, area.w, area.h);
   cairo_clip(layer.cr());
