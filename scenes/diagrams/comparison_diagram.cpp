@@ -107,7 +107,10 @@ void ComparisonDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
       draw_member(members_[i]);
       canvas.record_into(frame);
       ghost_bodies[i] = body_polygons(ghost.outline, 8 * canvas.scale());
-      if (frame) frame->outline.append(ghost.outline);
+      if (frame) {
+        frame->outline.append(ghost.outline);
+        frame->labels.insert(frame->labels.end(), ghost.labels.begin(), ghost.labels.end());
+      }
     }
     cairo_pop_group_to_source(canvas.cr());
     cairo_paint_with_alpha(canvas.cr(), kGhostAlpha);
