@@ -46,6 +46,14 @@ SeriesSpec exact_series(const std::function<double(double)>& exact, double facto
   return {"", color.with_alpha(0.8), [exact, factor](std::span<const double> row) { return factor * exact(row[0]); },
           true, [exact, factor](double t) { return factor * exact(t); }};
 }
+/// The diagram an option that marks it (--annotate, --exaggerate) applies
+/// to; refused in the layouts without a diagram.
+const DiagramKind& marked_diagram(const SceneConfig& config, const std::string& option) {
+  if (config.layout == Layout::plot || config.layout == Layout::grid)
+    throw UsageError(option + " marks the diagram: use --layout fbd or fbd+plot, or drop " + option);
+  return diagram_for(config);
+}
+
 void check_panel_options(const SceneConfig& config) {
   // A single run's plot layout stacks the chosen panels; a comparison's plot
   // is its main quantity, one curve per member.
@@ -54,14 +62,14 @@ void check_panel_options(const SceneConfig& config) {
     throw UsageError("panels are drawn beside the diagram: use --layout fbd+plot, or drop --panels");
   if (config.energy_bars && (config.layout == Layout::plot || config.layout == Layout::grid))
     throw UsageError("energy bars stand beside the diagram: use --layout fbd or fbd+plot, or drop --energy-bars");
-  if (config.exaggerate > 1 && config.layout != Layout::plot && config.layout != Layout::grid &&
-      !diagram_for(config).exaggerates)
-    throw UsageError("--exaggerate draws small motions larger, and the " + diagram_for(config).name +
-                     " diagram is drawn true to scale: drop --exaggerate (the bumpy road has it)");
+  if (config.exaggerate > 1) {
+    const DiagramKind& kind = marked_diagram(config, "--exaggerate");
+    if (!kind.exaggerates)
+      throw UsageError("--exaggerate draws small motions larger, and the " + kind.name +
+                       " diagram is drawn true to scale: drop --exaggerate (the bumpy road has it)");
+  }
   for (const auto& name : config.annotate) {
-    if (config.layout == Layout::plot || config.layout == Layout::grid)
-      throw UsageError("--annotate " + name + " marks the diagram: use --layout fbd or fbd+plot, or drop --annotate");
-    const DiagramKind& kind = diagram_for(config);
+    const DiagramKind& kind = marked_diagram(config, "--annotate " + name);
     if (std::find(kind.annotations.begin(), kind.annotations.end(), name) != kind.annotations.end()) continue;
     std::string drawn_on;
     for (const DiagramKind& other : all_diagrams())

@@ -217,11 +217,9 @@ void SystemScene::place_legend() {
   above.w = view_area_.w + legend_.width();
   above.h = view_area_.y + view_area_.h - legend_bottom;
   above.y = legend_bottom;
-  auto zoom = [&](const render::PixelRect& r) {
-    const Point size = world_.sizes();
-    return std::min(r.w / size.x(), r.h / size.y());
-  };
-  if (above.h > 0 && above.w > 0 && zoom(above) > 1.05 * zoom(view_area_)) view_area_ = above, legend_on_top_ = true;
+  if (above.h > 0 && above.w > 0 &&
+      render::WorldView(world_, above).zoom() > 1.05 * render::WorldView(world_, view_area_).zoom())
+    view_area_ = above, legend_on_top_ = true;
 }
 
 render::PixelRect SystemScene::drawing_area() const {

@@ -15,11 +15,6 @@ constexpr size_t kMostTurns = 2000;
 constexpr int kCurveSamples = 801;  // odd, so u = 0 is a sample
 const render::SeriesStyle kBandStyle{render::palette::ink.with_alpha(0.7), 1.6, true, false};
 
-bool same_friction(const std::vector<FrictionPanel::Member>& members) {
-  return std::all_of(members.begin(), members.end(), [&](const FrictionPanel::Member& m) {
-    return m.info->spring_and_friction->mu == members.front().info->spring_and_friction->mu;
-  });
-}
 }  // namespace
 
 FrictionPanel::FrictionPanel(render::Figure& figure, std::vector<Member> members) : figure_(figure) {
@@ -59,9 +54,9 @@ void FrictionPanel::observe(size_t member, std::span<const double> row) {
 
 void FrictionPanel::finish() {
   const double reach = reach_ > 0 ? reach_ : 1;
-  std::vector<Member> members;
-  for (const Run& run : runs_) members.push_back(run.member);
-  const bool shared_band = same_friction(members);
+  auto mu = [](const Run& run) { return run.member.info->spring_and_friction->mu; };
+  const bool shared_band =
+      std::all_of(runs_.begin(), runs_.end(), [&](const Run& run) { return mu(run) == mu(runs_.front()); });
   const std::string band_label = "friction ±<i>μ</i>: the box can rest where |<i>s</i>(<i>u</i>)| ≤ <i>μ</i>";
   if (!shared_band) figure_.add_points(panel_, band_label + " (each run's own)", kBandStyle);  // a legend entry only
   for (size_t m = 0; m < runs_.size(); ++m) {

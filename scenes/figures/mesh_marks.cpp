@@ -24,7 +24,7 @@ MeshMarks::MeshMarks(const TrajectoryInfo& info, int width) : info_(info), width
 
 void MeshMarks::mark_panel(render::Figure& figure, int panel, int column, double factor, render::Color color) {
   const bool half_steps = info_.mesh.scheme == Scheme::staggered && column == velocity_column(info_) && column != 1;
-  const std::string quantity = info_.columns[column] == "theta" ? "<i>θ</i>" : "<i>" + info_.columns[column] + "</i>";
+  const std::string quantity = quantity_symbol(info_.columns[column]);
   const std::string label = half_steps ? quantity + "<sup><i>n</i>+1/2</sup> at <i>t</i><sub><i>n</i>+1/2</sub>"
                                        : quantity + "<sup><i>n</i></sup> at <i>t</i><sub><i>n</i></sub>";
   // Half-step dots lie off the curve (it draws the mean at t_n): a colour of their own.

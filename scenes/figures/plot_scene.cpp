@@ -12,7 +12,7 @@ namespace vibra::scenes {
 PanelSpec main_quantity_panel(const SceneStyle& style, const std::string& quantity, std::function<double(double)> exact,
                               const std::string& exact_label) {
   const double f = display_factor(quantity);
-  const std::string symbol = quantity == "theta" ? "<i>θ</i>" : "<i>" + quantity + "</i>";
+  const std::string symbol = quantity_symbol(quantity);
   PanelSpec panel{quantity_markup(quantity),
                   {{symbol + " numerical", style.colors.bob, [f](std::span<const double> row) { return f * row[1]; }}}};
   if (exact)

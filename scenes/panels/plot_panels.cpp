@@ -31,6 +31,10 @@ std::string quantity_markup(const std::string& column) {
   return column;
 }
 
+std::string quantity_symbol(const std::string& column) {
+  return column == "theta" ? "<i>θ</i>" : "<i>" + column + "</i>";
+}
+
 std::vector<std::string> plot_panel_names(const TrajectoryInfo& info) {
   std::vector<std::string> names(info.columns.begin() + 1, info.columns.end());
   names.push_back("exact");

@@ -20,6 +20,8 @@ double display_factor(const std::string& column);
 
 /// A column's name as the reader knows it: Greek letters, italics, subscripts (Pango markup).
 std::string quantity_markup(const std::string& column);
+/// A column's symbol alone, in italics: "<i>θ</i>", "<i>u</i>".
+std::string quantity_symbol(const std::string& column);
 
 /// The panels `vibra plot` can draw for a run: every column but t (against
 /// t), `exact` (the exact solution over the main quantity's panel), `phase`

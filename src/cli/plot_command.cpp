@@ -91,7 +91,7 @@ bool marks_mesh(const PlotOptions& o) {
   return true;
 }
 
-render::Figure trajectory_plot(const PlotOptions& o, const Parameters& parameters) {
+render::Figure trajectory_plot(const PlotOptions& o, const Parameters& parameters, bool mark_mesh) {
   std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
   const std::vector<std::string> panels =
       o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : app::word_list("--panels", o.panels);
@@ -99,7 +99,7 @@ render::Figure trajectory_plot(const PlotOptions& o, const Parameters& parameter
   int width = 1280, height = figure_height(panels.size());
   if (!o.size.empty()) scenes::parse_size(o.size, width, height);
   const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);
-  return scenes::trajectory_figure(*trajectory, panels, width, height, title, marks_mesh(o));
+  return scenes::trajectory_figure(*trajectory, panels, width, height, title, mark_mesh);
 }
 
 /// FIGURE.html: the run's time series as a page of linked, zoomable plots.
@@ -146,8 +146,9 @@ void run_plot(const PlotOptions& o) {
     write_figure_page(o, target.file);
   } else {
     const Parameters parameters = model_settings(o.model, o.settings);
-    if (!o.compare.empty()) marks_mesh(o);  // refused with --compare
-    render::Figure figure = o.compare.empty() ? trajectory_plot(o, parameters) : comparison_plot(o, parameters);
+    const bool mark_mesh = marks_mesh(o);
+    render::Figure figure =
+        o.compare.empty() ? trajectory_plot(o, parameters, mark_mesh) : comparison_plot(o, parameters);
     figure.set_transparent(o.transparent);
     figure.write(target.file);
   }
