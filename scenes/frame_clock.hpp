@@ -48,11 +48,9 @@ class FrameClock {
     }
     return lo;
   }
-  /// The frame whose picture frame k shows: the first of a pause's repeats.
-  long long drawn_frame(long long k) const {
-    while (k > 0 && k < frames_ && repeats(k)) --k;
-    return k;
-  }
+  /// The frame whose picture frame k shows: the first of a pause's repeats
+  /// (the first frame of its time; found by halving, however long the pause).
+  long long drawn_frame(long long k) const { return k > 0 && k < frames_ ? first_frame_from(time(k)) : k; }
   /// The pacing's time map; nullopt for a steady clock.
   const std::optional<TimeMap>& time_map() const { return map_; }
 
