@@ -101,11 +101,7 @@ void check_frame_names(const std::string& target, const render::FrameSegment& se
 Outputs plan_outputs(const RenderRequest& r, const render::FrameSegment& segment, bool stream, const fs::path& staged) {
   if (stream) return {{"-"}, {}, "", 4};
   if (r.segment && render::is_video_path(r.output)) return {{segment.file_name(r.output)}, {}, "", 4};
-  if (staged.empty()) {
-    Outputs outputs{{r.output}, {}, "", 4};
-    outputs.targets.insert(outputs.targets.end(), r.also_outputs.begin(), r.also_outputs.end());
-    return outputs;
-  }
+  if (staged.empty()) return {{r.output}, {}, "", 4};
   const std::string stem = fs::path(r.output).stem().string();
   const std::string folder = companion_folder(r.output).filename().string() + "/";
   if (!r.frames_player)
@@ -447,16 +443,19 @@ void run_render(const RenderRequest& r) {
 
   std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name}, {"comment", render::markup_plain_text(caption)}};
   if (r.segment) metadata["description"] = segment.tag();  // what vibra concat checks
-  if (!r.description.empty()) metadata["description"] = r.description;
   if (stream) render::send_standard_output_to(target);  // a pipe or device: written as -o - is
-  std::vector<std::unique_ptr<render::FrameSink>> sinks;
-  for (const auto& output : outputs.targets)
-    sinks.push_back(render::make_frame_sink(output, r.scene.width, r.scene.height, r.scene.fps, clock.frames(), r.video,
-                                            metadata, segment.first()));
-  std::unique_ptr<render::FrameSink> sink =
-      sinks.size() == 1 ? std::move(sinks.front()) : render::make_tee_sink(std::move(sinks));
-  if (!r.quiet)
-    for (const auto& note : sink->notes()) std::fprintf(stderr, "vibra: %s\n", note.c_str());
+  std::unique_ptr<render::FrameSink> own_sink;
+  if (!r.into) {
+    std::vector<std::unique_ptr<render::FrameSink>> sinks;
+    for (const auto& output : outputs.targets)
+      sinks.push_back(render::make_frame_sink(output, r.scene.width, r.scene.height, r.scene.fps, clock.frames(),
+                                              r.video, metadata, segment.first()));
+    own_sink = sinks.size() == 1 ? std::move(sinks.front()) : render::make_tee_sink(std::move(sinks));
+    if (!r.quiet)
+      for (const auto& note : own_sink->notes()) std::fprintf(stderr, "vibra: %s\n", note.c_str());
+  }
+  render::FrameSink* const sink = r.into ? r.into : own_sink.get();
+  sink->start_keyframe();
   render::Canvas canvas = render::Canvas::image(r.scene.width, r.scene.height);
   canvas.track_damage();  // frames redraw, and the encoder converts, only what changed
   // A segment's earlier frames are not drawn, but the solver passes through
@@ -485,7 +484,7 @@ void run_render(const RenderRequest& r) {
     sink->write(canvas.data(), canvas.stride(), &changed);
     progress.update(k + 1 - segment.first());
   }
-  sink->finish();
+  if (own_sink) own_sink->finish();
   progress.finish(segment.frames());
   if (page) {
     csv->commit();

@@ -35,13 +35,12 @@ struct RenderRequest {
   bool quiet = false;
   /// What the progress bar calls the work ("vibra render", a lecture's shot name).
   std::string progress_label = "vibra render";
-  /// More videos drawn from the same frames (a lecture's MP4 and WebM):
-  /// video outputs only, without a segment.
-  std::vector<std::string> also_outputs;
-  /// Replaces the video's "description" metadata (a lecture's shot tag).
-  std::string description;
   /// Whether to end with "vibra: wrote ..." (a lecture reports its own output instead).
   bool report_written = true;
+  /// Frames go into this sink, left open, instead of one made for `output`
+  /// (which still names the kind of output): a lecture's shots share one
+  /// encoder, so the encoder starts and drains once, not once a shot.
+  render::FrameSink* into = nullptr;
 };
 
 /// Solves the scene's model, draws every frame and writes the output. Throws

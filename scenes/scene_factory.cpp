@@ -209,6 +209,12 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
   for (size_t i = 0; i < columns.size(); ++i) {
     SceneConfig member = config;
     member.colors.bob = legend[i].color;
+    // Here a hue names a run: the forces (drawn for the first run) are in
+    // charcoal, not in the hues of runs, unless a scene file chose theirs.
+    const SceneColors defaults;
+    for (auto [force, by_default] : {std::pair{&member.colors.gravity, defaults.gravity},
+                                     {&member.colors.wire_force, defaults.wire_force}, {&member.colors.drag, defaults.drag}})
+      if (*force == by_default) *force = render::palette::charcoal;
     // Each member would choose its own factor from its own run: one scale for
     // all, the one given or true scale, keeps the ghosts comparable.
     if (member.exaggerate == 0) member.exaggerate = 1;

@@ -195,14 +195,41 @@ TEST_CASE("each member's ghost is drawn at its own state", "[comparison]") {
   const DrawnScene d = drawn_at_start("pendulum", {{"compare", "Theta=10,60"}, {"layout", "fbd"}, {"alpha", "0"},
                                                    {"size", "640x360"}});
   const render::WorldView view = d.view();
+  // A few pixels right of the bob's centre: its forces start at the centre
+  // and point down (mg) and up the wire, to the left.
   auto pixel_at = [&](double degrees) {
-    return d.pixel(view.to_pixel(scenes::pendulum_geometry({0, degrees * M_PI / 180, 0, 1, 0}, {}).bob));
+    return d.pixel(view.to_pixel(scenes::pendulum_geometry({0, degrees * M_PI / 180, 0, 1, 0}, {}).bob) +
+                   render::Point(4, 0));
   };
   const auto first = pixel_at(10), ghost = pixel_at(60), nothing = pixel_at(-60);
+  INFO("first " << first[0] << "," << first[1] << "," << first[2] << "  ghost " << ghost[0] << "," << ghost[1] << ","
+                << ghost[2]);
   CHECK(first[2] > first[0] + 80);  // the first run's bob: solid blue
   CHECK(ghost[0] > ghost[2] + 60);  // the ghost's bob: faint orange
   CHECK(ghost[0] < 250);
   CHECK(nothing == std::array<int, 3>{255, 255, 255});
+}
+
+TEST_CASE("in a comparison the first run's forces are charcoal: a hue names a run", "[comparison]") {
+  // t = 0: the first bob at 10 degrees, its weight mg straight down from it.
+  for (const char* compare : {"Theta=10,60", "scheme=rk4,forward-euler,crank-nicolson,euler-cromer"}) {
+    const DrawnScene d =
+        drawn_at_start("pendulum", {{"Theta", "10"}, {"compare", compare}, {"layout", "fbd"}, {"size", "640x360"}});
+    const render::Point bob =
+        d.view().to_pixel(scenes::pendulum_geometry({0, 10 * M_PI / 180, 0, 1, 0}, {}).bob);
+    const auto on_weight = d.pixel(bob + render::Point(0, 14));
+    INFO(compare << ": " << on_weight[0] << "," << on_weight[1] << "," << on_weight[2]);
+    const render::Color c = render::palette::charcoal;
+    CHECK(std::abs(on_weight[0] - int(255 * c.r)) <= 12);
+    CHECK(std::abs(on_weight[1] - int(255 * c.g)) <= 12);
+    CHECK(std::abs(on_weight[2] - int(255 * c.b)) <= 12);
+  }
+  // Colours a scene file gives the forces are kept.
+  const DrawnScene own = drawn_at_start("pendulum", {{"compare", "Theta=10,60"}, {"layout", "fbd"}, {"size", "640x360"},
+                                                      {"colors.gravity", "#00ff00"}});
+  const render::Point bob = own.view().to_pixel(scenes::pendulum_geometry({0, 10 * M_PI / 180, 0, 1, 0}, {}).bob);
+  const auto on_weight = own.pixel(bob + render::Point(0, 14));
+  CHECK(on_weight[1] > on_weight[0] + 150);
 }
 
 TEST_CASE("render --compare writes a video of the run's frames, from the flag or a scene file", "[comparison][cli]") {

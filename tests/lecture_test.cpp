@@ -55,6 +55,12 @@ const std::string kChapters = "-show_entries chapter=start_time,end_time:chapter
 std::string probe(const std::string& file, const std::string& what) {
   return shell("ffprobe -v error " + what + " -of default=nw=1 '" + file + "'");
 }
+
+/// The times of the video's keyframes, one a line ("0.000000\n1.000000\n...").
+std::string keyframe_times(const std::string& file) {
+  return shell("ffprobe -v error -select_streams v:0 -show_entries frame=key_frame,pts_time -of csv=p=0 '" + file +
+               "' | awk -F, '$1 == 1 {print $2}'");
+}
 }  // namespace
 
 TEST_CASE("a lecture: a chapter per shot, subtitles from cards and notes, the frames of every shot",
@@ -82,6 +88,12 @@ TEST_CASE("a lecture: a chapter per shot, subtitles from cards and notes, the fr
       CHECK_THAT(srt, Catch::Contains("00:00:01,500 --> 00:00:03,500\nheld here"));
       CHECK_THAT(srt, Catch::Contains("00:00:04,100 --> 00:00:04,600\nThe end"));
       CHECK(read_file(dir / "lecture.vtt") == kCues);
+      // Every shot starts with a keyframe, so that a chapter's first frame
+      // needs nothing before it (the shots share one encoder).
+      const std::string keyframes = keyframe_times(out);
+      INFO(keyframes);
+      for (const char* start : {"0.000000\n", "\n1.000000\n", "\n4.100000\n"})
+        CHECK_THAT(keyframes, Catch::Contains(start));
     }
   }
 }
@@ -114,6 +126,7 @@ TEST_CASE("lecture --segment renders whole shots into shot files that the join r
   CHECK(read_file(dir / "lecture.shot-2.mp4") == shot2);
   CHECK(probe(out, "-count_frames -select_streams v:0 -show_entries stream=nb_read_frames") == "nb_read_frames=46\n");
   CHECK(read_file(dir / "lecture.vtt") == kCues);
+  CHECK(keyframe_times(out) == "0.000000\n1.000000\n4.100000\n");  // each shot file's first frame
   // A changed shot is not taken from an old shot file.
   std::string changed = kStory;
   changed.replace(changed.find("\"The end\""), 9, "\"Fin\"");

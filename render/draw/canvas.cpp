@@ -34,7 +34,7 @@ Canvas::Canvas(cairo_surface_t* surface, int width, int height)
     throw OutputError(std::string("cannot create the drawing surface: ") +
                       cairo_status_to_string(cairo_surface_status(surface)));
   cr_.reset(cairo_create(surface), cairo_destroy);
-  cairo_set_antialias(cr_.get(), CAIRO_ANTIALIAS_GOOD);
+  cairo_set_antialias(cr_.get(), kShapeAntialias);
   cairo_set_line_join(cr_.get(), CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr_.get(), CAIRO_LINE_CAP_ROUND);
   keep_labels(true);

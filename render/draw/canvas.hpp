@@ -12,6 +12,13 @@
 
 namespace vibra::render {
 
+/// How every drawing context rasterizes shapes: the canvas and the tiles it
+/// pastes (labels, trails, roads) alike, so that a pasted piece matches a
+/// drawn one. Not CAIRO_ANTIALIAS_FAST, though it strokes twice as fast:
+/// Cairo 1.16's 4x4-sample rasterizer behind it corrupts the heap on some
+/// long paths (a windowed orbit's panels aborted in free()).
+inline constexpr cairo_antialias_t kShapeAntialias = CAIRO_ANTIALIAS_GOOD;
+
 class LabelCache;
 struct DrawingRecord;
 

@@ -28,6 +28,8 @@ inline constexpr Color purple{0.80, 0.47, 0.65};
 inline constexpr Color orange{0.90, 0.62, 0.00};
 inline constexpr Color sky{0.34, 0.71, 0.91};
 inline constexpr Color yellow{0.94, 0.89, 0.26};
+/// Forces in a comparison, where the hues name runs.
+inline constexpr Color charcoal{0.30, 0.30, 0.34};
 
 /// The k-th of eight colours for curves that must be told apart (runs of a
 /// comparison, schemes of a study): Okabe-Ito, the most legible first.

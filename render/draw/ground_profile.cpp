@@ -17,7 +17,7 @@ std::shared_ptr<cairo_surface_t> hatch_tile(int period, const Color& fill, const
   std::shared_ptr<cairo_surface_t> tile(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, period, period),
                                         cairo_surface_destroy);
   cairo_t* cr = cairo_create(tile.get());
-  cairo_set_antialias(cr, CAIRO_ANTIALIAS_GOOD);  // as the canvas draws
+  cairo_set_antialias(cr, kShapeAntialias);  // as the canvas draws
   cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, fill.a);
   cairo_paint(cr);
   cairo_set_source_rgba(cr, hatch.color.r, hatch.color.g, hatch.color.b, hatch.color.a);
@@ -152,7 +152,7 @@ void GroundProfile::draw(Canvas& canvas, const WorldView& view) const {
       cairo_set_operator(tile_cr, CAIRO_OPERATOR_CLEAR);  // a reused tile starts as clear as a new one
       cairo_paint(tile_cr);
       cairo_set_operator(tile_cr, CAIRO_OPERATOR_OVER);
-      cairo_set_antialias(tile_cr, CAIRO_ANTIALIAS_GOOD);  // as the canvas draws
+      cairo_set_antialias(tile_cr, kShapeAntialias);  // as the canvas draws
       paint(tile_cr, at, std::move(points), p0, tile.top);
       const bool drawn = cairo_status(tile_cr) == CAIRO_STATUS_SUCCESS;
       cairo_destroy(tile_cr);

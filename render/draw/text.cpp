@@ -103,7 +103,7 @@ bool draw_image(Canvas& canvas, LabelCache::Label& label, const std::string& mar
   if (cairo_surface_status(image.get()) != CAIRO_STATUS_SUCCESS) return false;
   cairo_t* cr = cairo_create(image.get());
   // As the canvas's own context draws (see Canvas).
-  cairo_set_antialias(cr, CAIRO_ANTIALIAS_GOOD);
+  cairo_set_antialias(cr, kShapeAntialias);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   std::shared_ptr<PangoLayout> layout = std::move(label.layout);
   if (layout)

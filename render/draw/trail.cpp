@@ -188,7 +188,7 @@ void Trail::draw(Canvas& canvas, const WorldView& view, double t, double fade, c
         std::shared_ptr<cairo_surface_t> image(
             cairo_image_surface_create(CAIRO_FORMAT_ARGB32, box.x1 - box.x0, box.y1 - box.y0), cairo_surface_destroy);
         cairo_t* cr = cairo_create(image.get());
-        cairo_set_antialias(cr, CAIRO_ANTIALIAS_GOOD);  // as the canvas draws
+        cairo_set_antialias(cr, kShapeAntialias);  // as the canvas draws
         cairo_translate(cr, -box.x0, -box.y0);          // whole pixels: the same rasterization
         stroke_levels(cr, older, level, color, pixels_wide);
         const bool drawn = cairo_status(cr) == CAIRO_STATUS_SUCCESS;

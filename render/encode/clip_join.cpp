@@ -134,13 +134,13 @@ void add_chapters(MuxedOutput& out, const std::vector<VideoChapter>& chapters, i
 }
 }  // namespace
 
-void join_clips(const std::vector<fs::path>& paths, const fs::path& output, int fps,
+void join_clips(const std::vector<ClipFile>& files, const fs::path& output, int fps,
                 const std::vector<VideoChapter>& chapters, const std::vector<SubtitleCue>& cues,
                 const std::map<std::string, std::string>& metadata) {
   av_log_set_level(AV_LOG_QUIET);  // every failure is reported in our words, with FFmpeg's reason
-  if (paths.empty()) throw OutputError("a lecture needs at least one shot to join");
+  if (files.empty()) throw OutputError("a lecture needs at least one shot to join");
   std::vector<Clip> clips;
-  for (const fs::path& path : paths) clips.push_back(open_clip(path));
+  for (const ClipFile& file : files) clips.push_back(open_clip(file.path));
   for (const Clip& clip : clips)
     if (const std::string difference = differing_video_parameter(clips.front().stream, clip.stream); !difference.empty())
       refuse(clip.path, "it has " + difference + " (unlike " + quoted_path(clips.front().path) + ")");
@@ -171,8 +171,8 @@ void join_clips(const std::vector<fs::path>& paths, const fs::path& output, int 
   for (std::size_t i = 0; i < clips.size(); ++i) {
     Clip& clip = clips[i];
     // The cues that start before this clip ends go first (the muxer interleaves by time).
-    const long long expected = i < chapters.size() ? chapters[i].end_frame - chapters[i].first_frame : -1;
-    const double clip_end = double(offset + std::max(0LL, expected)) / fps;
+    const long long expected = files[i].frames;
+    const double clip_end = double(offset + expected) / fps;
     for (; subtitles && next_cue < cues.size() && (cues[next_cue].start < clip_end || i + 1 == clips.size()); ++next_cue)
       subtitles->write(out, cues[next_cue], packet.get());
     const bool guessed_dts = std::strstr(clip.input->iformat->name, "matroska") != nullptr;  // as in concat
@@ -191,9 +191,9 @@ void join_clips(const std::vector<fs::path>& paths, const fs::path& output, int 
       out.check(av_interleaved_write_frame(out.format, packet.get()), "writing a frame");
       ++frames;
     }
-    if (expected >= 0 && frames != expected)
+    if (frames != expected)
       refuse(clip.path, "it holds " + std::to_string(frames) + " frames, not the " + std::to_string(expected) +
-                            " of its shot");
+                            (files.size() == 1 ? " of the lecture" : " of its shot"));
     offset += frames;
   }
   out.finish_and_commit();

@@ -30,6 +30,7 @@ class VideoSink final : public FrameSink {
     writer_.write(bgra, stride, changed);
   }
   void finish() override { writer_.finish(); }
+  void start_keyframe() override { writer_.start_keyframe(); }
   std::vector<std::string> notes() const override { return writer_.notes(); }
   std::string description() const override {
     OutputTarget target;
@@ -88,6 +89,9 @@ class TeeSink final : public FrameSink {
   }
   void finish() override {
     for (auto& s : sinks_) s->finish();
+  }
+  void start_keyframe() override {
+    for (auto& s : sinks_) s->start_keyframe();
   }
   std::vector<std::string> notes() const override {
     std::vector<std::string> all;

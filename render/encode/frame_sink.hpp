@@ -19,6 +19,9 @@ class FrameSink {
   /// `changed`: where the frame may differ from the last one, if known (else nullptr).
   virtual void write(const std::uint8_t* bgra, int stride, const Damage* changed) = 0;
   virtual void finish() = 0;
+  /// The next frame starts a chapter (a lecture's shot): a video codes it as
+  /// a keyframe; frames in files need nothing.
+  virtual void start_keyframe() {}
   /// Things to tell the user once (e.g. a size rounded up for H.264).
   virtual std::vector<std::string> notes() const { return {}; }
   /// What was written, for the closing message.

@@ -552,6 +552,8 @@ void VideoWriter::write(const std::uint8_t* argb32, int stride, const Damage* ch
   }
   try {
     m.convert(argb32, stride, changed, frame);
+    frame->pict_type = keyframe_next_ ? AV_PICTURE_TYPE_I : AV_PICTURE_TYPE_NONE;  // I: x264 and libvpx code a keyframe
+    keyframe_next_ = false;
   } catch (...) {
     std::lock_guard lock(m.mutex);
     m.free_frames.push_back(frame);

@@ -56,6 +56,9 @@ class VideoWriter {
   /// failure the worker met since the last call. `changed`, if given, says
   /// where the frame may differ from the last one: only there is it converted.
   void write(const std::uint8_t* argb32, int stride, const Damage* changed = nullptr);
+  /// The next frame written starts a chapter: it is coded as a keyframe, so
+  /// that a player seeking to the chapter starts there.
+  void start_keyframe() { keyframe_next_ = true; }
   /// Encodes what is queued, flushes the encoder, writes the trailer and
   /// renames the file into place. Throws OutputError (e.g. disk full).
   void finish();
@@ -80,6 +83,7 @@ class VideoWriter {
   std::unique_ptr<Impl> impl_;
   int frames_ = 0;
   bool finished_ = false;
+  bool keyframe_next_ = false;
   std::vector<std::string> notes_;
 };
 

@@ -1,5 +1,6 @@
 #include "scenes/lecture/lecture_job.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -141,45 +142,63 @@ fs::path shot_file(const std::string& output, int number, std::size_t shots) {
   return out.parent_path() / (out.stem().string() + ".shot-" + digits + out.extension().string());
 }
 
-/// Draws a card once and encodes it `frames` times into each of `files`.
-void render_card(const Storyboard& board, const PlannedShot& p, const std::vector<fs::path>& files,
-                 const render::VideoSettings& video, const std::string& label, bool quiet) {
+/// One sink for `files` (one, or MP4 and WebM for a page), `frames` long,
+/// tagged `tag` (a shot file's, "" for none); its notes are told once.
+std::unique_ptr<render::FrameSink> sink_for(const Storyboard& board, const std::vector<fs::path>& files,
+                                            long long frames, const LectureRequest& r, const std::string& tag) {
+  std::map<std::string, std::string> metadata;
+  if (!tag.empty()) metadata["description"] = tag;
+  std::vector<std::unique_ptr<render::FrameSink>> sinks;
+  for (const fs::path& file : files)
+    sinks.push_back(render::make_frame_sink(file.string(), board.width, board.height, board.fps, frames, r.video, metadata));
+  std::unique_ptr<render::FrameSink> sink =
+      sinks.size() == 1 ? std::move(sinks.front()) : render::make_tee_sink(std::move(sinks));
+  if (!r.quiet)
+    for (const std::string& note : sink->notes()) std::fprintf(stderr, "vibra: %s\n", note.c_str());
+  return sink;
+}
+
+/// Draws a card once and encodes it `p.frames` times into `sink`.
+void render_card(const Storyboard& board, const PlannedShot& p, render::FrameSink& sink, const std::string& label,
+                 bool quiet) {
   render::Canvas canvas = render::Canvas::image(board.width, board.height);
   draw_title_card(canvas, {board.title, p.shot->card, p.shot->equation});
   canvas.flush();
-  std::vector<std::unique_ptr<render::FrameSink>> sinks;
-  for (const fs::path& file : files)
-    sinks.push_back(render::make_frame_sink(file.string(), board.width, board.height, board.fps, p.frames, video,
-                                            {{"description", p.tag}}));
-  std::unique_ptr<render::FrameSink> sink = sinks.size() == 1 ? std::move(sinks.front()) : render::make_tee_sink(std::move(sinks));
   render::Progress progress(label, p.frames, quiet);
   const render::Damage unchanged(board.width, board.height);
+  sink.start_keyframe();
   for (long long k = 0; k < p.frames; ++k) {
     render::throw_if_stop_requested();
-    sink->write(canvas.data(), canvas.stride(), k == 0 ? nullptr : &unchanged);  // the same picture again
+    sink.write(canvas.data(), canvas.stride(), k == 0 ? nullptr : &unchanged);  // the same picture again
     progress.update(k + 1);
   }
-  sink->finish();
   progress.finish(p.frames);
 }
 
-/// Renders one shot into `files` (one, or MP4 and WebM for a page).
-void render_shot(const Storyboard& board, const PlannedShot& p, const std::vector<fs::path>& files,
-                 const LectureRequest& r) {
+/// Renders one shot into `sink`, left open; `output` names the kind of video.
+void render_shot_into(const Storyboard& board, const PlannedShot& p, render::FrameSink& sink, const fs::path& output,
+                      const LectureRequest& r) {
   const std::string label = "shot " + std::to_string(p.shot->number) + "/" + std::to_string(board.shots.size()) +
                             " " + one_line_message(p.shot->title, 40);
-  if (p.shot->is_card) return render_card(board, p, files, r.video, label, r.quiet);
+  if (p.shot->is_card) return render_card(board, p, sink, label, r.quiet);
   RenderRequest request;
   request.scene = p.scene;
-  request.output = files.front().string();
-  for (std::size_t i = 1; i < files.size(); ++i) request.also_outputs.push_back(files[i].string());
+  request.output = output.string();
   request.video = r.video;
   request.quiet = r.quiet;
   request.progress_label = label;
-  request.description = p.tag;
   request.report_written = false;
   request.command_line = r.command_line;
+  request.into = &sink;
   run_render(request);
+}
+
+/// Renders one shot into `files` of its own, tagged as the shot's.
+void render_shot(const Storyboard& board, const PlannedShot& p, const std::vector<fs::path>& files,
+                 const LectureRequest& r) {
+  const std::unique_ptr<render::FrameSink> sink = sink_for(board, files, p.frames, r, p.tag);
+  render_shot_into(board, p, *sink, files.front(), r);
+  sink->finish();
 }
 
 /// The subtitles file beside a video may be replaced when vibra wrote it, or with --force.
@@ -191,6 +210,12 @@ void check_subtitles_file(const fs::path& vtt, bool force) {
   if (head.rfind(std::string("WEBVTT\n\n") + render::kWebVttMark, 0) != 0)
     throw render::OutputError("'" + vtt.string() + "' exists and was not written by vibra lecture: move it away, or "
                               "add --force to replace it");
+}
+
+long long total_frames(const std::vector<const PlannedShot*>& shots) {
+  long long frames = 0;
+  for (const PlannedShot* p : shots) frames += p->frames;
+  return frames;
 }
 
 /// The chapters and cues of the shots in `plan`, one after the other.
@@ -274,18 +299,32 @@ void run_lecture(const LectureRequest& r) {
   // The shots: reused from a cluster's shot files where complete, else rendered into a temporary folder.
   render::TemporaryDirectory clips(final_video.parent_path(), stem + "_shots");
   const std::vector<std::string> kinds = page ? std::vector<std::string>{".mp4", ".webm"} : std::vector<std::string>{ext};
-  std::vector<std::vector<fs::path>> clip_files(kinds.size());
-  for (const PlannedShot* p : chosen) {
+  std::vector<std::vector<render::ClipFile>> clip_files(kinds.size());
+  auto kept_file = [&](const PlannedShot* p) {
     const fs::path kept = shot_file(r.output, p->shot->number, plan.size());
-    if (!page && description_of(kept) == p->tag) {
-      clip_files[0].push_back(kept);
-      continue;
-    }
+    return !page && description_of(kept) == p->tag ? kept : fs::path();
+  };
+  if (std::none_of(chosen.begin(), chosen.end(), [&](const PlannedShot* p) { return !kept_file(p).empty(); })) {
+    // Every shot into one encoder: it starts and drains once, and runs on
+    // through the shots' starts (each shot still begins with a keyframe).
     std::vector<fs::path> files;
-    for (std::size_t i = 0; i < kinds.size(); ++i)
-      files.push_back(clips.path() / ("shot-" + std::to_string(p->shot->number) + kinds[i]));
-    render_shot(board, *p, files, r);
-    for (std::size_t i = 0; i < kinds.size(); ++i) clip_files[i].push_back(files[i]);
+    for (const std::string& kind : kinds) files.push_back(clips.path() / ("shots" + kind));
+    const std::unique_ptr<render::FrameSink> sink = sink_for(board, files, total_frames(chosen), r, "");
+    for (const PlannedShot* p : chosen) render_shot_into(board, *p, *sink, files.front(), r);
+    sink->finish();
+    for (std::size_t i = 0; i < kinds.size(); ++i) clip_files[i].push_back({files[i], total_frames(chosen)});
+  } else {
+    for (const PlannedShot* p : chosen) {
+      if (const fs::path kept = kept_file(p); !kept.empty()) {
+        clip_files[0].push_back({kept, p->frames});
+        continue;
+      }
+      std::vector<fs::path> files;
+      for (std::size_t i = 0; i < kinds.size(); ++i)
+        files.push_back(clips.path() / ("shot-" + std::to_string(p->shot->number) + kinds[i]));
+      render_shot(board, *p, files, r);
+      for (std::size_t i = 0; i < kinds.size(); ++i) clip_files[i].push_back({files[i], p->frames});
+    }
   }
 
   const std::map<std::string, std::string> metadata = {{"title", render::rich_text_plain(board.title)},
