@@ -158,20 +158,26 @@ struct ScratchDirectory {
   bool empty() const { return std::filesystem::is_empty(path); }
 };
 
-/// Checks that `vibra ARGS` refuses bad input as every command must: exit
-/// code 2, one line on stderr containing `expected`, nothing written. Each
-/// OUT in `args` becomes a path in a fresh directory, which must stay empty.
+/// Checks that a run was refused as every refusal must be: exit code 2 and
+/// one line on stderr, "vibra: error: ..." containing `expected`. What the
+/// run must not have written is the caller's to check (see check_refused).
+inline void check_refusal(const CommandResult& r, const std::string& expected) {
+  INFO("stderr: " << r.err);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, Catch::StartsWith("vibra: error: ") && Catch::Contains(expected));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+}
+
+/// Checks that `vibra ARGS` refuses bad input as every command must (see
+/// check_refusal) and writes nothing: each OUT in `args` becomes a path in a
+/// fresh directory, which must stay empty.
 inline void check_refused(std::string args, const std::string& expected, const std::string& launcher = "") {
   ScratchDirectory dir;
   // From past each replacement: the scratch folder's random name may itself hold "OUT".
   const std::string out = dir / "out";
   for (auto at = args.find("OUT"); at != std::string::npos; at = args.find("OUT", at + out.size())) args.replace(at, 3, out);
   INFO("vibra " << args);
-  const auto r = run_vibra(args, launcher);
-  INFO("stderr: " << r.err);
-  CHECK(r.exit_code == 2);
-  CHECK_THAT(r.err, Catch::Contains(expected));
-  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  check_refusal(run_vibra(args, launcher), expected);
   CHECK(dir.empty());
 }
 

@@ -13,6 +13,7 @@
 using namespace vibra;
 using test::colour_pixels;
 using test::png_size;
+using test::check_refusal;
 using test::run_vibra;
 using test::ScratchDirectory;
 
@@ -76,11 +77,9 @@ TEST_CASE("friction panel: on a tanh spring, friction's work mu |b - a| is the s
 TEST_CASE("friction panel: refused for models without friction, and on a page", "[plot][sliding-box]") {
   ScratchDirectory dir;
   auto r = run_vibra("plot undamped --panels friction -o " + (dir / "f.png"));
-  CHECK(r.exit_code == 2);
-  CHECK_THAT(r.err, Catch::Contains("unknown panel 'friction'"));
+  check_refusal(r, "unknown panel 'friction'");
   r = run_vibra("plot sliding-box --panels friction -o " + (dir / "f.html"));
-  CHECK(r.exit_code == 2);
-  CHECK_THAT(r.err, Catch::Contains("panel 'friction' is not against t"));
+  check_refusal(r, "panel 'friction' is not against t");
   CHECK_FALSE(std::filesystem::exists(dir / "f.html"));
 }
 

@@ -12,6 +12,7 @@
 
 using vibra::test::check_refused;
 using vibra::test::read_file;
+using vibra::test::check_refusal;
 using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;
 using vibra::test::shell;
@@ -201,8 +202,7 @@ TEST_CASE("subtitles beside a video replace only vibra's own", "[lecture]") {
   write(dir / "story.toml", kStory);
   write(dir / "lecture.vtt", "WEBVTT\n\nmy own notes\n");
   const auto r = run_vibra("lecture " + (dir / "story.toml") + " -q -o " + (dir / "lecture.mp4"));
-  CHECK(r.exit_code == 2);
-  CHECK_THAT(r.err, Catch::Contains("was not written by vibra lecture"));
+  check_refusal(r, "was not written by vibra lecture");
   CHECK_FALSE(fs::exists(dir / "lecture.mp4"));
   CHECK(read_file(dir / "lecture.vtt") == "WEBVTT\n\nmy own notes\n");
 }
