@@ -179,13 +179,16 @@ TEST_CASE("the force key names each force drawn, in its arrow's colour, clear of
 }
 
 TEST_CASE("a panel's legend sits on its title row, off the data, where the row has room", "[legibility][panels]") {
-  auto legend_boxes = [](int width, int height, const PixelRect& outer) {
+  auto legend_boxes = [](int width, int height, const PixelRect& outer, bool margin_below_free = false,
+                         const std::string& third = "") {
     Canvas canvas = Canvas::image(width, height);
     vibra::render::PlotPanel panel(outer, canvas.scale());
     DrawingRecord record;
     canvas.record_into(&record);
-    panel.draw_legend(canvas, {{"numerical", vibra::render::palette::ink}, {"exact", vibra::render::palette::ink, true}},
-                      "<i>u</i>  displacement");
+    std::vector<vibra::render::PlotPanel::LegendItem> items{{"numerical", vibra::render::palette::ink},
+                                                             {"exact", vibra::render::palette::ink, true}};
+    if (!third.empty()) items.push_back({third, vibra::render::palette::faint, true});
+    panel.draw_legend(canvas, items, "<i>u</i>  displacement", margin_below_free);
     canvas.record_into(nullptr);
     std::vector<PixelRect> boxes;
     for (const OutlineShape& s : record.outline.shapes())
@@ -202,10 +205,23 @@ TEST_CASE("a panel's legend sits on its title row, off the data, where the row h
       CHECK(b.x + b.w <= area.x + area.w + 0.5);
     }
   }
-  // Too narrow a row: the legend goes inside the plot's top-right corner.
-  const auto [boxes, area] = legend_boxes(320, 180, {150, 7, 100, 80});
-  REQUIRE(boxes.size() == 2);
-  for (const PixelRect& b : boxes) CHECK(b.y >= area.y);
+  // Too narrow a row (the washing machine's u panel at 640x360): under the
+  // plot when no tick labels are there (a panel stacked above another)...
+  const PixelRect stacked{295, 5, 340, 170};
+  const auto [under, plot] = legend_boxes(640, 360, stacked, true, "±steady amplitude");
+  REQUIRE(under.size() == 3);
+  for (const PixelRect& b : under) {
+    CHECK(b.y >= plot.y + plot.h);  // below the plot's frame
+    CHECK(b.y + b.h <= stacked.y + stacked.h + 1);  // inside the panel
+    CHECK(b.x + b.w <= plot.x + plot.w + 0.5);
+  }
+  // ... else inside the plot's top-right corner.
+  const auto [inside, area] = legend_boxes(640, 360, stacked, false, "±steady amplitude");
+  REQUIRE(inside.size() == 3);
+  for (const PixelRect& b : inside) CHECK(b.y >= area.y);
+  const auto [small, small_area] = legend_boxes(320, 180, {150, 7, 100, 80}, true);
+  REQUIRE(small.size() == 2);
+  for (const PixelRect& b : small) CHECK(b.y >= small_area.y);  // wider than the plot: inside it
 }
 
 TEST_CASE("a pendulum that swings up past its pivot hangs from a bearing block, not a ceiling", "[legibility][pendulum]") {

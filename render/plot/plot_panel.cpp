@@ -190,7 +190,8 @@ std::string PlotPanel::y_title(const std::string& y_label, int y_target) const {
   return with_common(y_label, linear_tick_labels(ticks, nice_step(y1_ - y0_, y_target)).common);
 }
 
-void PlotPanel::draw_legend(Canvas& canvas, const std::vector<LegendItem>& entries, const std::string& y_label) const {
+void PlotPanel::draw_legend(Canvas& canvas, const std::vector<LegendItem>& entries, const std::string& y_label,
+                            bool margin_below_free) const {
   const TextStyle style{kTickFont, palette::ink};
   const double sample = 22 * scale_, gap = 6 * scale_, between = 14 * scale_;
   double width = 0, height = 0;
@@ -201,12 +202,19 @@ void PlotPanel::draw_legend(Canvas& canvas, const std::vector<LegendItem>& entri
   }
   width -= between;
   const Point title = text_size(canvas, y_title(y_label, tick_target(canvas, true)), {kLabelFont, palette::ink});
-  // The title row, right-aligned, when it leaves room after the y label;
-  // else inside the plot's top-right corner, as before.
+  // Outside the plot where there is room, over no data: the title row,
+  // right-aligned after the y label; else the margin under the plot when no
+  // tick labels take it (a panel stacked above another); else, as a last
+  // resort, inside the plot's top-right corner.
   const bool on_title_row = area_.x + title.x() + 2 * between + width <= area_.x + area_.w &&
                             area_.y - 3 * scale_ - std::max(height, title.y()) >= outer_.y - 1;
-  const double centre_y = on_title_row ? area_.y - 3 * scale_ - title.y() / 2 : area_.y + 6 * scale_ + height / 2;
-  double x = area_.x + area_.w - (on_title_row ? 0 : 8 * scale_);
+  const double bottom = area_.y + area_.h;
+  const bool under_plot = !on_title_row && margin_below_free && width <= area_.w &&
+                          bottom + 4 * scale_ + height <= outer_.y + outer_.h + 1;
+  const double centre_y = on_title_row ? area_.y - 3 * scale_ - title.y() / 2
+                          : under_plot ? bottom + 4 * scale_ + height / 2
+                                       : area_.y + 6 * scale_ + height / 2;
+  double x = area_.x + area_.w - (on_title_row || under_plot ? 0 : 8 * scale_);
   for (auto it = entries.rbegin(); it != entries.rend(); ++it) {
     const Point size = text_size(canvas, it->label, style);
     draw_text(canvas, {x, centre_y}, it->label, style, Anchor::right);

@@ -50,8 +50,10 @@ class PlotPanel {
   };
   /// Legend entries on the title row, right of the y label `y_label_markup`
   /// (as given to draw_axes), where they cover no data; where the row is too
-  /// narrow, in the plot's top-right corner.
-  void draw_legend(Canvas&, const std::vector<LegendItem>& entries, const std::string& y_label_markup) const;
+  /// narrow, under the plot when `margin_below_free` (draw_axes drew no x
+  /// tick labels there), else in the plot's top-right corner.
+  void draw_legend(Canvas&, const std::vector<LegendItem>& entries, const std::string& y_label_markup,
+                   bool margin_below_free = false) const;
 
  private:
   /// The y label as drawn: with the ticks' common factor, if any.

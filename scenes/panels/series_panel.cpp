@@ -83,7 +83,7 @@ void SeriesPanel::draw_axes(render::Canvas& canvas, bool time_labels) const {
   std::vector<render::PlotPanel::LegendItem> legend;
   for (const auto& s : series_)
     if (!s.label.empty()) legend.push_back({s.label, s.color, s.dashed});
-  if (legend.size() > 1) panel_.draw_legend(canvas, legend, y_label_);
+  if (legend.size() > 1) panel_.draw_legend(canvas, legend, y_label_, !time_labels);
   if (!first_curve_seen_ && !empty_note_.empty()) {
     render::TextStyle style{15, render::palette::ink.with_alpha(0.8)};
     style.halo = true;
