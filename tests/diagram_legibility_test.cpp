@@ -13,6 +13,8 @@
 #include "render/labels/drawing_record.hpp"
 #include "render/labels/outline.hpp"
 #include "render/plot/plot_panel.hpp"
+#include "cli_support.hpp"
+#include "png_compare.hpp"
 #include "scenes/diagrams/force_key.hpp"
 #include "scenes/scene_config.hpp"
 #include "scene_run_support.hpp"
@@ -260,5 +262,23 @@ TEST_CASE("the pendulum's geometry (Fig 1.21): i_r, i_theta, (x0, y0) and L are 
     }
     for (const auto& p : plain.placed) CHECK(std::find(wanted.begin(), wanted.end(), p.request.markup) == wanted.end());
     CHECK(arrows(frame) > arrows(plain));  // the two unit vectors
+  }
+}
+
+TEST_CASE("a frame under 360 pixels high is the 360-pixel picture made smaller, not a squeeze", "[legibility][cli]") {
+  CHECK(vibra::render::scale_for_height(360) == 0.7);
+  CHECK(vibra::render::scale_for_height(180) == 0.35);
+  CHECK(vibra::render::scale_for_height(1080) == 1.5);
+  // The thumbnail against the 640x360 still scaled down: the same picture
+  // (25 dB; a layout squeezed into 320x180 at 640x360's text size gave 15).
+  vibra::test::ScratchDirectory dir;
+  for (const char* scene : {"pendulum", "spring_dashpot --panels u,phase,energy --energy-bars"}) {
+    INFO(scene);
+    const std::string common = std::string("render ") + scene + " --at 2 -q -o ";
+    REQUIRE(vibra::test::run_vibra(common + (dir / "large.png") + " --size 640x360").exit_code == 0);
+    REQUIRE(vibra::test::run_vibra(common + (dir / "small.png") + " --size 320x180").exit_code == 0);
+    vibra::test::shell("ffmpeg -v error -y -i '" + (dir / "large.png") + "' -vf scale=320:180:flags=area '" +
+                       (dir / "halved.png") + "'");
+    CHECK(vibra::test::psnr(dir / "small.png", dir / "halved.png") > 21);
   }
 }

@@ -15,7 +15,8 @@ TEST_CASE("read-out: piece by piece, the pixels of the whole line", "[scene][tex
     const int width = height * 16 / 9;
     scenes::SceneStyle style;
     for (double t : {0.0, 0.004, 1.0, 2.37, 9.995, 17.5, 31.05, 44.44, 123.46, 777.77, 1008.3}) {
-      render::Canvas pieces = render::Canvas::image(width / 2, height / 8), whole = render::Canvas::image(width / 2, height / 8);
+      // Full height: a canvas's height sets its scale (a short one would be a thumbnail's).
+      render::Canvas pieces = render::Canvas::image(width / 2, height), whole = render::Canvas::image(width / 2, height);
       pieces.clear(render::palette::paper), whole.clear(render::palette::paper);
       const render::PixelRect area{0, 0, double(width / 2), double(height / 8)};
       scenes::draw_readout(pieces, area, t, style);

@@ -20,8 +20,10 @@ using vibra::test::ScratchDirectory;
 namespace fs = std::filesystem;
 
 namespace {
-constexpr int kWidth = 320, kHeight = 180;
-const std::string kShort = " --size 320x180 --set periods=0.25 -q --transparent ";
+// 640x360: the smallest frame that is not a thumbnail, where lines keep their
+// full width (a thumbnail's are thinner than a pixel, never solid).
+constexpr int kWidth = 640, kHeight = 360;
+const std::string kShort = " --size 640x360 --set periods=0.25 -q --transparent ";
 
 /// How much of a picture's alpha is empty, and whether anything is solid.
 struct AlphaSummary {
@@ -60,7 +62,7 @@ AlphaSummary png_alpha(const std::string& path) {
 void check_overlay(const AlphaSummary& s) {
   CHECK(s.corner <= 0.02);
   CHECK(s.transparent_fraction > 0.5);
-  CHECK(s.opaque_pixels > 150);  // thin lines at 320x180: a few hundred solid pixels
+  CHECK(s.opaque_pixels > 150);  // thin lines at 640x360: a few hundred solid pixels
 }
 }  // namespace
 
@@ -105,13 +107,13 @@ TEST_CASE("transparent PNG frames and stills have alpha: clear around, solid on 
   check_overlay(png_alpha(dir / "f_007.png"));
   REQUIRE(run_vibra("render" + kShort + "--at 0.5 -o " + (dir / "still.png")).exit_code == 0);
   check_overlay(png_alpha(dir / "still.png"));
-  REQUIRE(run_vibra("render --size 320x180 --set periods=0.25 -q --at 0.5 -o " + (dir / "opaque.png")).exit_code == 0);
+  REQUIRE(run_vibra("render --size 640x360 --set periods=0.25 -q --at 0.5 -o " + (dir / "opaque.png")).exit_code == 0);
   {  // without --transparent: opaque, as before
     std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> opaque(
         cairo_image_surface_create_from_png((dir / "opaque.png").c_str()), cairo_surface_destroy);
     CHECK(cairo_image_surface_get_format(opaque.get()) == CAIRO_FORMAT_RGB24);
   }
-  REQUIRE(run_vibra("plot undamped --set periods=1 --size 320x180 -q --transparent -o " + (dir / "plot.png")).exit_code == 0);
+  REQUIRE(run_vibra("plot undamped --set periods=1 --size 640x360 -q --transparent -o " + (dir / "plot.png")).exit_code == 0);
   check_overlay(png_alpha(dir / "plot.png"));
 }
 
@@ -150,7 +152,7 @@ TEST_CASE("transparent SVG and PDF have no background rectangle", "[transparent]
     INFO(ext);
     const std::string clear = dir / ("clear" + std::string(ext)), paper = dir / ("paper" + std::string(ext));
     REQUIRE(run_vibra("render" + kShort + "--at 0.5 -o " + clear).exit_code == 0);
-    REQUIRE(run_vibra("render --size 320x180 --set periods=0.25 -q --at 0.5 -o " + paper).exit_code == 0);
+    REQUIRE(run_vibra("render --size 640x360 --set periods=0.25 -q --at 0.5 -o " + paper).exit_code == 0);
     // Rasterised with a transparent page, as an editor places it.
     for (const auto& [file, transparent] : {std::pair{clear, true}, std::pair{paper, false}}) {
       const std::string png = file + ".png";
@@ -168,12 +170,12 @@ TEST_CASE("transparent SVG and PDF have no background rectangle", "[transparent]
     }
   }
   // Cairo paints the background as a rectangle covering the page; without
-  // it, no element fills the whole 320x180 page.
+  // it, no element fills the whole 640x360 page.
   std::ifstream in(dir / "clear.svg");
   const std::string svg{std::istreambuf_iterator<char>(in), {}};
   std::ifstream in_paper(dir / "paper.svg");
   const std::string paper_svg{std::istreambuf_iterator<char>(in_paper), {}};
-  const std::string page_fill = "<rect x=\"0\" y=\"0\" width=\"320\" height=\"180\"";
+  const std::string page_fill = "<rect x=\"0\" y=\"0\" width=\"640\" height=\"360\"";
   CHECK(paper_svg.find(page_fill) != std::string::npos);
   CHECK(svg.find(page_fill) == std::string::npos);
   CHECK(svg.size() < paper_svg.size());

@@ -31,9 +31,11 @@ struct PixelRect {
 };
 
 /// Pixels per 720p pixel for a picture `height` pixels high: line widths and
-/// fonts are multiplied by it. Never below 0.7, so labels stay readable on
-/// small frames such as 640x360.
-inline double scale_for_height(int height) { return std::max(0.7, height / 720.0); }
+/// fonts are multiplied by it. Never below 0.7 down to 360 pixels, so labels
+/// stay readable on frames such as 640x360; below that the picture is a
+/// thumbnail, the 360-pixel picture made smaller as a whole (at 320x180 its
+/// text is too small to read, but nothing covers the drawing).
+inline double scale_for_height(int height) { return height >= 360 ? std::max(0.7, height / 720.0) : 0.7 * height / 360.0; }
 
 /// A Cairo drawing surface: an ARGB32 image for frames, or an SVG/PDF file for
 /// vector stills. Line widths and font sizes are given at 720p and scaled with
