@@ -446,16 +446,12 @@ void run_render(const RenderRequest& r) {
   if (stream) render::send_standard_output_to(target);  // a pipe or device: written as -o - is
   std::unique_ptr<render::FrameSink> own_sink;
   if (!r.into) {
-    std::vector<std::unique_ptr<render::FrameSink>> sinks;
-    for (const auto& output : outputs.targets)
-      sinks.push_back(render::make_frame_sink(output, r.scene.width, r.scene.height, r.scene.fps, clock.frames(),
-                                              r.video, metadata, segment.first()));
-    own_sink = sinks.size() == 1 ? std::move(sinks.front()) : render::make_tee_sink(std::move(sinks));
+    own_sink = render::make_frame_sinks(outputs.targets, r.scene.width, r.scene.height, r.scene.fps, clock.frames(),
+                                        r.video, metadata, segment.first());
     if (!r.quiet)
       for (const auto& note : own_sink->notes()) std::fprintf(stderr, "vibra: %s\n", note.c_str());
   }
   render::FrameSink* const sink = r.into ? r.into : own_sink.get();
-  sink->start_keyframe();
   render::Canvas canvas = render::Canvas::image(r.scene.width, r.scene.height);
   canvas.track_damage();  // frames redraw, and the encoder converts, only what changed
   // A segment's earlier frames are not drawn, but the solver passes through

@@ -111,7 +111,13 @@ class TeeSink final : public FrameSink {
 };
 }  // namespace
 
-std::unique_ptr<FrameSink> make_tee_sink(std::vector<std::unique_ptr<FrameSink>> sinks) {
+std::unique_ptr<FrameSink> make_frame_sinks(const std::vector<std::string>& outputs, int width, int height, double fps,
+                                            long long frame_count, const VideoSettings& settings,
+                                            const std::map<std::string, std::string>& metadata, long long first_frame) {
+  std::vector<std::unique_ptr<FrameSink>> sinks;
+  for (const std::string& output : outputs)
+    sinks.push_back(make_frame_sink(output, width, height, fps, frame_count, settings, metadata, first_frame));
+  if (sinks.size() == 1) return std::move(sinks.front());
   return std::make_unique<TeeSink>(std::move(sinks));
 }
 

@@ -65,7 +65,12 @@ std::unique_ptr<FrameSink> make_frame_sink(const std::string& output, int width,
                                            const std::map<std::string, std::string>& metadata,
                                            long long first_frame = 0);
 
-/// One sink that writes every frame to each of `sinks` (draw once, encode twice).
-std::unique_ptr<FrameSink> make_tee_sink(std::vector<std::unique_ptr<FrameSink>> sinks);
+/// The sink for every one of `outputs` (as make_frame_sink): the one sink
+/// when there is one, else one that writes each frame to all (a page's MP4
+/// and WebM: draw once, encode twice).
+std::unique_ptr<FrameSink> make_frame_sinks(const std::vector<std::string>& outputs, int width, int height, double fps,
+                                            long long frame_count, const VideoSettings&,
+                                            const std::map<std::string, std::string>& metadata,
+                                            long long first_frame = 0);
 
 }  // namespace vibra::render

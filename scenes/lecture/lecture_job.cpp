@@ -1,6 +1,5 @@
 #include "scenes/lecture/lecture_job.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -148,11 +147,10 @@ std::unique_ptr<render::FrameSink> sink_for(const Storyboard& board, const std::
                                             long long frames, const LectureRequest& r, const std::string& tag) {
   std::map<std::string, std::string> metadata;
   if (!tag.empty()) metadata["description"] = tag;
-  std::vector<std::unique_ptr<render::FrameSink>> sinks;
-  for (const fs::path& file : files)
-    sinks.push_back(render::make_frame_sink(file.string(), board.width, board.height, board.fps, frames, r.video, metadata));
+  std::vector<std::string> outputs;
+  for (const fs::path& file : files) outputs.push_back(file.string());
   std::unique_ptr<render::FrameSink> sink =
-      sinks.size() == 1 ? std::move(sinks.front()) : render::make_tee_sink(std::move(sinks));
+      render::make_frame_sinks(outputs, board.width, board.height, board.fps, frames, r.video, metadata);
   if (!r.quiet)
     for (const std::string& note : sink->notes()) std::fprintf(stderr, "vibra: %s\n", note.c_str());
   return sink;
@@ -166,7 +164,6 @@ void render_card(const Storyboard& board, const PlannedShot& p, render::FrameSin
   canvas.flush();
   render::Progress progress(label, p.frames, quiet);
   const render::Damage unchanged(board.width, board.height);
-  sink.start_keyframe();
   for (long long k = 0; k < p.frames; ++k) {
     render::throw_if_stop_requested();
     sink.write(canvas.data(), canvas.stride(), k == 0 ? nullptr : &unchanged);  // the same picture again
@@ -175,11 +172,14 @@ void render_card(const Storyboard& board, const PlannedShot& p, render::FrameSin
   progress.finish(p.frames);
 }
 
-/// Renders one shot into `sink`, left open; `output` names the kind of video.
+/// Renders one shot into `sink`, left open, starting on a keyframe (so that
+/// its chapter starts cleanly when shots share the sink); `output` names the
+/// kind of video.
 void render_shot_into(const Storyboard& board, const PlannedShot& p, render::FrameSink& sink, const fs::path& output,
                       const LectureRequest& r) {
   const std::string label = "shot " + std::to_string(p.shot->number) + "/" + std::to_string(board.shots.size()) +
                             " " + one_line_message(p.shot->title, 40);
+  sink.start_keyframe();
   if (p.shot->is_card) return render_card(board, p, sink, label, r.quiet);
   RenderRequest request;
   request.scene = p.scene;
@@ -299,33 +299,37 @@ void run_lecture(const LectureRequest& r) {
   // The shots: reused from a cluster's shot files where complete, else rendered into a temporary folder.
   render::TemporaryDirectory clips(final_video.parent_path(), stem + "_shots");
   const std::vector<std::string> kinds = page ? std::vector<std::string>{".mp4", ".webm"} : std::vector<std::string>{ext};
+  // Shots rendered here in a row share one encoder, which starts and drains
+  // once for them and runs on across their starts; a kept shot file ends the
+  // row and is joined as it is.
   std::vector<std::vector<render::ClipFile>> clip_files(kinds.size());
-  auto kept_file = [&](const PlannedShot* p) {
-    const fs::path kept = shot_file(r.output, p->shot->number, plan.size());
-    return !page && description_of(kept) == p->tag ? kept : fs::path();
+  std::unique_ptr<render::FrameSink> row;
+  std::vector<fs::path> row_files;
+  long long row_frames = 0;
+  auto end_row = [&] {
+    if (!row) return;
+    row->finish();
+    row.reset();
+    for (std::size_t i = 0; i < kinds.size(); ++i) clip_files[i].push_back({row_files[i], row_frames});
   };
-  if (std::none_of(chosen.begin(), chosen.end(), [&](const PlannedShot* p) { return !kept_file(p).empty(); })) {
-    // Every shot into one encoder: it starts and drains once, and runs on
-    // through the shots' starts (each shot still begins with a keyframe).
-    std::vector<fs::path> files;
-    for (const std::string& kind : kinds) files.push_back(clips.path() / ("shots" + kind));
-    const std::unique_ptr<render::FrameSink> sink = sink_for(board, files, total_frames(chosen), r, "");
-    for (const PlannedShot* p : chosen) render_shot_into(board, *p, *sink, files.front(), r);
-    sink->finish();
-    for (std::size_t i = 0; i < kinds.size(); ++i) clip_files[i].push_back({files[i], total_frames(chosen)});
-  } else {
-    for (const PlannedShot* p : chosen) {
-      if (const fs::path kept = kept_file(p); !kept.empty()) {
-        clip_files[0].push_back({kept, p->frames});
-        continue;
-      }
-      std::vector<fs::path> files;
-      for (std::size_t i = 0; i < kinds.size(); ++i)
-        files.push_back(clips.path() / ("shot-" + std::to_string(p->shot->number) + kinds[i]));
-      render_shot(board, *p, files, r);
-      for (std::size_t i = 0; i < kinds.size(); ++i) clip_files[i].push_back({files[i], p->frames});
+  for (const PlannedShot* p : chosen) {
+    const fs::path kept = shot_file(r.output, p->shot->number, plan.size());
+    if (!page && description_of(kept) == p->tag) {
+      end_row();
+      clip_files[0].push_back({kept, p->frames});
+      continue;
     }
+    if (!row) {
+      row_files.clear();
+      for (const std::string& kind : kinds)
+        row_files.push_back(clips.path() / ("from-shot-" + std::to_string(p->shot->number) + kind));
+      row = sink_for(board, row_files, total_frames(chosen), r, "");
+      row_frames = 0;
+    }
+    render_shot_into(board, *p, *row, row_files.front(), r);
+    row_frames += p->frames;
   }
+  end_row();
 
   const std::map<std::string, std::string> metadata = {{"title", render::rich_text_plain(board.title)},
                                                        {"comment", "vibra lecture " + r.storyboard}};
