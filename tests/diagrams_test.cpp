@@ -30,19 +30,19 @@ struct Recorded {
   SceneConfig config;
   std::unique_ptr<Diagram> diagram;
   std::vector<std::vector<double>> rows;
+  WorldBox world;
 };
 
 Recorded record(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& settings = {}) {
-  Recorded r{load_scene(scene), nullptr, {}};
+  Recorded r{load_scene(scene), nullptr, {}, {}};
   for (const auto& [k, v] : settings) apply_setting(r.config, {k, v, "test"});
   const Parameters p = model_parameters_of(r.config);
   auto run = find_model(r.config.model).build(p);
   r.diagram = diagram_for(r.config).make({r.config, p, run->info()});
   r.rows = vibra::test::rows(*run);
-  WorldBox world;
-  world.setEmpty();
-  for (const auto& row : r.rows) r.diagram->record(row, world);
-  r.diagram->finish_recording(world);
+  r.world.setEmpty();
+  for (const auto& row : r.rows) r.diagram->record(row, r.world);
+  r.diagram->finish_recording(r.world);
   return r;
 }
 
@@ -419,4 +419,42 @@ TEST_CASE("the force key's names are in the colours the arrows are drawn in", "[
   check("spring_dashpot", [](C c) { return Colours{c.gravity, c.drag, c.wire_force}; });
   check("sliding_box", [](C c) { return Colours{c.gravity, c.drag, c.wire_force}; });
   check("bumpy_road", [](C c) { return Colours{c.gravity, c.drag}; });
+}
+
+TEST_CASE("every diagram notes where it draws, so a comparison paints its ghosts' layer only there",
+          "[scene][diagram][comparison]") {
+  // The ghosts are drawn into a group as large as the diagram's part and
+  // painted faint only inside the box the canvas noted while they drew: a
+  // pixel drawn outside that box would be lost from the frame.
+  for (const std::string& name : builtin_scene_names()) {
+    Recorded r = record(name);
+    for (const bool ghost : {false, true}) {
+      r.diagram->set_ghost(ghost);
+      for (const double moment : {0.0, 0.37, 0.81, 1.0}) {
+        INFO(name << (ghost ? ", as a ghost" : "") << ", at " << moment << " of the run");
+        const auto& row = r.rows[size_t(std::llround(moment * double(r.rows.size() - 1)))];
+        render::Canvas canvas = render::Canvas::image(640, 360);
+        canvas.clear(render::palette::paper);
+        const std::optional<WorldBox> moving = r.diagram->view_at(row);  // the road's view follows the car
+        const render::WorldView view(moving ? *moving : r.world, {40, 30, 560, 300});
+        Eigen::AlignedBox2d noted;
+        canvas.extent_into(&noted);
+        r.diagram->draw(canvas, view, row);
+        canvas.extent_into(nullptr);
+        canvas.flush();
+        const std::uint32_t paper = *reinterpret_cast<const std::uint32_t*>(canvas.data());
+        long long drawn = 0, outside = 0;
+        for (int y = 0; y < canvas.height(); ++y)
+          for (int x = 0; x < canvas.width(); ++x) {
+            if (reinterpret_cast<const std::uint32_t*>(canvas.data() + y * canvas.stride())[x] == paper) continue;
+            ++drawn;
+            // A pixel is touched by what covers any part of it.
+            if (x + 1 <= noted.min().x() || x >= noted.max().x() || y + 1 <= noted.min().y() || y >= noted.max().y())
+              ++outside;
+          }
+        CHECK(drawn > 50);
+        CHECK(outside == 0);
+      }
+    }
+  }
 }

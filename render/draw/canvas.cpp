@@ -109,17 +109,18 @@ void Canvas::clear(Color c) {
 }
 
 void Canvas::mark_drawn(double x0, double y0, double x1, double y1) {
-  if (!tracking_) return;
+  if (!tracking_ && !extent_) return;
   // The box's corners in device pixels: the user space may be scaled or rotated.
   double xs[4] = {x0, x1, x0, x1}, ys[4] = {y0, y0, y1, y1};
   for (int i = 0; i < 4; ++i) cairo_user_to_device(cr(), &xs[i], &ys[i]);
   const double left = *std::min_element(xs, xs + 4), right = *std::max_element(xs, xs + 4);
   const double top = *std::min_element(ys, ys + 4), bottom = *std::max_element(ys, ys + 4);
-  drawn_.add(left, top, right, bottom);
+  if (extent_) extent_->extend(Eigen::AlignedBox2d(Point(left, top), Point(right, bottom)));
+  if (tracking_) drawn_.add(left, top, right, bottom);
 }
 
 void Canvas::mark_path(double widen) {
-  if (!tracking_) return;
+  if (!tracking_ && !extent_) return;
   double x0, y0, x1, y1;
   cairo_path_extents(cr(), &x0, &y0, &x1, &y1);
   if (x0 == 0 && y0 == 0 && x1 == 0 && y1 == 0) return;  // empty path: nothing drawn

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <utility>
 
 #include "render/draw/color.hpp"
 #include "render/draw/damage.hpp"
@@ -82,6 +83,11 @@ class Canvas {
   /// Notes a box in user space that is about to be drawn.
   void mark_drawn(double x0, double y0, double x1, double y1);
 
+  /// From now on, every box noted drawn (a stroke's, a fill's, a text's)
+  /// also widens `extent`, in device pixels, on any canvas (nullptr: stop).
+  /// Returns the box that was widened before, so that scopes nest.
+  Eigen::AlignedBox2d* extent_into(Eigen::AlignedBox2d* extent) { return std::exchange(extent_, extent); }
+
   /// From now on, every stroke, fill and text goes into `record`'s outline,
   /// and labels asked for wait there to be placed (nullptr: drawn at once).
   void record_into(DrawingRecord* record) { record_ = record; }
@@ -114,6 +120,7 @@ class Canvas {
   Damage drawn_, drawn_last_frame_, restored_;
   std::shared_ptr<LabelCache> labels_;
   DrawingRecord* record_ = nullptr;
+  Eigen::AlignedBox2d* extent_ = nullptr;
 };
 
 /// Maps world coordinates (y up, equal aspect) into a pixel rectangle (y down),

@@ -107,7 +107,14 @@ void draw_wheel(Canvas& canvas, const WorldView& view, const Point& center, doub
     spokes[i] = {view.to_pixel(center - 0.82 * radius * d), view.to_pixel(center + 0.82 * radius * d)};
   }
   draw_pixel_segments(canvas, spokes, spoke);
-  draw_circle(canvas, view, center, 0.16 * radius, stroke.color, stroke);
+  // The hub covers where the spokes cross: filled and outlined in one
+  // colour, so one disc as wide as fill and outline together.
+  const Point hub = view.to_pixel(center);
+  cairo_t* cr = canvas.cr();
+  cairo_new_path(cr);
+  cairo_arc(cr, hub.x(), hub.y(), 0.16 * radius * view.zoom() + 0.5 * stroke.width * canvas.scale(), 0, 2 * M_PI);
+  set_source(canvas, stroke.color);
+  canvas.fill();
 }
 
 void draw_box(Canvas& canvas, const WorldView& view, const Point& low, const Point& high, const Color& fill,

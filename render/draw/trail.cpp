@@ -4,6 +4,7 @@
 #include <cmath>
 #include <span>
 
+#include "render/draw/simplified_polyline.hpp"
 #include "render/output/output_error.hpp"
 
 namespace vibra::render {
@@ -11,44 +12,6 @@ namespace vibra::render {
 namespace {
 /// How far a dropped point may lie from the segment drawn in its place, in pixels.
 constexpr double kTolerancePixels = 0.25;
-
-/// The points a polyline within `tolerance` of every one of `in` needs, in
-/// one pass: from the last kept point (the anchor), each later point narrows
-/// the wedge of directions whose ray passes within `tolerance` of it; the
-/// point that leaves the wedge, or turns back towards the anchor, ends the
-/// segment at the point before it.
-std::vector<Trail::Stamped> simplified(const std::vector<Trail::Stamped>& in, double tolerance) {
-  if (in.size() <= 2) return in;
-  std::vector<Trail::Stamped> out{in.front()};
-  size_t anchor = 0, last = 0;
-  Point direction = Point::Zero();
-  bool aimed = false;
-  double lo = 0, hi = 0, reach = 0;
-  auto narrow = [&](size_t i) {  // false: point i does not fit the current segment
-    const Point d = in[i].p - in[anchor].p;
-    const double length = d.norm();
-    if (length <= tolerance) return true;  // near the anchor: any segment from it passes near enough
-    const double half = std::asin(std::min(1.0, tolerance / length));
-    if (!aimed) {
-      direction = d / length, lo = -half, hi = half, reach = length, aimed = true;
-      return true;
-    }
-    const double angle = std::atan2(direction.x() * d.y() - direction.y() * d.x(), direction.dot(d));
-    if (angle < lo || angle > hi || length < reach - tolerance) return false;
-    lo = std::max(lo, angle - half), hi = std::min(hi, angle + half), reach = std::max(reach, length);
-    return true;
-  };
-  for (size_t i = 1; i < in.size(); ++i) {
-    if (!narrow(i)) {
-      out.push_back(in[last]);
-      anchor = last, aimed = false;
-      narrow(i);  // from the new anchor, the next point always fits
-    }
-    last = i;
-  }
-  out.push_back(in.back());
-  return out;
-}
 }  // namespace
 
 Trail::Trail(double spacing, size_t budget) : spacing_(spacing), budget_(std::max<size_t>(budget, 16)) {}
@@ -79,7 +42,9 @@ std::vector<Point> Trail::between(double from, double to) const {
 
 const std::vector<Trail::Stamped>& Trail::drawn_points(double zoom) const {
   if (drawn_version_ != version_ || drawn_zoom_ != zoom) {
-    drawn_ = simplified(points_, kTolerancePixels / zoom);
+    drawn_.clear();
+    for (size_t i : simplified_polyline(points_.size(), [&](size_t k) { return points_[k].p; }, kTolerancePixels / zoom))
+      drawn_.push_back(points_[i]);
     drawn_zoom_ = zoom, drawn_version_ = version_;
   }
   return drawn_;

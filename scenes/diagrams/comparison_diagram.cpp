@@ -48,6 +48,19 @@ void outline_ghost(render::Canvas& canvas, const std::vector<std::vector<render:
   cairo_stroke(cr);
   cairo_restore(cr);
 }
+
+/// Paints the source at `alpha` only inside `box` (device pixels, widened to
+/// whole ones): the ghosts' group is as large as the diagram's part, but
+/// they cover a fraction of it, and outside what they drew it is empty.
+void paint_within(cairo_t* cr, const Eigen::AlignedBox2d& box, double alpha) {
+  cairo_save(cr);
+  cairo_identity_matrix(cr);
+  const double x0 = std::floor(box.min().x()) - 1, y0 = std::floor(box.min().y()) - 1;
+  cairo_rectangle(cr, x0, y0, std::ceil(box.max().x()) + 1 - x0, std::ceil(box.max().y()) + 1 - y0);
+  cairo_clip(cr);
+  cairo_paint_with_alpha(cr, alpha);
+  cairo_restore(cr);
+}
 }  // namespace
 
 ComparisonDiagram::ComparisonDiagram(std::vector<Member> members, bool shared_exact, std::string exact_label)
@@ -100,6 +113,8 @@ void ComparisonDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
     // under the first run, which stays clear with its forces. Each ghost is
     // recorded on its own to find its bodies, then into the frame's record.
     render::DrawingRecord* frame = canvas.record();
+    Eigen::AlignedBox2d drawn;  // empty
+    Eigen::AlignedBox2d* outer = canvas.extent_into(&drawn);
     cairo_push_group(canvas.cr());
     for (size_t i = 1; i < members_.size(); ++i) {
       render::DrawingRecord ghost;
@@ -112,8 +127,11 @@ void ComparisonDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
         frame->labels.insert(frame->labels.end(), ghost.labels.begin(), ghost.labels.end());
       }
     }
+    canvas.extent_into(outer);
+    if (outer && !drawn.isEmpty()) outer->extend(drawn);
     cairo_pop_group_to_source(canvas.cr());
-    cairo_paint_with_alpha(canvas.cr(), kGhostAlpha);
+    if (!drawn.isEmpty()) paint_within(canvas.cr(), drawn, kGhostAlpha);
+    cairo_set_source_rgb(canvas.cr(), 0, 0, 0);  // lets the group go
   }
   draw_member(members_.front());
   for (size_t i = 1; i < members_.size(); ++i)
