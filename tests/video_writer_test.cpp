@@ -1,6 +1,7 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -14,6 +15,7 @@
 #include <iterator>
 #include <map>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -421,4 +423,39 @@ TEST_CASE("a write failure mid-video is reported and removes the temporary", "[v
   CHECK(message.find("size limit") != std::string::npos);
   CHECK(message.find('\n') == std::string::npos);
   CHECK(dir.empty());
+}
+
+TEST_CASE("the encoder's threads give way to the drawing thread, which keeps its priority", "[video]") {
+  // Drawing is the one thread that cannot be split: with the encoder's
+  // threads lower in priority, it runs whenever it has a frame to draw.
+  auto nice_of = [](const std::string& thread) {
+    std::ifstream stat("/proc/self/task/" + thread + "/stat");
+    std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+    // Fields after the command's closing parenthesis: state is field 3, nice field 19.
+    std::istringstream rest(text.substr(text.rfind(')') + 2));
+    std::string field;
+    for (int i = 3; i <= 19; ++i) rest >> field;
+    return std::stoi(field);
+  };
+  const std::string self = std::to_string(getpid());  // the main thread, which draws
+  const int before = nice_of(self);
+  REQUIRE(before < 19);  // else nothing could be lower
+  const fs::path file = fs::temp_directory_path() / ("vibra_priority_" + std::to_string(getpid()) + ".mp4");
+  {
+    Frames frames(320, 240);
+    VideoWriter writer(file, small());
+    writer.write(frames.draw(0), frames.stride);
+    int encoder_threads = 0;
+    for (const auto& task : fs::directory_iterator("/proc/self/task")) {
+      const std::string id = task.path().filename().string();
+      if (id == self) continue;
+      CHECK(nice_of(id) == std::min(19, before + 5));
+      ++encoder_threads;
+    }
+    CHECK(encoder_threads >= 1);  // at least the thread that feeds x264
+    CHECK(nice_of(self) == before);
+    writer.finish();
+  }
+  CHECK(nice_of(self) == before);
+  fs::remove(file);
 }

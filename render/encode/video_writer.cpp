@@ -14,6 +14,7 @@ extern "C" {
 #include <condition_variable>
 #include <cstring>
 #include <deque>
+#include <future>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -21,6 +22,7 @@ extern "C" {
 #include <thread>
 
 #include "render/encode/av_error.hpp"
+#include "render/encode/encoder_priority.hpp"
 #include "render/encode/huge_pages.hpp"
 #include "render/encode/yuv420_converter.hpp"
 #include "render/encode/yuva_converter.hpp"
@@ -492,7 +494,9 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
   }
   if (o.threads > 0) c->thread_count = o.threads;
   if (m.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  const EncoderPriority started;
   const int opened = avcodec_open2(c, encoder, &settings);
+  started.lower_started_since();
   av_dict_free(&settings);
   m.check(opened, std::string("opening the ") + codec.encoder + " encoder", false);
   m.check(avcodec_parameters_from_context(m.stream->codecpar, c), "setting up the stream", false);
@@ -531,7 +535,16 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
   av_dict_free(&header);
   m.check(written, "writing the header", true);
   m.next_pts = o.first_frame;
-  m.worker = std::thread([&m] { m.work(); });
+  // The worker lowers its own priority before the writer is ready, so the
+  // threads are as they will stay from the first write.
+  std::promise<void> lowered;
+  std::future<void> worker_ready = lowered.get_future();
+  m.worker = std::thread([&m, &lowered] {
+    EncoderPriority::lower_this_thread();
+    lowered.set_value();
+    m.work();
+  });
+  worker_ready.wait();
 }
 
 VideoWriter::~VideoWriter() = default;
