@@ -282,3 +282,27 @@ TEST_CASE("a frame under 360 pixels high is the 360-pixel picture made smaller, 
     CHECK(vibra::test::psnr(dir / "small.png", dir / "halved.png") > 21);
   }
 }
+
+TEST_CASE("no line is drawn thinner than a pixel, so a thumbnail's lines stay dark", "[legibility][render]") {
+  // At 320x180 a 2-pixel line of 720p is 0.7 of a pixel: antialiased, it
+  // would cover 70% of its row and come out grey. It is widened to a pixel.
+  Canvas canvas = Canvas::image(320, 180);
+  REQUIRE(canvas.scale() == 0.35);
+  canvas.clear(vibra::render::palette::paper);
+  DrawingRecord record;
+  canvas.record_into(&record);
+  cairo_t* cr = canvas.cr();
+  cairo_move_to(cr, 20, 90.5);  // along the middle of row 90
+  cairo_line_to(cr, 300, 90.5);
+  cairo_set_line_width(cr, 2 * canvas.scale());
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  canvas.stroke();
+  canvas.record_into(nullptr);
+  canvas.flush();
+  const auto green = [&](int x, int y) { return (reinterpret_cast<const std::uint32_t*>(canvas.data() + y * canvas.stride())[x] >> 8) & 255; };
+  CHECK(green(160, 90) == 0);  // the whole row covered: black, not grey
+  CHECK(green(160, 89) > 200);  // and no wider than the pixel
+  CHECK(green(160, 91) > 200);
+  REQUIRE(record.outline.shapes().size() == 1);
+  CHECK(record.outline.shapes()[0].half_width == Approx(0.5));  // the label placer sees what is drawn
+}

@@ -130,6 +130,9 @@ void Canvas::mark_path(double widen) {
 // A stroke reaches half the line width beyond the path with round joins and
 // caps; a whole width leaves room for square caps and short miters.
 void Canvas::stroke() {
+  // No line thinner than a pixel: below one, antialiasing only greys it, and
+  // a thumbnail's axes, hatching and coils faded to nothing.
+  if (const double width = cairo_get_line_width(cr()); width > 0 && width < 1) cairo_set_line_width(cr(), 1);
   if (record_) record_->outline.add_stroke(cr(), record_->kind);
   mark_path(cairo_get_line_width(cr()));
   cairo_stroke(cr());
