@@ -240,11 +240,6 @@ void write_still(const RenderRequest& r, const render::OutputTarget& target, Sce
   if (!r.quiet) std::fprintf(stderr, "vibra: wrote %s (t = %g)\n", one_line_message(target.shown(), 4096).c_str(), row[0]);
 }
 
-/// Labels keep their spots from frame to frame within chains of this many
-/// frames (half a second at 30 fps): a still or a segment replays at most
-/// this many frames before its own to draw what the whole render draws.
-constexpr long long kLabelChainFrames = 15;
-
 /// Draws, on a canvas thrown away, the frames of drawn frame `d`'s label chain
 /// before it, so that its labels keep the spots a whole render gives them.
 /// The scratch canvas tracks damage when the frames after it go to one that
@@ -256,6 +251,12 @@ void replay_label_chain(Scene& scene, const FrameClock& clock, long long d, int 
   if (start == d) return;
   render::Canvas scratch = render::Canvas::image(width, height);
   if (track_damage) scratch.track_damage();
+  // Nothing of these frames is seen: with everything clipped away Cairo
+  // skips the rasterizing, the costly part, while the outlines the labels
+  // are placed from are recorded from the paths as ever, and the layers the
+  // frames grow (their own canvases) grow alike.
+  cairo_rectangle(scratch.cr(), 0, 0, 0, 0);
+  cairo_clip(scratch.cr());
   for (long long j = start; j < d; ++j)
     if (!clock.repeats(j)) scene.draw(scratch, row_at(clock.time(j)));
 }
