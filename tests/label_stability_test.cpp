@@ -3,6 +3,7 @@
 // two spots as what surrounds it moves a pixel.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -36,57 +37,54 @@ PlacedLabel place(Canvas& canvas, bool blocked, LabelMemory* memory) {
   return vibra::render::place_labels(canvas, {request}, outline, {0, 0, 640, 360}, memory).front();
 }
 
-/// How often a label goes to another spot and comes back within two frames,
-/// over the first `frames` solver steps of a scene (one step a frame), its
-/// spots kept within chains of `chain` frames (1: kept never).
-int flickers(const std::string& scene_name, long long chain, long long frames) {
+/// Draws the first `frames` solver steps of a scene (one step a frame), its
+/// spots kept within chains of `chain` frames (1: kept never), and hands
+/// each frame's placed labels to `look`.
+void each_frame(const std::string& scene_name, long long chain, long long frames,
+                const std::function<void(const std::vector<PlacedLabel>&)>& look) {
   vibra::scenes::SceneConfig config = vibra::scenes::load_scene(scene_name);
   long long steps = 0;
   auto scene = vibra::test::scene_after_pre_pass(config, steps);
   auto runs = vibra::scenes::build_scene_runs(config);
   Canvas canvas = Canvas::image(config.width, config.height);
   std::vector<double> row(runs->width());
-  std::map<std::string, std::vector<PixelRect>> boxes;  // each label's last three boxes
-  int count = 0;
   for (long long frame = 0; frame < std::min(steps, frames); ++frame) {
     runs->row(row);
     scene->observe(row);
     scene->set_label_chain(frame / chain);
     scene->draw(canvas, row);
-    for (const PlacedLabel& p : scene->last_layout()->placed) {
+    look(scene->last_layout()->placed);
+    if (!runs->advance()) break;
+  }
+}
+
+Point centre(const PixelRect& b) { return Point(b.x + b.w / 2, b.y + b.h / 2); }
+
+/// How often a label goes to another spot and comes back within two frames.
+int flickers(const std::string& scene_name, long long chain, long long frames) {
+  std::map<std::string, std::vector<PixelRect>> boxes;  // each label's last three boxes
+  int count = 0;
+  each_frame(scene_name, chain, frames, [&](const std::vector<PlacedLabel>& placed) {
+    for (const PlacedLabel& p : placed) {
       auto& seen = boxes[p.request.markup];
       seen.push_back(p.box);
       if (seen.size() > 3) seen.erase(seen.begin());
       if (seen.size() < 3) continue;
-      auto centre = [](const PixelRect& b) { return Point(b.x + b.w / 2, b.y + b.h / 2); };
       const double away = (centre(seen[1]) - centre(seen[0])).norm(), back = (centre(seen[2]) - centre(seen[0])).norm();
       if (away > 12 && back < 0.25 * away) ++count;
     }
-    if (!runs->advance()) break;
-  }
+  });
   return count;
 }
 
-/// How often a label jumps (its box moves more than 12 pixels from one frame
-/// to the next while its anchor moves less than 3) over the first `frames`
-/// steps of a scene, its spots kept within chains of `chain` frames.
+/// How often a label jumps: its box moves more than 12 pixels from one frame
+/// to the next while its anchor moves less than 3.
 int jumps(const std::string& scene_name, long long chain, long long frames) {
-  vibra::scenes::SceneConfig config = vibra::scenes::load_scene(scene_name);
-  long long steps = 0;
-  auto scene = vibra::test::scene_after_pre_pass(config, steps);
-  auto runs = vibra::scenes::build_scene_runs(config);
-  Canvas canvas = Canvas::image(config.width, config.height);
-  std::vector<double> row(runs->width());
   std::map<std::string, std::pair<Point, Point>> last;  // each label's box centre and anchor
   int count = 0;
-  for (long long frame = 0; frame < std::min(steps, frames); ++frame) {
-    runs->row(row);
-    scene->observe(row);
-    scene->set_label_chain(frame / chain);
-    scene->draw(canvas, row);
+  each_frame(scene_name, chain, frames, [&](const std::vector<PlacedLabel>& placed) {
     std::map<std::string, std::pair<Point, Point>> now;
-    for (const PlacedLabel& p : scene->last_layout()->placed)
-      now[p.request.markup] = {Point(p.box.x + p.box.w / 2, p.box.y + p.box.h / 2), p.request.anchor};
+    for (const PlacedLabel& p : placed) now[p.request.markup] = {centre(p.box), p.request.anchor};
     for (const auto& [markup, at] : now) {
       const auto before = last.find(markup);
       if (before != last.end() && (at.first - before->second.first).norm() > 12 &&
@@ -94,8 +92,7 @@ int jumps(const std::string& scene_name, long long chain, long long frames) {
         ++count;
     }
     last = std::move(now);
-    if (!runs->advance()) break;
-  }
+  });
   return count;
 }
 }  // namespace
