@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "render/draw/reach_clip.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "render/labels/label_placer.hpp"
 
@@ -24,7 +25,7 @@ bool draw_force_arrow(Canvas& canvas, const WorldView& view, const ForceArrow& f
       // Shorter than its head: a small ring where the force acts, still
       // labelled (a ring, so the body under it keeps its colour).
       cairo_new_path(canvas.cr());
-      cairo_arc(canvas.cr(), from.x(), from.y(), 5 * scale, 0, 2 * M_PI);
+      add_arc(canvas.cr(), from, 5 * scale, 0, 2 * M_PI);
       cairo_set_source_rgba(canvas.cr(), f.color.r, f.color.g, f.color.b, f.color.a);
       cairo_set_line_width(canvas.cr(), 2.2 * scale);
       cairo_set_dash(canvas.cr(), nullptr, 0, 0);
@@ -65,10 +66,8 @@ void draw_dimension(Canvas& canvas, const WorldView& view, const Point& a, const
       draw_pixel_line(canvas, middle, base, thin);
       cairo_t* cr = canvas.cr();
       cairo_new_path(cr);
-      cairo_move_to(cr, end.x(), end.y());
-      cairo_line_to(cr, base.x() + 0.4 * head * cross.x(), base.y() + 0.4 * head * cross.y());
-      cairo_line_to(cr, base.x() - 0.4 * head * cross.x(), base.y() - 0.4 * head * cross.y());
-      cairo_close_path(cr);
+      const Point arrowhead[] = {end, base + 0.4 * head * cross, base - 0.4 * head * cross};
+      add_polygon(cr, arrowhead);
       cairo_set_source_rgba(cr, color.r, color.g, color.b, color.a);
       canvas.fill();
     }

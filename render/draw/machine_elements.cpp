@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/draw/reach_clip.hpp"
 #include "render/labels/drawing_record.hpp"
 
 namespace vibra::render {
@@ -112,7 +113,7 @@ void draw_wheel(Canvas& canvas, const WorldView& view, const Point& center, doub
   const Point hub = view.to_pixel(center);
   cairo_t* cr = canvas.cr();
   cairo_new_path(cr);
-  cairo_arc(cr, hub.x(), hub.y(), 0.16 * radius * view.zoom() + 0.5 * stroke.width * canvas.scale(), 0, 2 * M_PI);
+  add_arc(cr, hub, 0.16 * radius * view.zoom() + 0.5 * stroke.width * canvas.scale(), 0, 2 * M_PI);
   set_source(canvas, stroke.color);
   canvas.fill();
 }
@@ -123,7 +124,12 @@ void draw_box(Canvas& canvas, const WorldView& view, const Point& low, const Poi
   const Point a = view.to_pixel(Point(low.x(), high.y())), b = view.to_pixel(Point(high.x(), low.y()));
   cairo_t* cr = canvas.cr();
   cairo_new_path(cr);
-  cairo_rectangle(cr, a.x(), a.y(), b.x() - a.x(), b.y() - a.y());
+  if (within_reach(a) && within_reach(b)) {
+    cairo_rectangle(cr, a.x(), a.y(), b.x() - a.x(), b.y() - a.y());
+  } else {
+    const Point corners[] = {a, Point(b.x(), a.y()), b, Point(a.x(), b.y())};
+    add_polygon(cr, corners);
+  }
   set_source(canvas, fill);
   canvas.fill_preserve();
   cairo_set_source_rgba(cr, stroke.color.r, stroke.color.g, stroke.color.b, stroke.color.a);
@@ -145,12 +151,9 @@ void draw_hatched_surface(Canvas& canvas, const WorldView& view, const Point& a,
   cairo_t* cr = canvas.cr();
   cairo_save(cr);
   cairo_new_path(cr);
-  cairo_move_to(cr, pa.x(), pa.y());
-  cairo_line_to(cr, pb.x(), pb.y());
   const Point qb = pb + depth * out_pixels, qa = pa + depth * out_pixels;
-  cairo_line_to(cr, qb.x(), qb.y());
-  cairo_line_to(cr, qa.x(), qa.y());
-  cairo_close_path(cr);
+  const Point band[] = {pa, pb, qb, qa};
+  add_polygon(cr, band);
   cairo_clip(cr);
   // Short strokes slanting away from the surface, as on an engineering drawing.
   const Point slant = (depth * out_pixels + 0.8 * depth * along);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/draw/reach_clip.hpp"
 #include "render/labels/drawing_record.hpp"
 
 namespace vibra::render {
@@ -21,13 +22,10 @@ void apply(Canvas& canvas, const Stroke& s) {
   }
 }
 
-void move_to(cairo_t* cr, const Point& p) { cairo_move_to(cr, p.x(), p.y()); }
-void line_to(cairo_t* cr, const Point& p) { cairo_line_to(cr, p.x(), p.y()); }
-
 /// The axle a pendulum turns on.
 void draw_pin(Canvas& canvas, const Point& at, const Color& color) {
   cairo_new_path(canvas.cr());
-  cairo_arc(canvas.cr(), at.x(), at.y(), 4.5 * canvas.scale(), 0, 2 * M_PI);
+  add_arc(canvas.cr(), at, 4.5 * canvas.scale(), 0, 2 * M_PI);
   cairo_set_source_rgba(canvas.cr(), color.r, color.g, color.b, color.a);
   canvas.fill();
 }
@@ -35,23 +33,25 @@ void draw_pin(Canvas& canvas, const Point& at, const Color& color) {
 
 void draw_pixel_line(Canvas& canvas, const Point& a, const Point& b, const Stroke& s) {
   apply(canvas, s);
-  move_to(canvas.cr(), a);
-  line_to(canvas.cr(), b);
+  const Point ends[] = {a, b};
+  add_polyline(canvas.cr(), ends);
   canvas.stroke();
 }
 
 void draw_pixel_segments(Canvas& canvas, std::span<const std::pair<Point, Point>> segments, const Stroke& s) {
   if (segments.empty()) return;
   apply(canvas, s);
-  for (const auto& [a, b] : segments) move_to(canvas.cr(), a), line_to(canvas.cr(), b);
+  for (const auto& [a, b] : segments) {
+    const Point ends[] = {a, b};
+    add_polyline(canvas.cr(), ends);
+  }
   canvas.stroke();
 }
 
 void draw_pixel_polyline(Canvas& canvas, std::span<const Point> points, const Stroke& s) {
   if (points.size() < 2) return;
   apply(canvas, s);
-  move_to(canvas.cr(), points[0]);
-  for (size_t i = 1; i < points.size(); ++i) line_to(canvas.cr(), points[i]);
+  add_polyline(canvas.cr(), points);
   canvas.stroke();
 }
 
@@ -81,11 +81,8 @@ void draw_pixel_arrow(Canvas& canvas, const Point& a, const Point& b, const Stro
   // The shaft stops inside the head so its round cap does not poke out of the tip.
   draw_pixel_line(canvas, a, b - 0.8 * head_length * along, {s.color, s.width, s.dashed});
   cairo_t* cr = canvas.cr();
-  move_to(cr, b);
-  line_to(cr, base + half_width * across);
-  line_to(cr, base + 0.25 * head_length * along);
-  line_to(cr, base - half_width * across);
-  cairo_close_path(cr);
+  const Point head_outline[] = {b, base + half_width * across, base + 0.25 * head_length * along, base - half_width * across};
+  add_polygon(cr, head_outline);
   cairo_set_source_rgba(cr, s.color.r, s.color.g, s.color.b, s.color.a);
   canvas.fill();
 }
@@ -96,7 +93,7 @@ void draw_circle(Canvas& canvas, const WorldView& view, const Point& center, dou
   const Point c = view.to_pixel(center);
   cairo_t* cr = canvas.cr();
   cairo_new_path(cr);
-  cairo_arc(cr, c.x(), c.y(), radius * view.zoom(), 0, 2 * M_PI);
+  add_arc(cr, c, radius * view.zoom(), 0, 2 * M_PI);
   cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, fill.a);
   canvas.fill_preserve();
   apply(canvas, outline);
@@ -115,10 +112,7 @@ void draw_arc(Canvas& canvas, const WorldView& view, const Point& center, double
   apply(canvas, s);
   cairo_new_path(cr);
   // Pixel y points down, so world angles turn the other way.
-  if (a1 > a0)
-    cairo_arc_negative(cr, c.x(), c.y(), radius * view.zoom(), -a0, -a1);
-  else
-    cairo_arc(cr, c.x(), c.y(), radius * view.zoom(), -a0, -a1);
+  add_arc(cr, c, radius * view.zoom(), -a0, -a1, a1 > a0);
   canvas.stroke();
 }
 
