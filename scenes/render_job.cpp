@@ -364,7 +364,7 @@ void run_render(const RenderRequest& r) {
   const TimeMesh mesh = pre_pass->info().mesh;
   if (!std::isfinite(mesh.T)) throw UsageError("a render needs a finite end time: give T or periods");
   if (still && (*r.at < 0 || *r.at > mesh.T * (1 + 1e-12)))
-    throw UsageError("--at " + std::to_string(*r.at) + " is outside the run [0, " + std::to_string(mesh.T) +
+    throw UsageError("--at " + short_number(*r.at) + " is outside the run [0, " + short_number(mesh.T) +
                      "]: choose a time inside it, or a longer T");
 
   if (still) r.scene.pacing.check_inside(mesh.T);  // a still's pacing is checked, though it shows one time

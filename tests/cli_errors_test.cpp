@@ -94,7 +94,8 @@ TEST_CASE("render refuses bad input with one line and exit code 2", "[cli]") {
       {"render -o OUT.png", "add --at T"},
       {"render -o OUT.svg", "add --at T"},
       {"render --at 1 -o OUT.mp4", "one still"},
-      {"render --at 1e6 -o OUT.png", "outside the run"},
+      {"render --at 1e6 -o OUT.png", "--at 1e+06 is outside the run [0, 37.6991]"},  // %g, not 1000000.000000
+      {"render --at 1e308 -o OUT.png", "--at 1e308 must be a number -1e+15..1e+15"},   // a number, only too large
       {"render --at foo -o OUT.png", "--at foo is not a time: give a number or an expression"},
       {"render --at 1/0 -o OUT.png", "--at 1/0 is not a time"},
       {"render --at 'pi/' -o OUT.png", "--at pi/ is not a time"},

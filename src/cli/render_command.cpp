@@ -85,11 +85,13 @@ std::string scene_keys_help() {
 
 /// --at's time, read as --set values are: 3.2, pi/2, 2*pi.
 double still_time(const std::string& text) {
+  double time = 0;
   try {
-    return in_range("--at", evaluate_constant("--at", text), text);
+    time = evaluate_constant("--at", text);
   } catch (const UsageError&) {
     throw UsageError("--at " + quoted_value(text) + " is not a time: give a number or an expression, e.g. --at 3.2 or --at pi/2");
   }
+  return in_range("--at", time, text);  // a number, but too large: the range says so
 }
 
 void run(const RenderOptions& o) {
