@@ -2,6 +2,7 @@
 #include <cstdlib>
 #include <memory>
 #include <optional>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -85,12 +86,16 @@ std::string scene_keys_help() {
 
 /// --at's time, read as --set values are: 3.2, pi/2, 2*pi.
 double still_time(const std::string& text) {
+  const auto not_a_time = [&] {
+    return UsageError("--at " + quoted_value(text) + " is not a time: give a number or an expression, e.g. --at 3.2 or --at pi/2");
+  };
   double time = 0;
   try {
     time = evaluate_constant("--at", text);
   } catch (const UsageError&) {
-    throw UsageError("--at " + quoted_value(text) + " is not a time: give a number or an expression, e.g. --at 3.2 or --at pi/2");
+    throw not_a_time();
   }
+  if (!std::isfinite(time)) throw not_a_time();  // inf, 1/0
   return in_range("--at", time, text);  // a number, but too large: the range says so
 }
 
