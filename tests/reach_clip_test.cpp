@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "render/draw/canvas.hpp"
+#include "render/draw/machine_elements.hpp"
 #include "render/draw/reach_clip.hpp"
 #include "render/draw/shapes.hpp"
 
@@ -99,4 +100,18 @@ TEST_CASE("paths within reach are the plain calls, and points that are not numbe
   cairo_new_path(cr);
   vibra::render::add_polygon(cr, broken);
   CHECK(path_points(cr) == 5);  // the three numbers, closed (Cairo moves to the start after a close)
+}
+
+TEST_CASE("a spring scaled to a run of 1e200 keeps its coils: lengths are taken without squaring", "[render][reach]") {
+  // A run that reaches 1e200 is drawn in a world of that size, where a
+  // segment's squared length overflows: the spring's direction came out NaN.
+  const auto [along, across] = vibra::render::segment_axes(Point(0, 2e200), Point(3e200, 2e200));
+  CHECK(along.x() == 1);
+  CHECK(across.y() == 1);
+  vibra::render::SpringShape shape;
+  shape.width = 0.3e200, shape.lead = 0.2e200, shape.coils = 9;
+  const auto points = vibra::render::spring_points(Point(0, 2e200), Point(3e200, 2e200), shape);
+  REQUIRE(points.size() == 2 * 9 + 4);
+  for (const Point& p : points) CHECK((std::isfinite(p.x()) && std::isfinite(p.y())));
+  CHECK(points[2].y() == Approx(2.15e200));  // the first coil's peak, half the width above the axis
 }

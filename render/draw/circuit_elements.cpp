@@ -9,14 +9,6 @@
 
 namespace vibra::render {
 
-namespace {
-/// Unit vector along a->b and the one 90 degrees to its left.
-std::pair<Point, Point> axes(const Point& a, const Point& b) {
-  const Point along = (b - a).normalized();
-  return {along, Point(-along.y(), along.x())};
-}
-}  // namespace
-
 void draw_wire(Canvas& canvas, const WorldView& view, std::span<const Point> points, const Stroke& stroke) {
   OutlineKindScope outline_kind(canvas, OutlineKind::wire);
   for (size_t i = 1; i < points.size(); ++i) draw_line(canvas, view, points[i - 1], points[i], stroke);
@@ -32,7 +24,7 @@ void draw_resistor(Canvas& canvas, const WorldView& view, const Point& from, con
 
 void draw_inductor(Canvas& canvas, const WorldView& view, const Point& from, const Point& to, int loops,
                    const Stroke& stroke) {
-  const auto [along, across] = axes(from, to);
+  const auto [along, across] = segment_axes(from, to);
   const double r = 0.5 * (to - from).norm() / std::max(1, loops);
   const double start = std::atan2(along.y(), along.x());
   // Each loop is a half circle on the right of the wire (clockwise from -along to +along).
@@ -44,7 +36,7 @@ void draw_inductor(Canvas& canvas, const WorldView& view, const Point& from, con
 
 void draw_voltage_source(Canvas& canvas, const WorldView& view, const Point& from, const Point& to, double radius,
                          const Stroke& stroke, const Color& background) {
-  const auto [along, across] = axes(from, to);
+  const auto [along, across] = segment_axes(from, to);
   const Point center = 0.5 * (from + to);
   draw_line(canvas, view, from, center - radius * along, stroke);
   draw_line(canvas, view, center + radius * along, to, stroke);
@@ -58,7 +50,7 @@ void draw_voltage_source(Canvas& canvas, const WorldView& view, const Point& fro
 }
 
 CapacitorGeometry capacitor_geometry(const Point& from, const Point& to, double gap, double plate, double charge) {
-  const auto [along, across] = axes(from, to);
+  const auto [along, across] = segment_axes(from, to);
   const Point center = 0.5 * (from + to);
   CapacitorGeometry g;
   for (int i = 0; i < 2; ++i) {
@@ -74,7 +66,7 @@ CapacitorGeometry capacitor_geometry(const Point& from, const Point& to, double 
 
 void draw_capacitor(Canvas& canvas, const WorldView& view, const Point& from, const Point& to, double gap, double plate,
                     double charge, const Stroke& stroke, const Color& positive, const Color& negative) {
-  const auto [along, across] = axes(from, to);
+  const auto [along, across] = segment_axes(from, to);
   const CapacitorGeometry g = capacitor_geometry(from, to, gap, plate, charge);
   const Point center = 0.5 * (from + to);
   draw_line(canvas, view, from, center - 0.5 * gap * along, stroke);
@@ -99,7 +91,7 @@ void draw_capacitor(Canvas& canvas, const WorldView& view, const Point& from, co
 }
 
 CurrentArrow current_arrow(const Point& a, const Point& b, double offset, double length) {
-  const auto [along, across] = axes(a, b);
+  const auto [along, across] = segment_axes(a, b);
   const Point middle = 0.5 * (a + b) + offset * across;
   return {middle - 0.5 * length * along, middle + 0.5 * length * along};
 }

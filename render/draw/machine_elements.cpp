@@ -9,14 +9,6 @@
 namespace vibra::render {
 
 namespace {
-/// Unit vector along a -> b and across it (counter-clockwise); along = +x for a == b.
-std::pair<Point, Point> axes(const Point& a, const Point& b) {
-  const Point d = b - a;
-  const double n = d.norm();
-  const Point along = n > 1e-15 ? Point(d / n) : Point(1, 0);
-  return {along, Point(-along.y(), along.x())};
-}
-
 std::vector<Point> to_pixels(const WorldView& view, std::span<const Point> points) {
   std::vector<Point> out;
   out.reserve(points.size());
@@ -28,8 +20,8 @@ void set_source(Canvas& canvas, const Color& c) { cairo_set_source_rgba(canvas.c
 }  // namespace
 
 std::vector<Point> spring_points(const Point& from, const Point& to, const SpringShape& s) {
-  const auto [along, across] = axes(from, to);
-  const double length = (to - from).norm();
+  const auto [along, across] = segment_axes(from, to);
+  const double length = std::hypot(to.x() - from.x(), to.y() - from.y());
   const double lead = std::min(s.lead, 0.25 * length);
   const double coil_length = length - 2 * lead;
   const int zigs = 2 * std::max(1, s.coils);
@@ -60,7 +52,7 @@ void draw_spring(Canvas& canvas, const WorldView& view, const Point& from, const
 }
 
 DashpotGeometry dashpot_geometry(const Point& from, const Point& to, const DashpotShape& s) {
-  const auto [along, across] = axes(from, to);
+  const auto [along, across] = segment_axes(from, to);
   const double rest = s.rest_length, cylinder = s.cylinder * rest;
   // At rest the cylinder spans the middle of the distance and the piston
   // sits at its middle; both rods keep their rest lengths.
@@ -124,7 +116,7 @@ void draw_box(Canvas& canvas, const WorldView& view, const Point& low, const Poi
   const Point a = view.to_pixel(Point(low.x(), high.y())), b = view.to_pixel(Point(high.x(), low.y()));
   cairo_t* cr = canvas.cr();
   cairo_new_path(cr);
-  if (within_reach(a) && within_reach(b)) {
+  if (within_reach(a) && within_reach(b)) {  // Cairo's own box path: the bits every frame had before
     cairo_rectangle(cr, a.x(), a.y(), b.x() - a.x(), b.y() - a.y());
   } else {
     const Point corners[] = {a, Point(b.x(), a.y()), b, Point(a.x(), b.y())};
@@ -144,7 +136,7 @@ void draw_hatched_surface(Canvas& canvas, const WorldView& view, const Point& a,
   const Point pa = view.to_pixel(a), pb = view.to_pixel(b);
   const Point out_pixels = Point(outside.x(), -outside.y()).normalized();
   const double spacing = 12 * canvas.scale(), depth = 12 * canvas.scale();
-  const auto [along, across] = axes(pa, pb);
+  const auto [along, across] = segment_axes(pa, pb);
   const double length = (pb - pa).norm();
   Stroke hatch = s;
   hatch.width = 0.6 * s.width;

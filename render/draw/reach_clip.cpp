@@ -1,5 +1,6 @@
 #include "render/draw/reach_clip.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -52,9 +53,7 @@ std::vector<Point> clip_edge(const std::vector<Point>& in, int axis, double sign
 bool within_reach(const Point& p) { return std::abs(p.x()) <= kReach && std::abs(p.y()) <= kReach; }
 
 void add_polyline(cairo_t* cr, std::span<const Point> points) {
-  bool all_within = true;
-  for (const Point& p : points) all_within = all_within && within_reach(p);
-  if (all_within) {
+  if (std::all_of(points.begin(), points.end(), within_reach)) {
     for (size_t i = 0; i < points.size(); ++i)
       (i == 0 ? cairo_move_to : cairo_line_to)(cr, points[i].x(), points[i].y());
     return;
@@ -74,18 +73,20 @@ void add_polyline(cairo_t* cr, std::span<const Point> points) {
 }
 
 void add_polygon(cairo_t* cr, std::span<const Point> points) {
+  const auto emit = [cr](std::span<const Point> polygon) {
+    if (polygon.size() < 3) return;
+    cairo_move_to(cr, polygon[0].x(), polygon[0].y());
+    for (size_t i = 1; i < polygon.size(); ++i) cairo_line_to(cr, polygon[i].x(), polygon[i].y());
+    cairo_close_path(cr);
+  };
+  // The usual case, every frame's arrowheads and boxes: as given, nothing copied.
+  if (std::all_of(points.begin(), points.end(), within_reach)) return emit(points);
   std::vector<Point> polygon;
   for (const Point& p : points)
     if (std::isfinite(p.x()) && std::isfinite(p.y())) polygon.push_back(p);
-  bool all_within = true;
-  for (const Point& p : polygon) all_within = all_within && within_reach(p);
-  if (!all_within)
-    for (int axis : {0, 1})
-      for (double sign : {1.0, -1.0}) polygon = clip_edge(polygon, axis, sign);
-  if (polygon.size() < 3) return;
-  cairo_move_to(cr, polygon[0].x(), polygon[0].y());
-  for (size_t i = 1; i < polygon.size(); ++i) cairo_line_to(cr, polygon[i].x(), polygon[i].y());
-  cairo_close_path(cr);
+  for (int axis : {0, 1})
+    for (double sign : {1.0, -1.0}) polygon = clip_edge(polygon, axis, sign);
+  emit(polygon);
 }
 
 void add_arc(cairo_t* cr, const Point& c, double radius, double a0, double a1, bool negative) {

@@ -31,6 +31,13 @@ void draw_pin(Canvas& canvas, const Point& at, const Color& color) {
 }
 }  // namespace
 
+std::pair<Point, Point> segment_axes(const Point& a, const Point& b) {
+  const Point d = b - a;
+  const double n = std::hypot(d.x(), d.y());
+  const Point along = n > 1e-15 && std::isfinite(n) ? Point(d / n) : Point(1, 0);
+  return {along, Point(-along.y(), along.x())};
+}
+
 void draw_pixel_line(Canvas& canvas, const Point& a, const Point& b, const Stroke& s) {
   apply(canvas, s);
   const Point ends[] = {a, b};

@@ -35,6 +35,12 @@ void draw_ceiling(Canvas&, const WorldView&, const Point& center, double half_wi
 void draw_pivot_block(Canvas&, const WorldView&, const Point& center, double half_width, const Color& fill,
                       const Stroke&);
 
+/// The unit vector along a -> b and the one 90 degrees counter-clockwise
+/// from it; along = +x for a == b. The length is taken with hypot: a
+/// drawing scaled to a run of 1e200 has segments whose squared length
+/// overflows, and its springs and dashpots came out as nothing.
+std::pair<Point, Point> segment_axes(const Point& a, const Point& b);
+
 // Shapes in pixels, for plots.
 void draw_pixel_polyline(Canvas&, std::span<const Point> points, const Stroke&);
 void draw_pixel_line(Canvas&, const Point& a, const Point& b, const Stroke&);

@@ -7,17 +7,18 @@ namespace vibra::render {
 
 /// The encoder's threads yield to the drawing thread. On a machine with
 /// fewer cores than runnable threads (two cores: the drawing thread and
-/// x264's four), the scheduler shares the cores evenly, and the drawing
+/// x264's five), the scheduler shares the cores evenly, and the drawing
 /// thread, the one that cannot be split, runs at half speed while the
 /// encoder works ahead of it on frames already queued. With the encoder's
-/// threads one step of nice lower in priority, drawing runs whenever it has
-/// work and the encoder takes every cycle left over: when drawing is the
+/// threads five steps of nice lower in priority, drawing runs whenever it
+/// has work and the encoder takes every cycle left over: when drawing is the
 /// slower, frames come faster; when encoding is, drawing waits on the full
 /// queue as before and the encoder has the machine.
 ///
-/// Notes the threads that exist, then lower() lowers the priority of those
-/// started since (the encoder's, started by avcodec_open2). Lowering one's
-/// own priority needs no privilege; where it fails nothing changes.
+/// Notes the threads that exist; lower_started_since() then lowers the
+/// priority of those started since (the encoder's, started by
+/// avcodec_open2). Lowering one's own priority needs no privilege; where it
+/// fails nothing changes.
 class EncoderPriority {
  public:
   EncoderPriority();

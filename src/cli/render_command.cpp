@@ -1,8 +1,8 @@
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <optional>
-#include <cmath>
 #include <string>
 #include <vector>
 
