@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstring>
 #include <new>
 #include <string>
 
 #include "render/draw/label_cache.hpp"
+#include "render/draw/stroke_raster.hpp"
 #include "render/encode/huge_pages.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "render/output/output_error.hpp"
@@ -135,7 +137,7 @@ void Canvas::stroke() {
   if (const double width = cairo_get_line_width(cr()); width > 0 && width < 1) cairo_set_line_width(cr(), 1);
   if (record_) record_->outline.add_stroke(cr(), record_->kind);
   mark_path(cairo_get_line_width(cr()));
-  cairo_stroke(cr());
+  if (!raster_stroke(cr())) cairo_stroke(cr());
 }
 
 void Canvas::fill() {
@@ -168,6 +170,18 @@ WorldView::WorldView(const Eigen::AlignedBox2d& world, const PixelRect& pixels) 
   const Point c = world.center(), p = pixels.center();
   // x' = p.x + zoom (x - c.x), y' = p.y - zoom (y - c.y): y flips to point down.
   transform_.matrix() << zoom_, 0, p.x() - zoom_ * c.x(), 0, -zoom_, p.y() + zoom_ * c.y(), 0, 0, 1;
+}
+
+void clip_to_pixels(cairo_t* cr, const PixelRect& r) {
+  double x0 = r.x, y0 = r.y, x1 = r.x + r.w, y1 = r.y + r.h;
+  cairo_user_to_device(cr, &x0, &y0);
+  cairo_user_to_device(cr, &x1, &y1);
+  x0 = std::round(x0), y0 = std::round(y0), x1 = std::round(x1), y1 = std::round(y1);
+  cairo_device_to_user(cr, &x0, &y0);
+  cairo_device_to_user(cr, &x1, &y1);
+  cairo_new_path(cr);
+  cairo_rectangle(cr, x0, y0, x1 - x0, y1 - y0);
+  cairo_clip(cr);
 }
 
 }  // namespace vibra::render

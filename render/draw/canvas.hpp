@@ -123,6 +123,11 @@ class Canvas {
   Eigen::AlignedBox2d* extent_ = nullptr;
 };
 
+/// Intersects the clip with `r` rounded to whole device pixels. Cairo clips
+/// to such a rectangle without a mask, and the strokes inside it stay plain
+/// ones (see raster_stroke); within half a pixel of the rectangle given.
+void clip_to_pixels(cairo_t* cr, const PixelRect& r);
+
 /// Maps world coordinates (y up, equal aspect) into a pixel rectangle (y down),
 /// fitting a world box and centring it.
 class WorldView {

@@ -5,11 +5,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/draw/stroke_raster.hpp"
+
 namespace vibra::render {
 
 GrowingPolyline::GrowingPolyline(std::vector<Point> points, std::vector<int> ends)
     : points_(std::move(points)), length_(points_.size()), ends_(std::move(ends)) {
-  for (size_t i = 1; i < points_.size(); ++i) length_[i] = length_[i - 1] + (points_[i] - points_[i - 1]).norm();
+  // Measured as the stroke measures, so that a piece's dashes fall where the whole curve's do.
+  for (size_t i = 1; i < points_.size(); ++i)
+    length_[i] = length_[i - 1] + stroked_distance(points_[i - 1].x(), points_[i - 1].y(), points_[i].x(), points_[i].y());
 }
 
 int GrowingPolyline::end_of(int last_column) const {

@@ -190,8 +190,7 @@ void draw_legend(Canvas& canvas, const Placed& p, const std::vector<std::unique_
 void draw_series(Canvas& canvas, const Placed& p, const Series& series) {
   const SeriesStyle& st = series.style();
   cairo_save(canvas.cr());
-  cairo_rectangle(canvas.cr(), p.area.x, p.area.y, p.area.w, p.area.h);
-  cairo_clip(canvas.cr());
+  clip_to_pixels(canvas.cr(), p.area);
   // Stroked in pieces: Cairo's memory for one stroke grows with its length, and
   // a decimated run of many periods zigzags through every pixel column.
   constexpr size_t kPiece = 256;

@@ -126,8 +126,7 @@ void PlotPanel::draw_envelope_columns(Canvas& canvas, const ColumnEnvelope& enve
                                       const Stroke& s) const {
   auto points = envelope.polyline(first_column, last_column, [&](double x, double y) { return to_pixel(x, y); });
   cairo_save(canvas.cr());
-  cairo_rectangle(canvas.cr(), area_.x, area_.y, area_.w, area_.h);
-  cairo_clip(canvas.cr());
+  clip_to_pixels(canvas.cr(), area_);
   draw_pixel_polyline(canvas, points, s);
   cairo_restore(canvas.cr());
 }
@@ -146,8 +145,7 @@ void PlotPanel::draw_function(Canvas& canvas, const std::function<double(double)
     if (std::isfinite(y)) points.push_back(to_pixel(x, y));
   }
   cairo_save(canvas.cr());
-  cairo_rectangle(canvas.cr(), area_.x, area_.y, area_.w, area_.h);
-  cairo_clip(canvas.cr());
+  clip_to_pixels(canvas.cr(), area_);
   draw_pixel_polyline(canvas, points, s);
   cairo_restore(canvas.cr());
 }

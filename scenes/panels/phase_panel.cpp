@@ -62,8 +62,7 @@ void PhasePanel::draw(render::Canvas& canvas, double t, std::span<const double> 
   const render::PixelRect& area = panel_.area();
   cairo_t* cr = canvas.cr();
   cairo_save(cr);
-  cairo_rectangle(cr, area.x, area.y, area.w, area.h);
-  cairo_clip(cr);
+  render::clip_to_pixels(cr, area);
   // Butt ends: the polylines of two fade steps meet at a shared point, where
   // round ends would overlap into a darker dot.
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);

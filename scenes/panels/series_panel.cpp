@@ -125,8 +125,7 @@ void SeriesPanel::draw_static(render::Canvas& canvas, bool time_labels) const {
   draw_axes(canvas, time_labels);
   const render::PixelRect& area = panel_.area();
   cairo_save(canvas.cr());
-  cairo_rectangle(canvas.cr(), area.x, area.y, area.w, area.h);
-  cairo_clip(canvas.cr());
+  render::clip_to_pixels(canvas.cr(), area);
   // Backwards: the first curve (the measured one) on top of the references.
   for (size_t i = series_.size(); i-- > 0;)
     whole_curves()[i].draw_through(canvas, panel_.columns(), {series_[i].color.with_alpha(0.22), 2, series_[i].dashed});
@@ -150,8 +149,7 @@ void SeriesPanel::draw_progress(LayerGrowth& growth, double t) {
     if (const auto x = whole_curves()[i].last_x(to); x && !whole_curves()[i].complete_through(to))
       last_x = std::min(last_x, *x);
   cairo_save(layer.cr());
-  cairo_rectangle(layer.cr(), area.x, area.y, area.w, area.h);
-  cairo_clip(layer.cr());
+  render::clip_to_pixels(layer.cr(), area);
   if (growth.from_start) {
     settled_x_ = std::floor(area.x);
     // Backwards: the first curve (the measured one) on top of the references.
@@ -183,8 +181,7 @@ void SeriesPanel::draw(render::Canvas& canvas, double t, std::span<const double>
   if (mode_ == WindowMode::jumps && t < window_ * (1 - 1e-12)) return;  // no window completed yet
   const render::PixelRect& area = panel_.area();
   cairo_save(canvas.cr());
-  cairo_rectangle(canvas.cr(), area.x, area.y, area.w, area.h);
-  cairo_clip(canvas.cr());
+  render::clip_to_pixels(canvas.cr(), area);
   // jumps shows only completed windows; the others draw up to t.
   const double last_x = mode_ == WindowMode::jumps ? x1 : t;
   // Backwards: the first curve (the measured one) on top of the references.
