@@ -300,10 +300,16 @@ inline std::uint32_t div255(std::uint32_t x) {
 struct Coverage {
   std::vector<float> cells;
   std::vector<int> lo, hi;  ///< per row of the clip, the columns touched ([lo, hi], empty when lo > hi)
-  void reset(int width, int height) {
+  int first_row = INT_MAX, last_row = INT_MIN;  ///< the rows touched
+  /// Ready for a stroke in a clip of `width` x `height` (all untouched: the
+  /// last stroke put back what it touched, so a stroke costs what it covers).
+  void prepare(int width, int height) {
     if (cells.size() < std::size_t(width) * height) cells.assign(std::size_t(width) * height, 0.0f);
-    lo.assign(height, INT_MAX);
-    hi.assign(height, INT_MIN);
+    if (lo.size() < std::size_t(height)) lo.assign(height, INT_MAX), hi.assign(height, INT_MIN);
+  }
+  void touch(int r, int first, int last) {
+    lo[r] = std::min(lo[r], first), hi[r] = std::max(hi[r], last);
+    first_row = std::min(first_row, r), last_row = std::max(last_row, r);
   }
 };
 
@@ -340,8 +346,7 @@ void cover(const Piece& p, const Plan& plan, Coverage& coverage) {
     if (first > last) continue;
     const int r = row - plan.y0;
     float* cells = coverage.cells.data() + std::size_t(r) * width - plan.x0;
-    coverage.lo[r] = std::min(coverage.lo[r], first);
-    coverage.hi[r] = std::max(coverage.hi[r], last);
+    coverage.touch(r, first, last);
     // Along the segment and across it, from its start; each pixel's own
     // (not stepped column by column), so that a pixel's coverage is the same
     // whatever part of the row a clip lets the stroke touch.
@@ -373,7 +378,7 @@ void cover(const Piece& p, const Plan& plan, Coverage& coverage) {
 void blend(const Plan& plan, Coverage& coverage, cairo_surface_t* target) {
   unsigned char* data = cairo_image_surface_get_data(target);
   const int stride = cairo_image_surface_get_stride(target), width = plan.x1 - plan.x0;
-  for (int r = 0; r < plan.y1 - plan.y0; ++r) {
+  for (int r = coverage.first_row; r <= coverage.last_row; ++r) {
     if (coverage.lo[r] > coverage.hi[r]) continue;
     float* cells = coverage.cells.data() + std::size_t(r) * width - plan.x0;
     auto* row = reinterpret_cast<std::uint32_t*>(data + std::ptrdiff_t(r + plan.y0) * stride);
@@ -388,7 +393,9 @@ void blend(const Plan& plan, Coverage& coverage, cairo_surface_t* target) {
         out |= (div255(plan.premultiplied[c] * mask) + div255(((old >> (8 * c)) & 0xff) * keep)) << (8 * c);
       row[column] = out;
     }
+    coverage.lo[r] = INT_MAX, coverage.hi[r] = INT_MIN;
   }
+  coverage.first_row = INT_MAX, coverage.last_row = INT_MIN;
 }
 }  // namespace
 
@@ -404,7 +411,7 @@ bool raster_stroke(cairo_t* cr) {
   cairo_new_path(cr);
   if (plan.x1 <= plan.x0 || plan.y1 <= plan.y0 || plan.pieces.empty()) return true;
   thread_local Coverage coverage;
-  coverage.reset(plan.x1 - plan.x0, plan.y1 - plan.y0);
+  coverage.prepare(plan.x1 - plan.x0, plan.y1 - plan.y0);
   for (const Piece& p : plan.pieces) cover(p, plan, coverage);
   cairo_surface_flush(target);
   blend(plan, coverage, target);
