@@ -75,7 +75,8 @@ class Canvas {
   /// colour on an SVG or PDF page draws nothing: the page is already empty.
   void clear(Color);
 
-  /// Cairo's stroke and fills, noting first where they land (see Damage).
+  /// Stroke and fills, noting first where they land (see Damage). A plain
+  /// stroke on an image is drawn by raster_stroke, any other by Cairo.
   /// Every drawing of a frame goes through these or mark_drawn().
   void stroke();
   void fill();
