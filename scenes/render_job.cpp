@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <span>
 
@@ -310,7 +311,37 @@ FrameClock frame_clock_of(const SceneConfig& scene, const TimeMesh& mesh) {
   return FrameClock::paced(double(mesh.steps) * mesh.dt, scene.fps, video_rate_of(scene, mesh), scene.pacing);
 }
 
-void run_render(const RenderRequest& r) {
+/// Everything run_render works with between its checks and its frames.
+struct PreparedRender::State {
+  RenderRequest r;
+  bool done = false;  ///< nothing left to play: a still written, or the output already complete
+  bool page = false, stream = false;
+  render::OutputTarget target;
+  std::optional<Parameters> parameters;
+  TimeMesh mesh;
+  double speed = 0;
+  std::optional<FrameClock> clock;
+  render::FrameSegment segment;
+  std::string caption;
+  fs::path companions;
+  std::optional<render::TemporaryDirectory> staged;
+  std::optional<render::TemporaryFile> page_file;
+  Outputs outputs;
+  std::unique_ptr<Scene> scene;
+  std::optional<PagePlotCollector> page_plots;
+  std::optional<ComparisonPagePlots> comparison_plots;  ///< a comparison's page: a curve per member
+  std::optional<RunCsvFile> csv;
+  std::string csv_name;
+  std::unique_ptr<Trajectory> trajectory;
+  std::optional<HistoryFeed> history;
+  std::optional<render::Canvas> canvas;
+  std::span<const double> row_at(double t) { return history->row_at(t); }
+};
+
+PreparedRender::PreparedRender(const RenderRequest& request) : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.r = request;
+  const RenderRequest& r = s.r;
   const std::string ext = extension_of(r.output);
   const bool still = r.at.has_value();
   if (still && !std::isfinite(*r.at))
@@ -320,14 +351,14 @@ void run_render(const RenderRequest& r) {
     throw UsageError("--at renders one still: give -o FILE.png, FILE.svg or FILE.pdf");
   if (!still && (ext == ".svg" || ext == ".pdf"))
     throw UsageError("-o " + r.output + " is one picture: add --at T to choose its time");
-  const bool page = ext == ".html";
+  const bool page = s.page = ext == ".html";
   // A frame pattern or folder names frames; anything else one file or a stream.
   const bool frames = !still && !page && !render::is_video_path(r.output) && r.output != "-" &&
                       !r.output.empty() && render::is_frame_pattern(r.output);
-  render::OutputTarget target;  // frames: their names are checked one by one below
+  render::OutputTarget& target = s.target;  // frames: their names are checked one by one below
   target.named = r.output;
   if (!frames) target = render::resolve_output(r.output, still || page ? render::kNeedsAFile : "");
-  const bool stream = target.stream;
+  const bool stream = s.stream = target.stream;
   if (r.frames_player && !page) throw UsageError("--frames-player writes a page: give -o PLAYER.html");
   if (r.csv_every < 1) throw UsageError("--every must be at least 1: the page's CSV keeps every K-th step");
   if (r.csv_every != 1 && !page) throw UsageError("--every thins the CSV beside a page: give -o PAGE.html, or drop --every");
@@ -357,23 +388,22 @@ void run_render(const RenderRequest& r) {
 
   render::start_loading_fonts();  // overlaps the solver's pre-pass and the encoder's start
   // A comparison's runs go through the render as one trajectory of wide rows.
-  const Parameters parameters =
-      r.scene.compare.empty() ? model_parameters_of(r.scene)
-                              : comparison_base_of(r.scene, parse_comparison(r.scene.compare).key);
+  s.parameters.emplace(r.scene.compare.empty() ? model_parameters_of(r.scene)
+                                               : comparison_base_of(r.scene, parse_comparison(r.scene.compare).key));
   std::unique_ptr<Trajectory> pre_pass = build_scene_runs(r.scene);  // reads the run's files (a road)
-  const TimeMesh mesh = pre_pass->info().mesh;
+  const TimeMesh mesh = s.mesh = pre_pass->info().mesh;
   if (!std::isfinite(mesh.T)) throw UsageError("a render needs a finite end time: give T or periods");
   if (still && (*r.at < 0 || *r.at > mesh.T * (1 + 1e-12)))
     throw UsageError("--at " + short_number(*r.at) + " is outside the run [0, " + short_number(mesh.T) +
                      "]: choose a time inside it, or a longer T");
 
   if (still) r.scene.pacing.check_inside(mesh.T);  // a still's pacing is checked, though it shows one time
-  const double speed = steady_speed(r.scene, mesh);
-  const FrameClock clock = frame_clock_of(r.scene, mesh);
+  s.speed = steady_speed(r.scene, mesh);
+  const FrameClock& clock = s.clock.emplace(frame_clock_of(r.scene, mesh));
   const auto* runs = dynamic_cast<const ComparisonTrajectory*>(pre_pass.get());
-  const std::string caption =
-      runs ? comparison_caption(r.scene.model, runs->comparison()) : run_caption(r.scene.model, parameters, mesh);
-  render::FrameSegment segment{0, 1, clock.frames()};
+  const std::string caption = s.caption =
+      runs ? comparison_caption(r.scene.model, runs->comparison()) : run_caption(r.scene.model, *s.parameters, mesh);
+  render::FrameSegment& segment = s.segment = {0, 1, clock.frames()};
   if (r.segment) {
     segment = {r.segment->index, r.segment->count, clock.frames(), render_fingerprint(r, caption, clock.frames())};
     if (segment.frames() == 0)
@@ -384,7 +414,7 @@ void run_render(const RenderRequest& r) {
 
   // Every path the run will write, checked now that its inputs are known,
   // before any work: the inputs, companions and frame names.
-  const fs::path companions = page ? companion_folder(r.output) : fs::path();
+  const fs::path companions = s.companions = page ? companion_folder(r.output) : fs::path();
   if (!target.file.empty()) render::refuse_input_as_output(target.file);
   if (page) check_companion_folder(companions, fs::path(r.output).stem().string(), r.force);
   if (r.segment && render::is_video_path(r.output)) check_segment_file(r, segment.file_name(r.output), segment);
@@ -393,37 +423,34 @@ void run_render(const RenderRequest& r) {
     const std::string done =
         page || still ? r.output : r.segment && render::is_video_path(r.output) ? segment.file_name(r.output) : r.output;
     if (!r.quiet) std::fprintf(stderr, "vibra: %s is already complete: skipped\n", done.c_str());
+    s.done = true;
     return;
   }
   // A page's companions are made in a temporary folder, and take the place
   // of earlier ones only with the page, when the run is complete.
-  std::optional<render::TemporaryDirectory> staged;
-  std::optional<render::TemporaryFile> page_file;
   if (page) {
-    staged.emplace(companions.parent_path(), companions.filename().string());
-    page_file.emplace(target.file);
+    s.staged.emplace(companions.parent_path(), companions.filename().string());
+    s.page_file.emplace(target.file);
   }
-  const Outputs outputs = still ? Outputs{} : plan_outputs(r, segment, stream, staged ? staged->path() : fs::path());
+  s.outputs = still ? Outputs{} : plan_outputs(r, segment, stream, s.staged ? s.staged->path() : fs::path());
 
   SceneConfig drawn = r.scene;
   if (r.video.transparent) drawn.colors.background = drawn.colors.background.with_alpha(0);  // cleared, not painted
-  std::unique_ptr<Scene> scene = make_scene_for(drawn, *pre_pass, caption);
+  s.scene = make_scene_for(drawn, *pre_pass, caption);
+  Scene& scene = *s.scene;
 
   // Pre-pass: fixed view and plot ranges over the whole run, in constant
   // memory; for a page also its time series and its CSV.
-  std::optional<PagePlotCollector> page_plots;
-  std::optional<ComparisonPagePlots> comparison_plots;  // a comparison's page: a curve per member
-  std::optional<RunCsvFile> csv;
-  const std::string csv_name = fs::path(r.output).stem().string() + ".csv";
+  s.csv_name = fs::path(r.output).stem().string() + ".csv";
   if (page) {
-    if (runs) comparison_plots.emplace(*runs, r.scene.colors.bob);
-    else page_plots.emplace(pre_pass->info(), page_panel_names(pre_pass->info()), r.scene.name);
-    csv.emplace(staged->path() / csv_name, pre_pass->info().columns, r.csv_every);
+    if (runs) s.comparison_plots.emplace(*runs, r.scene.colors.bob);
+    else s.page_plots.emplace(pre_pass->info(), page_panel_names(pre_pass->info()), r.scene.name);
+    s.csv.emplace(s.staged->path() / s.csv_name, pre_pass->info().columns, r.csv_every);
   }
-  HistoryFeed(*pre_pass, *scene, scene->sample_interval()).record_all([&](std::span<const double> row) {
-    if (comparison_plots) comparison_plots->observe(*runs, row);
-    if (page_plots) page_plots->observe(*pre_pass, row);
-    if (page) csv->write(pre_pass->index(), pre_pass->done(), row);
+  HistoryFeed(*pre_pass, scene, scene.sample_interval()).record_all([&](std::span<const double> row) {
+    if (s.comparison_plots) s.comparison_plots->observe(*runs, row);
+    if (s.page_plots) s.page_plots->observe(*pre_pass, row);
+    if (page) s.csv->write(pre_pass->index(), pre_pass->done(), row);
   });
   pre_pass.reset();
   runs = nullptr;  // it was the pre-pass
@@ -431,39 +458,57 @@ void run_render(const RenderRequest& r) {
   // The render pass: the scene sees the history up to each frame's time
   // (moving plots, trails), and frames between steps interpolate the
   // solution (cubic Hermite).
-  std::unique_ptr<Trajectory> trajectory = build_scene_runs(r.scene);
-  HistoryFeed history(*trajectory, *scene, scene->sample_interval());
-  auto row_at = [&](double t) { return history.row_at(t); };
+  s.trajectory = build_scene_runs(r.scene);
+  s.history.emplace(*s.trajectory, scene, scene.sample_interval());
+  auto row_at = [&s](double t) { return s.row_at(t); };
   if (still) {
     // The frame that shows the still's time (or would), and its chain's frames before it.
     const long long k = clock.first_frame_from(*r.at);
     const long long d = k < clock.frames() && clock.time(k) == *r.at ? clock.drawn_frame(k) : k;
-    replay_label_chain(*scene, clock, d, r.scene.width, r.scene.height, false, row_at);
-    return write_still(r, target, *scene, row_at(*r.at));
+    replay_label_chain(scene, clock, d, r.scene.width, r.scene.height, false, row_at);
+    write_still(r, target, scene, row_at(*r.at));
+    s.done = true;
+    return;
   }
+  s.canvas.emplace(render::Canvas::image(r.scene.width, r.scene.height));
+  s.canvas->track_damage();  // frames redraw, and the encoder converts, only what changed
+}
 
-  std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name}, {"comment", render::markup_plain_text(caption)}};
+PreparedRender::~PreparedRender() = default;
+
+void PreparedRender::play() {
+  State& s = *state_;
+  if (s.done) return;
+  s.done = true;
+  const RenderRequest& r = s.r;
+  const FrameClock& clock = *s.clock;
+  const render::FrameSegment& segment = s.segment;
+  Scene& scene = *s.scene;
+  render::Canvas& canvas = *s.canvas;
+  const bool page = s.page;
+  auto row_at = [&s](double t) { return s.row_at(t); };
+
+  std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name},
+                                                 {"comment", render::markup_plain_text(s.caption)}};
   if (r.segment) metadata["description"] = segment.tag();  // what vibra concat checks
-  if (stream) render::send_standard_output_to(target);  // a pipe or device: written as -o - is
+  if (s.stream) render::send_standard_output_to(s.target);  // a pipe or device: written as -o - is
   std::unique_ptr<render::FrameSink> own_sink;
   if (!r.into) {
-    own_sink = render::make_frame_sinks(outputs.targets, r.scene.width, r.scene.height, r.scene.fps, clock.frames(),
+    own_sink = render::make_frame_sinks(s.outputs.targets, r.scene.width, r.scene.height, r.scene.fps, clock.frames(),
                                         r.video, metadata, segment.first());
     if (!r.quiet)
       for (const auto& note : own_sink->notes()) std::fprintf(stderr, "vibra: %s\n", note.c_str());
   }
   render::FrameSink* const sink = r.into ? r.into : own_sink.get();
-  render::Canvas canvas = render::Canvas::image(r.scene.width, r.scene.height);
-  canvas.track_damage();  // frames redraw, and the encoder converts, only what changed
   // A segment's earlier frames are not drawn, but the solver passes through
   // them (moving plots see every step) and the scene keeps up with them, so
   // its frames are the whole render's, byte for byte.
   const long long first_drawn = clock.drawn_frame(segment.first());
   for (long long k = 0; k < first_drawn - first_drawn % kLabelChainFrames; ++k) {
     if ((k & 0xff) == 0) render::throw_if_stop_requested();
-    scene->skip(canvas, row_at(clock.time(k)));
+    scene.skip(canvas, row_at(clock.time(k)));
   }
-  replay_label_chain(*scene, clock, first_drawn, r.scene.width, r.scene.height, true, row_at);
+  replay_label_chain(scene, clock, first_drawn, r.scene.width, r.scene.height, true, row_at);
   render::Progress progress(r.progress_label, segment.frames(), r.quiet);
   const render::Damage unchanged(r.scene.width, r.scene.height);
   for (long long k = segment.first(); k < segment.end(); ++k) {
@@ -474,8 +519,8 @@ void run_render(const RenderRequest& r) {
       continue;
     }
     canvas.begin_frame();
-    scene->set_label_chain((k == segment.first() ? first_drawn : k) / kLabelChainFrames);
-    scene->draw(canvas, row_at(clock.time(k)));
+    scene.set_label_chain((k == segment.first() ? first_drawn : k) / kLabelChainFrames);
+    scene.draw(canvas, row_at(clock.time(k)));
     canvas.flush();
     const render::Damage changed = canvas.changed();
     sink->write(canvas.data(), canvas.stride(), &changed);
@@ -484,16 +529,19 @@ void run_render(const RenderRequest& r) {
   if (own_sink) own_sink->finish();
   progress.finish(segment.frames());
   if (page) {
-    csv->commit();
-    render::write_text(*page_file, page_html(r, outputs, clock, page_facts(r, clock.frames(), parameters, mesh, speed),
-                                             comparison_plots ? comparison_plots->take_panels() : page_plots->take_panels(),
-                                             companions.filename().string() + "/" + csv_name));
-    staged->replace(companions);  // the earlier companions go only now, with the page's
-    page_file->commit();
+    s.csv->commit();
+    render::write_text(*s.page_file,
+                       page_html(r, s.outputs, clock, page_facts(r, clock.frames(), *s.parameters, s.mesh, s.speed),
+                                 s.comparison_plots ? s.comparison_plots->take_panels() : s.page_plots->take_panels(),
+                                 s.companions.filename().string() + "/" + s.csv_name));
+    s.staged->replace(s.companions);  // the earlier companions go only now, with the page's
+    s.page_file->commit();
   }
   if (!r.quiet && r.report_written)
     std::fprintf(stderr, "vibra: wrote %s\n",  // one line, a newline in a file name escaped
-                 one_line_message(page ? page_written(r, target, clock.frames()) : sink->description(), 4096).c_str());
+                 one_line_message(page ? page_written(r, s.target, clock.frames()) : sink->description(), 4096).c_str());
 }
+
+void run_render(const RenderRequest& r) { PreparedRender(r).play(); }
 
 }  // namespace vibra::scenes

@@ -1,5 +1,6 @@
 #pragma once
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +49,25 @@ struct RenderRequest {
 /// them nothing is left at the output paths, and earlier output there is as
 /// it was.
 void run_render(const RenderRequest&);
+
+/// A render made ready up to its first frame: checked, solved, its scene laid
+/// out and its canvas made (a still is written here, whole). run_render is
+/// PreparedRender(r).play(); a lecture prepares a shot on a helper thread
+/// while the card before it plays, so the encoder is not kept waiting.
+class PreparedRender {
+ public:
+  /// Throws as run_render does, with nothing written.
+  explicit PreparedRender(const RenderRequest&);
+  ~PreparedRender();
+  PreparedRender(const PreparedRender&) = delete;
+  PreparedRender& operator=(const PreparedRender&) = delete;
+  /// Draws and writes the frames (once; nothing for a still or a skipped render).
+  void play();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 /// Labels keep their spots from frame to frame within chains of this many
 /// frames (3 s at 30 fps): a still or a segment replays at most this many

@@ -471,6 +471,11 @@ VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
     // Lossless coding (qp 0) is High 4:4:4 Predictive's alone, even in 4:2:0.
     av_dict_set(&settings, "profile", lossless ? "high444" : "high", 0);
     av_dict_set(&settings, lossless ? "qp" : "crf", crf.c_str(), 0);
+    // One frame thread per core, not x264's own 1.5 per core: the drawing
+    // thread needs a share of the cores too, and on two cores the example
+    // lecture took 1637 ms with two threads against 1721 ms with x264's
+    // choice (nine alternating rounds); x264 alone is no slower either.
+    c->thread_count = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   } else if (codec_name == "vp9") {
     av_dict_set(&settings, lossless ? "lossless" : "crf", lossless ? "1" : crf.c_str(), 0);
     c->bit_rate = 0;  // with crf: constant quality

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <memory>
 #include <sstream>
 #include <vector>
@@ -172,25 +173,36 @@ void render_card(const Storyboard& board, const PlannedShot& p, render::FrameSin
   progress.finish(p.frames);
 }
 
-/// Renders one shot into `sink`, left open, starting on a keyframe (so that
-/// its chapter starts cleanly when shots share the sink); `output` names the
-/// kind of video.
-void render_shot_into(const Storyboard& board, const PlannedShot& p, render::FrameSink& sink, const fs::path& output,
-                      const LectureRequest& r) {
-  const std::string label = "shot " + std::to_string(p.shot->number) + "/" + std::to_string(board.shots.size()) +
-                            " " + one_line_message(p.shot->title, 40);
-  sink.start_keyframe();
-  if (p.shot->is_card) return render_card(board, p, sink, label, r.quiet);
+/// "shot 2/4 Drag takes energy out": what the progress bar calls a shot.
+std::string shot_label(const Storyboard& board, const PlannedShot& p) {
+  return "shot " + std::to_string(p.shot->number) + "/" + std::to_string(board.shots.size()) + " " +
+         one_line_message(p.shot->title, 40);
+}
+
+/// What render is asked for a scene shot played into `sink`; `output` names the kind of video.
+RenderRequest shot_request(const Storyboard& board, const PlannedShot& p, render::FrameSink& sink,
+                           const fs::path& output, const LectureRequest& r) {
   RenderRequest request;
   request.scene = p.scene;
   request.output = output.string();
   request.video = r.video;
   request.quiet = r.quiet;
-  request.progress_label = label;
+  request.progress_label = shot_label(board, p);
   request.report_written = false;
   request.command_line = r.command_line;
   request.into = &sink;
-  run_render(request);
+  return request;
+}
+
+/// Renders one shot into `sink`, left open, starting on a keyframe (so that
+/// its chapter starts cleanly when shots share the sink); `output` names the
+/// kind of video. A scene shot made ready before (`prepared`) is played as it is.
+void render_shot_into(const Storyboard& board, const PlannedShot& p, render::FrameSink& sink, const fs::path& output,
+                      const LectureRequest& r, std::unique_ptr<PreparedRender> prepared = nullptr) {
+  sink.start_keyframe();
+  if (p.shot->is_card) return render_card(board, p, sink, shot_label(board, p), r.quiet);
+  if (!prepared) prepared = std::make_unique<PreparedRender>(shot_request(board, p, sink, output, r));
+  prepared->play();
 }
 
 /// Renders one shot into `files` of its own, tagged as the shot's.
@@ -312,11 +324,19 @@ void run_lecture(const LectureRequest& r) {
     row.reset();
     for (std::size_t i = 0; i < kinds.size(); ++i) clip_files[i].push_back({row_files[i], row_frames});
   };
-  for (const PlannedShot* p : chosen) {
-    const fs::path kept = shot_file(r.output, p->shot->number, plan.size());
-    if (!page && description_of(kept) == p->tag) {
+  auto kept_file = [&](const PlannedShot& p) {
+    return !page && description_of(shot_file(r.output, p.shot->number, plan.size())) == p.tag;
+  };
+  // While a card plays (drawn once, then only encoded), the scene shot after
+  // it is solved and laid out on a helper thread, so the encoder does not
+  // wait for it at the cut. The helper draws nothing the card's thread draws.
+  std::future<std::unique_ptr<PreparedRender>> next_scene;
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    const PlannedShot* p = chosen[i];
+    std::unique_ptr<PreparedRender> prepared = next_scene.valid() ? next_scene.get() : nullptr;
+    if (kept_file(*p)) {
       end_row();
-      clip_files[0].push_back({kept, p->frames});
+      clip_files[0].push_back({shot_file(r.output, p->shot->number, plan.size()), p->frames});
       continue;
     }
     if (!row) {
@@ -326,7 +346,12 @@ void run_lecture(const LectureRequest& r) {
       row = sink_for(board, row_files, total_frames(chosen), r, "");
       row_frames = 0;
     }
-    render_shot_into(board, *p, *row, row_files.front(), r);
+    if (p->shot->is_card && i + 1 < chosen.size() && !chosen[i + 1]->shot->is_card && !kept_file(*chosen[i + 1]))
+      next_scene = std::async(std::launch::async,
+                              [request = shot_request(board, *chosen[i + 1], *row, row_files.front(), r)] {
+                                return std::make_unique<PreparedRender>(request);
+                              });
+    render_shot_into(board, *p, *row, row_files.front(), r, std::move(prepared));
     row_frames += p->frames;
   }
   end_row();
