@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "render/draw/stroke_raster.hpp"
 #include "render/labels/drawing_record.hpp"
 
 namespace vibra::scenes {
@@ -44,8 +45,9 @@ void outline_ghost(render::Canvas& canvas, const std::vector<std::vector<render:
   const double pattern[] = {dash, std::max<double>(1, n - 1) * dash};
   cairo_set_dash(cr, pattern, 2, -double(k) * dash);
   cairo_set_line_width(cr, 2.4 * scale);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);  // a box's corners too: the software stroke draws them
   cairo_set_source_rgba(cr, color.r, color.g, color.b, color.a);
-  cairo_stroke(cr);
+  if (!render::raster_stroke(cr)) cairo_stroke(cr);
   cairo_restore(cr);
 }
 
