@@ -54,7 +54,7 @@ struct Plan {
   std::vector<Piece> pieces;
   double half_width = 0;
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< the clip in target pixels, [x0, x1) x [y0, y1)
-  std::uint32_t premultiplied[4] = {};  ///< b, g, r, a in 0..255: ARGB32's channels from the lowest bits
+  std::uint32_t source = 0;  ///< the colour as an ARGB32 pixel, premultiplied
 };
 
 struct PathDeleter {
@@ -281,7 +281,7 @@ bool plan_stroke(cairo_t* cr, cairo_surface_t* target, Plan& plan) {
   const double a = std::clamp(alpha, 0.0, 1.0);
   const double channels[4] = {blue, green, red, 1.0};
   for (int c = 0; c < 4; ++c)
-    plan.premultiplied[c] = std::uint32_t(std::lround(std::clamp(channels[c], 0.0, 1.0) * a * 255));
+    plan.source |= std::uint32_t(std::lround(std::clamp(channels[c], 0.0, 1.0) * a * 255)) << (8 * c);
   return true;
 }
 
@@ -289,10 +289,14 @@ bool plan_stroke(cairo_t* cr, cairo_surface_t* target, Plan& plan) {
 int floor_within(double value, int lo, int hi) { return int(std::clamp(std::floor(value), double(lo), double(hi))); }
 int ceil_within(double value, int lo, int hi) { return int(std::clamp(std::ceil(value), double(lo), double(hi))); }
 
-/// x / 255 rounded, for x up to 255 * 255, as pixman divides.
-inline std::uint32_t div255(std::uint32_t x) {
-  x += 128;
-  return (x + (x >> 8)) >> 8;
+/// Each of the four 8-bit channels of `x` times a / 255, rounded as pixman
+/// rounds (two channels at a time, in the halves of a word).
+inline std::uint32_t times_alpha(std::uint32_t x, std::uint32_t a) {
+  std::uint32_t rb = (x & 0xff00ff) * a + 0x800080;
+  rb = ((rb + ((rb >> 8) & 0xff00ff)) >> 8) & 0xff00ff;
+  std::uint32_t ag = ((x >> 8) & 0xff00ff) * a + 0x800080;
+  ag = (ag + ((ag >> 8) & 0xff00ff)) & 0xff00ff00;
+  return rb | ag;
 }
 
 /// Coverage of the clip's pixels, kept zero between strokes: each stroke
@@ -325,24 +329,33 @@ void cover(const Piece& p, const Plan& plan, Coverage& coverage) {
   const double round_end = 1 / (24 * h);
   const double dx = p.b.x - p.a.x, dy = p.b.y - p.a.y, length = std::sqrt(dx * dx + dy * dy);
   const double ux = length > 0 ? dx / length : 1, uy = length > 0 ? dy / length : 0;
+  const bool plain = !p.cut_a && !p.cut_b && !p.start.up && !p.end.up;
   // Pixel centres (row + 0.5) within reach of the segment's rows; none when it is beyond the clip.
   const int row_first = ceil_within(std::min(p.a.y, p.b.y) - reach - 0.5, plan.y0, plan.y1);
   const int row_last = floor_within(std::max(p.a.y, p.b.y) + reach - 0.5, plan.y0 - 1, plan.y1 - 1);
+  const int box_first = ceil_within(std::min(p.a.x, p.b.x) - reach - 0.5, plan.x0, plan.x1);
+  const int box_last = floor_within(std::max(p.a.x, p.b.x) + reach - 0.5, plan.x0 - 1, plan.x1 - 1);
+  // A short piece (most of a curve's) covers most of its box: every pixel of
+  // it is tried; a long one only its stretch of each row.
+  const bool short_piece = length <= 4 * reach;
   for (int row = row_first; row <= row_last; ++row) {
     const double cy = row + 0.5;
-    // The part of the segment within `reach` of this row's centre line, widened by `reach`.
-    double t0 = 0, t1 = 1;
-    if (dy != 0) {
-      t0 = (cy - reach - p.a.y) / dy, t1 = (cy + reach - p.a.y) / dy;
-      if (t0 > t1) std::swap(t0, t1);
-      t0 = std::max(t0, 0.0), t1 = std::min(t1, 1.0);
-      if (t0 > t1) continue;
-    } else if (std::abs(cy - p.a.y) > reach) {
-      continue;
+    int first = box_first, last = box_last;
+    if (!short_piece) {
+      // The part of the segment within `reach` of this row's centre line, widened by `reach`.
+      double t0 = 0, t1 = 1;
+      if (dy != 0) {
+        t0 = (cy - reach - p.a.y) / dy, t1 = (cy + reach - p.a.y) / dy;
+        if (t0 > t1) std::swap(t0, t1);
+        t0 = std::max(t0, 0.0), t1 = std::min(t1, 1.0);
+        if (t0 > t1) continue;
+      } else if (std::abs(cy - p.a.y) > reach) {
+        continue;
+      }
+      const double xa = p.a.x + t0 * dx, xb = p.a.x + t1 * dx;
+      first = ceil_within(std::min(xa, xb) - reach - 0.5, plan.x0, plan.x1);
+      last = floor_within(std::max(xa, xb) + reach - 0.5, plan.x0 - 1, plan.x1 - 1);
     }
-    const double xa = p.a.x + t0 * dx, xb = p.a.x + t1 * dx;
-    const int first = ceil_within(std::min(xa, xb) - reach - 0.5, plan.x0, plan.x1);
-    const int last = floor_within(std::max(xa, xb) + reach - 0.5, plan.x0 - 1, plan.x1 - 1);
     if (first > last) continue;
     const int r = row - plan.y0;
     float* cells = coverage.cells.data() + std::size_t(r) * width - plan.x0;
@@ -351,6 +364,17 @@ void cover(const Piece& p, const Plan& plan, Coverage& coverage) {
     // (not stepped column by column), so that a pixel's coverage is the same
     // whatever part of the row a clip lets the stroke touch.
     const double py = cy - p.a.y;
+    if (plain) {  // round at both ends, nothing to cut: the common piece, without branches
+      for (int column = first; column <= last; ++column) {
+        const double px = column + 0.5 - p.a.x;
+        const double along = px * ux + py * uy, across = px * uy - py * ux;
+        const double beyond = std::max({0.0, -along, along - length});
+        const double distance =
+            beyond > 0 ? std::sqrt(beyond * beyond + across * across) + round_end : std::abs(across);
+        cells[column] = std::max(cells[column], float(std::clamp(h + 0.5 - distance, 0.0, 1.0)));
+      }
+      continue;
+    }
     auto fence_at = [&](const Fence& f, double px) {
       return f.up ? (px - f.at.x) * f.dir.x + (cy - f.at.y) * f.dir.y + 0.5 : 1e300;
     };
@@ -383,15 +407,13 @@ void blend(const Plan& plan, Coverage& coverage, cairo_surface_t* target) {
     float* cells = coverage.cells.data() + std::size_t(r) * width - plan.x0;
     auto* row = reinterpret_cast<std::uint32_t*>(data + std::ptrdiff_t(r + plan.y0) * stride);
     for (int column = coverage.lo[r]; column <= coverage.hi[r]; ++column) {
+      if (cells[column] == 0) continue;  // a gap between the stroke's parts in this row
       const std::uint32_t mask = std::uint32_t(cells[column] * 255 + 0.5f);
       cells[column] = 0;
       if (mask == 0) continue;
-      // Source IN mask OVER destination, channel by channel.
-      const std::uint32_t keep = 255 - div255(plan.premultiplied[3] * mask), old = row[column];
-      std::uint32_t out = 0;
-      for (int c = 0; c < 4; ++c)
-        out |= (div255(plan.premultiplied[c] * mask) + div255(((old >> (8 * c)) & 0xff) * keep)) << (8 * c);
-      row[column] = out;
+      // Source IN mask OVER destination.
+      const std::uint32_t source = times_alpha(plan.source, mask);
+      row[column] = source + times_alpha(row[column], 255 - (source >> 24));
     }
     coverage.lo[r] = INT_MAX, coverage.hi[r] = INT_MIN;
   }
