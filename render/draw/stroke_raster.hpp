@@ -5,10 +5,10 @@ namespace vibra::render {
 
 /// Strokes the current path of `cr` in software, and clears the path, when
 /// the stroke is a plain one on pixels: a solid source drawn OVER an image
-/// surface (the canvas or a group on it), no dashes, a transform that only
-/// shifts, a whole-pixel rectangular clip, and round joins (or joins that
-/// turn so little that their style makes no visible difference). Returns
-/// false, leaving everything as it was, for any other stroke: Cairo draws it.
+/// surface (the canvas or a group on it), a transform that only shifts, a
+/// whole-pixel rectangular clip, and round joins (or joins that turn so
+/// little that their style makes no visible difference). Returns false,
+/// leaving everything as it was, for any other stroke: Cairo draws it.
 ///
 /// Why: Cairo 1.16's antialiased rasterizer costs about 70 ns for each pixel
 /// a line covers and 1.7 us for each vertex of a polyline, and strokes were
@@ -18,7 +18,10 @@ namespace vibra::render {
 /// the largest coverage (so joins are round and no pixel is painted twice),
 /// and the coverage is blended as Cairo blends a mask: 8-bit, premultiplied.
 /// Line ends follow the cap: round, butt (cut square at the end point) or
-/// square (cut half a width beyond it).
+/// square (cut half a width beyond it). Dashes are Cairo's: the pattern
+/// starts afresh at each subpath, and a closed outline's last dash runs on
+/// into its first. A pixel's coverage depends only on the segments near it,
+/// never on the clip, so a curve stroked strip by strip is the whole curve.
 bool raster_stroke(cairo_t* cr);
 
 /// The length of a path's segment from (ax, ay) to (bx, by) as a stroke
