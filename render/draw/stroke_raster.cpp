@@ -141,6 +141,7 @@ bool add_subpath(std::vector<Piece>& pieces, std::vector<XY>& points, bool close
   // As Cairo steps through the pattern: a dash ends where less than its
   // fixed point's resolution of it remains, so a pattern that ends exactly at
   // the path's end starts its next dash there (a dot, with round caps).
+  // Unlike Cairo, the remainder is carried to the next dash.
   constexpr double kResolution = 1.0 / 256;
   std::size_t index = 0;
   bool on = true;
@@ -151,6 +152,11 @@ bool add_subpath(std::vector<Piece>& pieces, std::vector<XY>& points, bool close
     index = (index + 1) % style.dashes.size();
   }
   double remain = style.dashes[index] - offset;
+  while (remain < kResolution) {  // a dash that ends within the resolution of the start ends at it, as below
+    on = !on;
+    index = (index + 1) % style.dashes.size();
+    remain += style.dashes[index];
+  }
   // On a closed subpath the dash running through the start is held back:
   // the last dash, if it runs to the start, goes on into it.
   const bool hold_first = closed && on;
@@ -181,7 +187,10 @@ bool add_subpath(std::vector<Piece>& pieces, std::vector<XY>& points, bool close
       if (!on) run.push_back(q);             // a dash starts at q
       on = !on;
       index = (index + 1) % style.dashes.size();
-      remain = style.dashes[index];
+      // What was left of the dash ended early goes to the next one, so that
+      // the dashes stay where the path's length puts them: a part of the
+      // path, started with that length as its offset, dashes as the whole.
+      remain += style.dashes[index];
     }
   }
   const XY last_along = closed ? unit(points[n - 1], points[0]) : unit(points[n - 2], points[n - 1]);
