@@ -144,9 +144,17 @@ inline CommandResult read_then_close(const std::vector<std::string>& args, std::
 struct ScratchDirectory {
   std::filesystem::path path;
   ScratchDirectory() {
-    std::string name = (std::filesystem::temp_directory_path() / "vibra_test_XXXXXX").string();
-    if (!::mkdtemp(name.data())) throw std::runtime_error("cannot create a scratch directory in " + name);
-    path = name;
+    // Never a name holding a command-line placeholder (OUT, SEGS): the tests
+    // replace those in lines that hold this path (a name such as OUT4FH was).
+    for (;;) {
+      std::string name = (std::filesystem::temp_directory_path() / "vibra_test_XXXXXX").string();
+      if (!::mkdtemp(name.data())) throw std::runtime_error("cannot create a scratch directory in " + name);
+      path = name;
+      const std::string leaf = path.filename().string();
+      if (leaf.find("OUT") == std::string::npos && leaf.find("SEGS") == std::string::npos) return;
+      std::error_code ignored;
+      std::filesystem::remove(path, ignored);
+    }
   }
   ScratchDirectory(ScratchDirectory&& other) noexcept : path(std::move(other.path)) { other.path.clear(); }
   ScratchDirectory& operator=(ScratchDirectory&&) = delete;
