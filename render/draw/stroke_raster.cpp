@@ -35,8 +35,10 @@ struct Fence {
 /// fences keep the round ends (joins) of a piece near a cut end from
 /// bulging out past the cut, as Cairo's join (a wedge, not a disc) does not.
 struct Piece {
+  Piece(const XY& from, const XY& to, bool cut_from = false, bool cut_to = false)
+      : a(from), b(to), cut_a(cut_from), cut_b(cut_to) {}
   XY a, b;
-  bool cut_a = false, cut_b = false;
+  bool cut_a, cut_b;
   Fence start, end;
 };
 
@@ -97,8 +99,9 @@ bool add_run(std::vector<Piece>& pieces, const std::vector<XY>& run, bool closed
     }
   const bool cut = !closed && style.cap != CAIRO_LINE_CAP_ROUND;
   Fence start, end;
-  std::vector<double> from_start(n, 0.0);  // path length to each point
+  std::vector<double> from_start;  // with a cut end: path length to each point
   if (cut) {
+    from_start.assign(n, 0.0);
     // A square cap is a butt cap half a width further out.
     const double extend = style.cap == CAIRO_LINE_CAP_SQUARE ? h : 0;
     const XY u = unit(run[0], run[1]), v = unit(run[n - 2], run[n - 1]);
@@ -294,6 +297,11 @@ bool plan_stroke(cairo_t* cr, cairo_surface_t* target, Plan& plan) {
   return true;
 }
 
+/// Coverage in [0, 1] as an 8-bit mask. Rounding keeps order, so the mask of
+/// the largest coverage is the largest mask: pieces join by taking the
+/// larger mask, in a quarter of the memory floats would take.
+inline std::uint8_t mask_of(double coverage) { return static_cast<std::uint8_t>(float(coverage) * 255 + 0.5f); }
+
 /// `value` rounded down (up) to an int within [lo, hi]: far-off points stay in range.
 int floor_within(double value, int lo, int hi) { return int(std::clamp(std::floor(value), double(lo), double(hi))); }
 int ceil_within(double value, int lo, int hi) { return int(std::clamp(std::ceil(value), double(lo), double(hi))); }
@@ -311,13 +319,13 @@ inline std::uint32_t times_alpha(std::uint32_t x, std::uint32_t a) {
 /// Coverage of the clip's pixels, kept zero between strokes: each stroke
 /// clears what it touched.
 struct Coverage {
-  std::vector<float> cells;
+  std::vector<std::uint8_t> cells;  ///< coverage as the 8-bit mask it is blended with
   std::vector<int> lo, hi;  ///< per row of the clip, the columns touched ([lo, hi], empty when lo > hi)
   int first_row = INT_MAX, last_row = INT_MIN;  ///< the rows touched
   /// Ready for a stroke in a clip of `width` x `height` (all untouched: the
   /// last stroke put back what it touched, so a stroke costs what it covers).
   void prepare(int width, int height) {
-    if (cells.size() < std::size_t(width) * height) cells.assign(std::size_t(width) * height, 0.0f);
+    if (cells.size() < std::size_t(width) * height) cells.assign(std::size_t(width) * height, 0);
     if (lo.size() < std::size_t(height)) lo.assign(height, INT_MAX), hi.assign(height, INT_MIN);
   }
   void touch(int r, int first, int last) {
@@ -367,7 +375,7 @@ void cover(const Piece& p, const Plan& plan, Coverage& coverage) {
     }
     if (first > last) continue;
     const int r = row - plan.y0;
-    float* cells = coverage.cells.data() + std::size_t(r) * width - plan.x0;
+    std::uint8_t* cells = coverage.cells.data() + std::size_t(r) * width - plan.x0;
     coverage.touch(r, first, last);
     // Along the segment and across it, from its start; each pixel's own
     // (not stepped column by column), so that a pixel's coverage is the same
@@ -380,7 +388,7 @@ void cover(const Piece& p, const Plan& plan, Coverage& coverage) {
         const double beyond = std::max({0.0, -along, along - length});
         const double distance =
             beyond > 0 ? std::sqrt(beyond * beyond + across * across) + round_end : std::abs(across);
-        cells[column] = std::max(cells[column], float(std::clamp(h + 0.5 - distance, 0.0, 1.0)));
+        cells[column] = std::max(cells[column], mask_of(std::clamp(h + 0.5 - distance, 0.0, 1.0)));
       }
       continue;
     }
@@ -403,7 +411,7 @@ void cover(const Piece& p, const Plan& plan, Coverage& coverage) {
       if (p.cut_a && along < 0.5) end = std::min(end, along + 0.5);
       if (p.cut_b && along > length - 0.5) end = std::min(end, length - along + 0.5);
       const double value = std::clamp(h + 0.5 - distance, 0.0, 1.0) * std::clamp(end, 0.0, 1.0);
-      cells[column] = std::max(cells[column], float(value));
+      cells[column] = std::max(cells[column], mask_of(value));
     }
   }
 }
@@ -413,13 +421,12 @@ void blend(const Plan& plan, Coverage& coverage, cairo_surface_t* target) {
   const int stride = cairo_image_surface_get_stride(target), width = plan.x1 - plan.x0;
   for (int r = coverage.first_row; r <= coverage.last_row; ++r) {
     if (coverage.lo[r] > coverage.hi[r]) continue;
-    float* cells = coverage.cells.data() + std::size_t(r) * width - plan.x0;
+    std::uint8_t* cells = coverage.cells.data() + std::size_t(r) * width - plan.x0;
     auto* row = reinterpret_cast<std::uint32_t*>(data + std::ptrdiff_t(r + plan.y0) * stride);
     for (int column = coverage.lo[r]; column <= coverage.hi[r]; ++column) {
-      if (cells[column] == 0) continue;  // a gap between the stroke's parts in this row
-      const std::uint32_t mask = std::uint32_t(cells[column] * 255 + 0.5f);
+      const std::uint32_t mask = cells[column];
+      if (mask == 0) continue;  // a gap between the stroke's parts in this row
       cells[column] = 0;
-      if (mask == 0) continue;
       // Source IN mask OVER destination.
       const std::uint32_t source = times_alpha(plan.source, mask);
       row[column] = source + times_alpha(row[column], 255 - (source >> 24));

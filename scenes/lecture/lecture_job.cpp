@@ -324,9 +324,10 @@ void run_lecture(const LectureRequest& r) {
     row.reset();
     for (std::size_t i = 0; i < kinds.size(); ++i) clip_files[i].push_back({row_files[i], row_frames});
   };
-  auto kept_file = [&](const PlannedShot& p) {
-    return !page && description_of(shot_file(r.output, p.shot->number, plan.size())) == p.tag;
-  };
+  // Which shots a cluster left complete beside the output (read once: each is a file to open).
+  std::vector<bool> kept(chosen.size());
+  for (std::size_t i = 0; i < chosen.size(); ++i)
+    kept[i] = !page && description_of(shot_file(r.output, chosen[i]->shot->number, plan.size())) == chosen[i]->tag;
   // While a card plays (drawn once, then only encoded), the scene shot after
   // it is solved and laid out on a helper thread, so the encoder does not
   // wait for it at the cut. The helper draws nothing the card's thread draws.
@@ -334,7 +335,7 @@ void run_lecture(const LectureRequest& r) {
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     const PlannedShot* p = chosen[i];
     std::unique_ptr<PreparedRender> prepared = next_scene.valid() ? next_scene.get() : nullptr;
-    if (kept_file(*p)) {
+    if (kept[i]) {
       end_row();
       clip_files[0].push_back({shot_file(r.output, p->shot->number, plan.size()), p->frames});
       continue;
@@ -346,7 +347,7 @@ void run_lecture(const LectureRequest& r) {
       row = sink_for(board, row_files, total_frames(chosen), r, "");
       row_frames = 0;
     }
-    if (p->shot->is_card && i + 1 < chosen.size() && !chosen[i + 1]->shot->is_card && !kept_file(*chosen[i + 1]))
+    if (p->shot->is_card && i + 1 < chosen.size() && !chosen[i + 1]->shot->is_card && !kept[i + 1])
       next_scene = std::async(std::launch::async,
                               [request = shot_request(board, *chosen[i + 1], *row, row_files.front(), r)] {
                                 return std::make_unique<PreparedRender>(request);
