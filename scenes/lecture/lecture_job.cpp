@@ -330,7 +330,8 @@ void run_lecture(const LectureRequest& r) {
     kept[i] = !page && description_of(shot_file(r.output, chosen[i]->shot->number, plan.size())) == chosen[i]->tag;
   // While a card plays (drawn once, then only encoded), the scene shot after
   // it is solved and laid out on a helper thread, so the encoder does not
-  // wait for it at the cut. The helper draws nothing the card's thread draws.
+  // wait for it at the cut. Each thread draws on canvases of its own, with
+  // Pango's font map of its own thread.
   std::future<std::unique_ptr<PreparedRender>> next_scene;
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     const PlannedShot* p = chosen[i];
