@@ -94,6 +94,7 @@ QuantityPanelSpec comparison_panel(const std::string& name, const Comparison& co
     if (i == 0) {
       combined.label = member.label, combined.x_label = member.x_label;
       combined.least_span = member.least_span, combined.empty_note = member.empty_note;
+      combined.equal_scales = member.equal_scales;
     }
     for (SeriesSpec& c : member.curves) c.value = columns[i].reading(std::move(c.value)), c.label.clear();
     for (SeriesSpec& r : member.references) r.value = columns[i].reading(std::move(r.value)), r.label.clear();
@@ -116,7 +117,7 @@ std::unique_ptr<Scene> make_scene(const SceneConfig& config, const TrajectoryInf
   const SceneStyle style = style_of(config, info, caption);
   if (config.layout == Layout::plot) {
     if (config.panels.empty())
-      return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style,
+      return std::make_unique<PlotScene>(config.width, config.height, info, style,
                                          std::vector{main_quantity_panel(style, info.columns[1], info.exact, info.exact_label)});
     // --panels without a diagram: the chosen panels against time, one above another.
     std::vector<PanelSpec> stacked;
@@ -129,7 +130,7 @@ std::unique_ptr<Scene> make_scene(const SceneConfig& config, const TrajectoryInf
       for (auto& reference : q.references) panel.series.push_back(std::move(reference));
       stacked.push_back(std::move(panel));
     }
-    return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style, std::move(stacked));
+    return std::make_unique<PlotScene>(config.width, config.height, info, style, std::move(stacked));
   }
   const DiagramKind& kind = diagram_for(config);
   const Parameters parameters = model_parameters_of(config);
@@ -186,7 +187,7 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
     if (first.exact)
       legend.push_back({first.exact_label + (shared_exact ? "" : " (dashed)"),
                         shared_exact ? render::palette::ink : render::palette::faint, true});
-    return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style, std::vector{std::move(panel)},
+    return std::make_unique<PlotScene>(config.width, config.height, info, style, std::vector{std::move(panel)},
                                        std::move(legend));
   }
   if (config.layout == Layout::grid) {
@@ -197,7 +198,7 @@ std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const Co
       if (exact_of(i)) panel.series.push_back(exact_series(exact_of(i), factor, render::palette::ink));
       panels.push_back(std::move(panel));
     }
-    return std::make_unique<PlotScene>(config.width, config.height, info.mesh.T, style, std::move(panels));
+    return std::make_unique<PlotScene>(config.width, config.height, info, style, std::move(panels));
   }
 
   if (config.energy_bars)

@@ -7,8 +7,7 @@
 
 namespace vibra::scenes {
 
-/// The parts of a frame that never change (background, fixed axes, faint
-/// whole-run curves), drawn once into an image and painted under each raster
+/// The parts of a frame that never change (background, fixed axes), drawn once into an image and painted under each raster
 /// frame; vector canvases (SVG, PDF) get them drawn directly. What becomes
 /// permanent as time goes on (a curve drawn up to now) is added to the image
 /// by `grow(growth)`, one frame's worth at a time, instead of being stroked

@@ -85,11 +85,11 @@ void SystemScene::observe(std::span<const double> row) {
 void SystemScene::record_between(std::span<const double> row) {
   diagram_->record(row, world_);  // the frames show these states too
   if (notes_) notes_->record(row);
-  for (auto& panel : panels_) panel->record(row);
+  for (auto& panel : panels_) panel->record_between(row);
 }
 
 void SystemScene::observe_between(std::span<const double> row) {
-  for (auto& panel : panels_) panel->observe(row);
+  for (auto& panel : panels_) panel->observe_between(row);
 }
 
 double SystemScene::sample_interval() const {
@@ -156,7 +156,7 @@ void SystemScene::draw_static(render::Canvas& canvas) {
 
 void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   prepare();
-  background_.paint(canvas, progress_to(row[0]));
+  background_.paint(canvas, progress_to(row));
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i]->draw(canvas, row[0], row, i == time_labels_panel_);
   const std::optional<WorldBox> moving = diagram_->view_at(row);
   const render::WorldView view = moving ? render::WorldView(*moving, view_area_) : *view_;
@@ -202,7 +202,7 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
 
 void SystemScene::skip(const render::Canvas& canvas, std::span<const double> row) {
   prepare();
-  background_.skip(canvas, progress_to(row[0]));
+  background_.skip(canvas, progress_to(row));
 }
 
 void SystemScene::place_legend() {
@@ -243,9 +243,9 @@ render::Point SystemScene::legend_corner(double scale) const {
   return {diagram_area_.x + diagram_area_.w - 4 * scale, diagram_area_.y + 44 * scale};  // below the read-out
 }
 
-StaticLayer::Grow SystemScene::progress_to(double t) {
-  return [this, t](LayerGrowth& growth) {
-    for (auto& panel : panels_) panel->draw_progress(growth, t);
+StaticLayer::Grow SystemScene::progress_to(std::span<const double> row) {
+  return [this, now = std::vector<double>(row.begin(), row.end())](LayerGrowth& growth) {
+    for (auto& panel : panels_) panel->draw_progress(growth, now);
   };
 }
 

@@ -63,7 +63,7 @@ class SystemScene final : public Scene {
   void prepare();
   void draw_static(render::Canvas&);
   /// The curves drawn so far, for the layer under frame time t.
-  StaticLayer::Grow progress_to(double t);
+  StaticLayer::Grow progress_to(std::span<const double> row);
 
   int height_;
   SceneStyle style_;

@@ -1,8 +1,10 @@
-// Frames between solver steps: u is interpolated by quintic Hermite through
-// u, v and the acceleration at both ends, v by cubic Hermite through v and
-// the acceleration. Held here against exact solutions: the interpolant alone
-// (exact samples) converges at 6th order in u and 4th in v, and a trajectory's rows between steps agree with the exact
-// solution to its scheme's accuracy, for u and for v.
+// The Hermite interpolant an adaptive run without dense output of its own
+// (rkf45) and an impact's location use between steps: u by quintic Hermite
+// through u, v and the acceleration at both ends, v by cubic Hermite through
+// v and the acceleration. Held here against exact solutions: the interpolant
+// alone (exact samples) converges at 6th order in u and 4th in v. A
+// fixed-step run is drawn between its steps as straight lines instead
+// (discrete_curve_test.cpp).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
@@ -43,32 +45,4 @@ TEST_CASE("interpolation between steps converges at 6th order in u and 4th in v"
   const auto mid = vibra::hermite_between<1>(a, vibra::Vec<1>(-1.0), b, vibra::Vec<1>(-1.0), 0.3);
   CHECK(mid.u[0] == Approx(1 - 0.045).epsilon(1e-14));
   CHECK(mid.v[0] == Approx(-0.3).epsilon(1e-14));
-}
-
-TEST_CASE("rows between steps follow the exact solution in u and v at the scheme's order", "[interpolation]") {
-  // RK4 on u'' + u = 0: between steps the error is the scheme's (4th order),
-  // not the interpolant's; a wrong end's acceleration would make it 2nd.
-  auto error_between = [](int steps_per_period) {
-    auto run = vibra::test::trajectory(
-        "undamped", {"scheme=rk4", "steps_per_period=" + std::to_string(steps_per_period), "periods=2"});
-    const auto& exact = run->info().exact;
-    std::vector<double> row(run->width());
-    double eu = 0, ev = 0;
-    while (run->advance()) {
-      const double b = run->t(), a = b - run->info().mesh.dt;
-      for (double f : {0.25, 0.5, 0.8}) {
-        const double t = a + f * (b - a);
-        run->row_at(t, row);
-        eu = std::max(eu, std::abs(row[1] - exact(t)));
-        const double h = 1e-6;  // the exact velocity by a central difference of the exact u
-        ev = std::max(ev, std::abs(row[2] - (exact(t + h) - exact(t - h)) / (2 * h)));
-      }
-    }
-    return std::pair{eu, ev};
-  };
-  const auto [u1, v1] = error_between(20);
-  const auto [u2, v2] = error_between(40);
-  INFO("u: " << u1 << " -> " << u2 << ", v: " << v1 << " -> " << v2);
-  CHECK(std::log2(u1 / u2) == Approx(4).margin(0.4));
-  CHECK(std::log2(v1 / v2) == Approx(4).margin(0.4));
 }

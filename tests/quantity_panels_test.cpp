@@ -65,7 +65,10 @@ TEST_CASE("a column panel overlays the exact solution on the main quantity only"
   REQUIRE(phase.is_phase());
   const std::vector<double> row = {0.5, 0.25, -2};
   CHECK(phase.phase[0].x(row) == 0.25);
-  CHECK(phase.phase[0].y(row) == -2);
+  // v over w = 2 pi / P (P = 1 here), at one scale with u: the orbit a circle.
+  CHECK(phase.phase[0].y(row) == Approx(-2 / (2 * M_PI)).epsilon(1e-15));
+  CHECK(phase.equal_scales);
+  CHECK(phase.label == "<i>v</i> / <i>ω</i>");
 }
 
 TEST_CASE("the period panel steps at each crossing and holds the exact period dashed", "[panels]") {

@@ -56,8 +56,8 @@ TEST_CASE("the exact solution is drawn smooth over the whole run", "[plot]") {
   panel.draw_static(pristine, false);
   pristine.flush();
   scenes::LayerGrowth first(canvas, true, &pristine), second(canvas, false, &pristine);
-  panel.draw_progress(first, T / 2);
-  panel.draw_progress(second, T);  // in two pieces, as frames draw it
+  panel.draw_progress(first, std::vector<double>{T / 2, f(T / 2)});
+  panel.draw_progress(second, std::vector<double>{T, f(T)});  // in two pieces, as frames draw it
   canvas.flush();
   check_follows_function(canvas, panel.plot(), f, T);
 }

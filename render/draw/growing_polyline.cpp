@@ -1,3 +1,4 @@
+// Draws a whole-run curve up to an instant, whole or strip by strip, as one stroke would.
 #include "render/draw/growing_polyline.hpp"
 
 #include <cairo.h>
@@ -9,38 +10,45 @@
 
 namespace vibra::render {
 
-GrowingPolyline::GrowingPolyline(std::vector<Point> points, std::vector<int> ends)
-    : points_(std::move(points)), length_(points_.size()), ends_(std::move(ends)) {
+GrowingPolyline::GrowingPolyline(std::vector<Point> points) : points_(std::move(points)), length_(points_.size()) {
   // Measured as the stroke measures, so that a piece's dashes fall where the whole curve's do.
   for (size_t i = 1; i < points_.size(); ++i)
     length_[i] = length_[i - 1] + stroked_distance(points_[i - 1].x(), points_[i - 1].y(), points_[i].x(), points_[i].y());
 }
 
-int GrowingPolyline::end_of(int last_column) const {
-  if (ends_.empty() || last_column < 0) return 0;
-  return ends_[std::min<size_t>(last_column, ends_.size() - 1)];
+int GrowingPolyline::shown(double until_x) const {
+  return int(std::partition_point(points_.begin(), points_.end(), [&](const Point& p) { return p.x() <= until_x; }) -
+             points_.begin());
 }
 
-std::optional<double> GrowingPolyline::last_x(int last_column) const {
-  const int end = end_of(last_column);
+std::optional<double> GrowingPolyline::last_x(double until_x) const {
+  const int end = shown(until_x);
   if (end == 0) return std::nullopt;
   return points_[end - 1].x();
 }
 
-void GrowingPolyline::stroke_range(Canvas& canvas, int first, int end, const Stroke& s) const {
-  if (end - first < 2) return;
-  Stroke stroke = s;
-  stroke.dash_offset = length_[first];
+void GrowingPolyline::draw_range(Canvas& canvas, int first, int end, const std::optional<Point>& now,
+                                 const Stroke& s) const {
   std::vector<Point> part(points_.begin() + first, points_.begin() + end);
-  draw_pixel_polyline(canvas, part, stroke);
+  if (now && (part.empty() || now->x() > part.back().x())) part.push_back(*now);
+  if (part.size() >= 2) {
+    Stroke stroke = s;
+    stroke.dash_offset = length_[first];
+    // Round joins: a coarse run turns sharply at its mesh points, where a
+    // mitre would spike past the value the scheme computed.
+    cairo_set_line_join(canvas.cr(), CAIRO_LINE_JOIN_ROUND);
+    draw_pixel_polyline(canvas, part, stroke);
+  }
 }
 
-void GrowingPolyline::draw_through(Canvas& canvas, int last_column, const Stroke& s) const {
-  stroke_range(canvas, 0, end_of(last_column), s);
+void GrowingPolyline::draw_until(Canvas& canvas, double until_x, const std::optional<Point>& now,
+                                 const Stroke& s) const {
+  draw_range(canvas, 0, shown(until_x), now, s);
 }
 
-void GrowingPolyline::draw_piece(Canvas& canvas, double from_x, int last_column, const Stroke& s) const {
-  const int end = end_of(last_column);
+void GrowingPolyline::draw_piece_until(Canvas& canvas, double from_x, double until_x, const std::optional<Point>& now,
+                                       const Stroke& s) const {
+  const int end = shown(until_x);
   const double back = from_x - reach(s.width * canvas.scale());
   // Points run left to right (a curve against time): the piece starts at the
   // last point left of `back`, so the segment crossing it is in the path.
@@ -51,7 +59,7 @@ void GrowingPolyline::draw_piece(Canvas& canvas, double from_x, int last_column,
   cairo_save(cr);
   cairo_rectangle(cr, from_x, 0, canvas.width() - from_x, canvas.height());
   cairo_clip(cr);
-  stroke_range(canvas, first, end, s);
+  draw_range(canvas, first, end, now, s);
   cairo_restore(cr);
 }
 

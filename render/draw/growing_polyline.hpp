@@ -1,3 +1,4 @@
+// A curve against time known in full before it is shown, drawn up to an instant: whole on a still, in strips on a video's layer.
 #pragma once
 #include <optional>
 #include <vector>
@@ -8,10 +9,14 @@
 namespace vibra::render {
 
 /// A polyline known in full before any of it is shown (a whole run's curve,
-/// in pixels), shown up to a pixel column at a time: whole on a still, and on
-/// an animation's layer in pieces that come out as the whole stroke would, so
-/// that a frame is the still at its time however many samples one frame
-/// spans (none, one or thousands).
+/// in pixels, x never decreasing), shown up to an x (an instant) at a time:
+/// whole on a still, and on an animation's layer in pieces that come out as
+/// the whole stroke would, so that a frame is the still at its time however
+/// many samples one frame spans (none, one or thousands).
+///
+/// Shown up to x, the curve holds its points left of x or at it, and then
+/// runs on to where the curve is at that instant (the `now` point the caller
+/// gives, from the solution at that time), never to a point after it.
 ///
 /// A piece is stroked from far enough back that every segment touching its
 /// strip is in the path, with the dash phase the whole path has there, and
@@ -19,32 +24,32 @@ namespace vibra::render {
 class GrowingPolyline {
  public:
   GrowingPolyline() = default;
-  /// `points` in drawing order; `ends[c]`: how many of them belong to
-  /// columns 0..c (non-decreasing).
-  GrowingPolyline(std::vector<Point> points, std::vector<int> ends);
+  explicit GrowingPolyline(std::vector<Point> points);
 
   /// How far a stroke of `width` pixels can reach from its path: half the
   /// width, a miter join at Cairo's default limit (10), anti-aliasing.
   static double reach(double width) { return 6 * width + 3; }
 
-  /// Strokes every point through `last_column` as one path.
-  void draw_through(Canvas&, int last_column, const Stroke&) const;
-  /// Strokes the points through `last_column`, only where x >= `from_x`
-  /// (a whole pixel), as the whole path would be stroked there.
-  void draw_piece(Canvas&, double from_x, int last_column, const Stroke&) const;
-  /// The x of the last point through `last_column`, if any.
-  std::optional<double> last_x(int last_column) const;
-  /// Whether every point is through `last_column`: the curve has ended there
-  /// (a run that left the view), so nothing of it is still to come.
-  bool complete_through(int last_column) const { return end_of(last_column) == int(points_.size()); }
+  /// Strokes the curve up to `until_x` as one path.
+  void draw_until(Canvas&, double until_x, const std::optional<Point>& now, const Stroke&) const;
+  /// The same, only where x >= `from_x` (a whole pixel), as the whole curve
+  /// would be drawn there.
+  void draw_piece_until(Canvas&, double from_x, double until_x, const std::optional<Point>& now, const Stroke&) const;
+  /// The x of the last point at or left of `until_x`, if any: left of it
+  /// (less the stroke's reach) the curve shown up to `until_x` is final.
+  std::optional<double> last_x(double until_x) const;
+  /// Whether every point is at or left of `until_x`: the curve has ended
+  /// there (a run that left the view), so nothing of it is still to come.
+  bool complete_until(double until_x) const { return shown(until_x) == int(points_.size()); }
+  const std::vector<Point>& points() const { return points_; }
 
  private:
-  int end_of(int last_column) const;
-  void stroke_range(Canvas&, int first, int end, const Stroke&) const;
+  /// How many points lie at or left of `until_x`.
+  int shown(double until_x) const;
+  void draw_range(Canvas&, int first, int end, const std::optional<Point>& now, const Stroke&) const;
 
   std::vector<Point> points_;
   std::vector<double> length_;  ///< path length from the first point to each point, for the dash phase
-  std::vector<int> ends_;
 };
 
 }  // namespace vibra::render

@@ -68,6 +68,13 @@ void fill_pixel_rect(Canvas& canvas, const PixelRect& r, const Color& c) {
   canvas.fill();
 }
 
+void fill_pixel_disc(Canvas& canvas, const Point& center, double radius, const Color& c) {
+  cairo_new_path(canvas.cr());
+  cairo_arc(canvas.cr(), center.x(), center.y(), radius, 0, 2 * M_PI);
+  cairo_set_source_rgba(canvas.cr(), c.r, c.g, c.b, c.a);
+  canvas.fill();
+}
+
 void draw_line(Canvas& canvas, const WorldView& view, const Point& a, const Point& b, const Stroke& s) {
   draw_pixel_line(canvas, view.to_pixel(a), view.to_pixel(b), s);
 }

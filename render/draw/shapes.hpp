@@ -47,5 +47,7 @@ void draw_pixel_line(Canvas&, const Point& a, const Point& b, const Stroke&);
 /// Separate segments a-b in one stroke: one pass of Cairo (and of its clip) for hatching.
 void draw_pixel_segments(Canvas&, std::span<const std::pair<Point, Point>> segments, const Stroke&);
 void fill_pixel_rect(Canvas&, const PixelRect&, const Color&);
+/// A filled disc of `radius` pixels (a mesh point's mark on a curve).
+void fill_pixel_disc(Canvas&, const Point& center, double radius, const Color&);
 
 }  // namespace vibra::render

@@ -27,6 +27,8 @@ class PlotPanel {
   double x0() const { return x0_; }
   double x1() const { return x1_; }
   const PixelRect& area() const { return area_; }
+  /// The frame's size against 720p (Canvas::scale()).
+  double scale() const { return scale_; }
   Point to_pixel(double x, double y) const;
   /// Columns of the plot area, for a ColumnEnvelope.
   int columns() const { return static_cast<int>(area_.w); }

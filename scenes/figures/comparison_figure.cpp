@@ -38,10 +38,11 @@ void add_exact_curve(render::Series& series, const TrajectoryInfo& info, double 
 void add_exact_phase(render::Series& series, const TrajectoryInfo& info, double T) {
   const double period = info.exact_period > 0 ? info.exact_period : info.mesh.period;
   const double span = period > 0 ? std::min(T, period) : T, h = 1e-5 * span;
+  const double velocity_factor = phase_velocity_axis(info).factor;
   for (int i = 0; i <= 2000; ++i) {
     const double t = span * i / 2000;
     series.add(display_factor(info.columns[1]) * info.exact(t),
-               display_factor(info.columns[velocity_column(info)]) * (info.exact(t + h) - info.exact(t - h)) / (2 * h));
+               velocity_factor * (info.exact(t + h) - info.exact(t - h)) / (2 * h));
   }
 }
 }  // namespace
@@ -78,9 +79,11 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
     }
     const bool time_panel = name != "path" && name != "phase";
     const int x = name == "path" ? column_index(first, "x") : time_panel ? 0 : 1;
-    const int y = name == "path" ? column_index(first, "y") : name == "phase" ? velocity_column(first) : column_index(first, name);
-    render::PanelOptions options{quantity_markup(first.columns[y]), quantity_markup(first.columns[x]),
-                                 render::AxisScale::linear, render::AxisScale::linear, name == "path"};
+    const PhaseVelocityAxis phase = phase_velocity_axis(first);
+    const int y = name == "path" ? column_index(first, "y") : name == "phase" ? phase.column : column_index(first, name);
+    render::PanelOptions options{name == "phase" ? phase.label : quantity_markup(first.columns[y]),
+                                 quantity_markup(first.columns[x]), render::AxisScale::linear, render::AxisScale::linear,
+                                 name == "path" || (name == "phase" && phase.equal_scales)};
     if (time_panel) options.x_range = std::make_pair(0.0, T);
     const int p = figure.add_panel(options);
     const bool legend = p == 0;  // the colours are the same in every panel
@@ -88,7 +91,10 @@ render::Figure comparison_figure(Comparison& comparison, const std::vector<std::
       const render::SeriesStyle style{render::palette::series(m), 2.2};
       render::Series& s = time_panel ? figure.add_curve(p, legend ? member_markup(comparison, m) : "", style, 0, T)
                                      : figure.add_path(p, legend ? member_markup(comparison, m) : "", style);
-      feeds.push_back({m, p, &s, x, y, display_factor(first.columns[x]), display_factor(first.columns[y])});
+      // Each member's own w: comparing a model key, their periods differ.
+      const double fy = name == "phase" ? phase_velocity_axis(comparison.trajectory(m).info()).factor
+                                        : display_factor(first.columns[y]);
+      feeds.push_back({m, p, &s, x, y, display_factor(first.columns[x]), fy});
       if (legend) labelled[m].push_back(&s);
     }
     const bool main_quantity = name == first.columns[1] || name == "phase";

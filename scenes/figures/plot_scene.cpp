@@ -22,14 +22,14 @@ PanelSpec main_quantity_panel(const SceneStyle& style, const std::string& quanti
   return panel;
 }
 
-PlotScene::PlotScene(int width, int height, double t_end, SceneStyle style, std::vector<PanelSpec> panels,
+PlotScene::PlotScene(int width, int height, const TrajectoryInfo& info, SceneStyle style, std::vector<PanelSpec> panels,
                      std::vector<LegendEntry> legend)
     : style_(std::move(style)),
       heading_(style_.title, style_.equation, width, height),
       area_{0, heading_.height(), double(width), height - heading_.height()},
       legend_(std::move(legend), height),
       background_([this](render::Canvas& canvas) { draw_static(canvas); }) {
-  const double scale = render::scale_for_height(height);
+  const double scale = render::scale_for_height(height), t_end = info.mesh.T;
   const double top = area_.y + 44 * scale, bottom = 30 * scale;
   const double w = width - 10 * scale - legend_.width();
   const double h = (height - top - bottom) / std::max<size_t>(1, panels.size());
@@ -48,6 +48,7 @@ PlotScene::PlotScene(int width, int height, double t_end, SceneStyle style, std:
     panels_.emplace_back(render::PixelRect{0, top + i * h, w, h}, scale, std::move(panels[i].label),
                          std::move(panels[i].series), t_end, style_.window_mode, style_.window);
     panels_.back().set_least_span(panels[i].least_span);
+    panels_.back().mark_mesh_points(fixed_mesh_step(info));
     panels_.back().set_empty_note(std::move(panels[i].empty_note));
   }
 }
@@ -63,12 +64,12 @@ void PlotScene::observe(std::span<const double> row) {
 }
 
 void PlotScene::record_between(std::span<const double> row) {
-  for (auto& panel : panels_) panel.record(row);
+  for (auto& panel : panels_) panel.record_between(row);
   if (notes_) notes_->record(row);
 }
 
 void PlotScene::observe_between(std::span<const double> row) {
-  for (auto& panel : panels_) panel.observe(row);
+  for (auto& panel : panels_) panel.observe_between(row);
 }
 
 double PlotScene::sample_interval() const {
@@ -95,20 +96,20 @@ void PlotScene::draw_static(render::Canvas& canvas) {
                                              {15, style_.colors.wire.with_alpha(0.75)}, 1));
 }
 
-StaticLayer::Grow PlotScene::progress_to(double t) {
-  return [this, t](LayerGrowth& growth) {
-    for (auto& panel : panels_) panel.draw_progress(growth, t);
+StaticLayer::Grow PlotScene::progress_to(std::span<const double> row) {
+  return [this, now = std::vector<double>(row.begin(), row.end())](LayerGrowth& growth) {
+    for (auto& panel : panels_) panel.draw_progress(growth, now);
   };
 }
 
 void PlotScene::skip(const render::Canvas& canvas, std::span<const double> row) {
   prepare();
-  background_.skip(canvas, progress_to(row[0]));
+  background_.skip(canvas, progress_to(row));
 }
 
 void PlotScene::draw(render::Canvas& canvas, std::span<const double> row) {
   prepare();
-  background_.paint(canvas, progress_to(row[0]));
+  background_.paint(canvas, progress_to(row));
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i].draw(canvas, row[0], row, i + 1 == panels_.size());
   if (!legend_.empty()) legend_.draw(canvas, {area_.w - 4 * canvas.scale(), area_.y + 44 * canvas.scale()}, row[0]);
   // The read-out sits top right: the panel's y label is top left.

@@ -20,7 +20,9 @@ namespace vibra::scenes {
 /// gets a column of its own at the right.
 class PlotScene final : public Scene {
  public:
-  PlotScene(int width, int height, double t_end, SceneStyle, std::vector<PanelSpec>, std::vector<LegendEntry> = {});
+  /// Panels over the run's [0, T] (`info`), marking its mesh points where they are far apart.
+  PlotScene(int width, int height, const TrajectoryInfo& info, SceneStyle, std::vector<PanelSpec>,
+            std::vector<LegendEntry> = {});
 
   void record(std::span<const double> row) override;
   void observe(std::span<const double> row) override;
@@ -33,7 +35,7 @@ class PlotScene final : public Scene {
  private:
   void prepare();
   void draw_static(render::Canvas&);
-  StaticLayer::Grow progress_to(double t);
+  StaticLayer::Grow progress_to(std::span<const double> row);
 
   SceneStyle style_;
   FrameHeading heading_;

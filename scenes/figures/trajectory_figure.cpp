@@ -43,11 +43,13 @@ render::Figure trajectory_figure(Trajectory& trajectory, const std::vector<std::
       continue;
     }
     if (name == "path" || name == "phase") {
+      const PhaseVelocityAxis phase = phase_velocity_axis(info);
       const int x = name == "path" ? column_index(info, "x") : 1;
-      const int y = name == "path" ? column_index(info, "y") : velocity_column(info);
-      const int p = figure.add_panel({quantity_markup(info.columns[y]), quantity_markup(info.columns[x]),
-                                      render::AxisScale::linear, render::AxisScale::linear, name == "path"});
-      const double fx = display_factor(info.columns[x]), fy = display_factor(info.columns[y]);
+      const int y = name == "path" ? column_index(info, "y") : phase.column;
+      const int p = figure.add_panel({name == "path" ? quantity_markup(info.columns[y]) : phase.label,
+                                      quantity_markup(info.columns[x]), render::AxisScale::linear,
+                                      render::AxisScale::linear, name == "path" || phase.equal_scales});
+      const double fx = display_factor(info.columns[x]), fy = name == "path" ? display_factor(info.columns[y]) : phase.factor;
       feeds.push_back({&figure.add_path(p, "", {blue, 2}), x, y, fx, fy});
       starts.push_back({&figure.add_points(p, "start", {render::palette::vermillion, 0, false, true}), x, y, fx, fy});
       continue;

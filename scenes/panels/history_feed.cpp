@@ -9,8 +9,11 @@ namespace vibra::scenes {
 HistoryFeed::HistoryFeed(Trajectory& trajectory, Scene& scene, double interval)
     : trajectory_(trajectory),
       scene_(scene),
-      // At most a few million grid rows over the run, whatever the window asks.
-      interval_(std::isfinite(interval) && interval > 0
+      // Rows between samples only where they follow a curve (an adaptive
+      // scheme's dense output): a fixed-step run is its mesh values joined by
+      // straight lines, which its samples alone draw. At most a few million
+      // grid rows over the run, whatever the window asks.
+      interval_(trajectory.bends_between_samples() && std::isfinite(interval) && interval > 0
                     ? std::max(interval, trajectory.info().mesh.T / 4e6)
                     : 0),
       previous_t_(trajectory.t()),

@@ -8,9 +8,14 @@
 namespace vibra::scenes {
 
 /// Feeds a scene a trajectory's history in time order: every solver step
-/// and, where steps are coarser than the scene's curves resolve
-/// (Scene::sample_interval), rows interpolated between them on one grid of
-/// times fixed for the whole run. Curves, markers and the diagram then show
+/// and, for a run whose rows between steps leave the straight line between
+/// them (an adaptive scheme's dense output, an impact inside a step:
+/// Trajectory::bends_between_samples) where steps are
+/// coarser than the scene's curves resolve (Scene::sample_interval), rows
+/// interpolated between them on one grid of times fixed for the whole run.
+/// A fixed-step run gets its mesh rows alone: drawn joined by straight lines,
+/// they are what the scheme computed, and sums and panels of energy, error
+/// and period see mesh values only. Curves, markers and the diagram then show
 /// one interpolation of the same samples, and what a frame shows does not
 /// depend on how many steps fall in it.
 ///

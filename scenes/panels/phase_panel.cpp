@@ -46,8 +46,17 @@ void PhasePanel::finish_recording() {
   if (x_lo_ > x_hi_) x_lo_ = -1, x_hi_ = 1, y_lo_ = -1, y_hi_ = 1;
   if (x_hi_ - x_lo_ < 1e-12 * std::max(1.0, std::abs(x_lo_))) x_lo_ -= 1e-3, x_hi_ += 1e-3;
   const double pad = 0.05 * (x_hi_ - x_lo_);
-  panel_.set_x_range(x_lo_ - pad, x_hi_ + pad);
-  panel_.set_y_range(y_lo_, y_hi_);
+  double x0 = x_lo_ - pad, x1 = x_hi_ + pad, y0 = y_lo_, y1 = y_hi_;
+  if (equal_scales_) {
+    // The larger of the two units per pixel for both, each range widened about its middle.
+    const render::PixelRect& area = panel_.area();
+    const double per_pixel = std::max((x1 - x0) / area.w, (y1 - y0) / area.h);
+    const double xm = 0.5 * (x0 + x1), ym = 0.5 * (y0 + y1);
+    x0 = xm - 0.5 * per_pixel * area.w, x1 = xm + 0.5 * per_pixel * area.w;
+    y0 = ym - 0.5 * per_pixel * area.h, y1 = ym + 0.5 * per_pixel * area.h;
+  }
+  panel_.set_x_range(x0, x1);
+  panel_.set_y_range(y0, y1);
 }
 
 void PhasePanel::draw_static(render::Canvas& canvas, bool) const {

@@ -32,6 +32,9 @@ class PhasePanel final : public ScenePanel {
   void record(std::span<const double> row) override;
   void observe(std::span<const double> row) override;
   void finish_recording() override;
+  /// Both axes get the same pixels per unit (set before finish_recording):
+  /// a circle in the data is a circle on screen.
+  void keep_equal_scales() { equal_scales_ = true; }
   bool against_time() const override { return false; }
   void draw_static(render::Canvas&, bool time_labels) const override;
   void draw(render::Canvas&, double t, std::span<const double> row, bool time_labels) const override;
@@ -54,6 +57,7 @@ class PhasePanel final : public ScenePanel {
   double trail_;
   std::vector<std::deque<TrailPoint>> trails_;
   double x_lo_ = 1e300, x_hi_ = -1e300, y_lo_ = 1e300, y_hi_ = -1e300;
+  bool equal_scales_ = false;
 };
 
 }  // namespace vibra::scenes

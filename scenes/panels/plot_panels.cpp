@@ -35,6 +35,16 @@ std::string quantity_symbol(const std::string& column) {
   return column == "theta" ? "<i>θ</i>" : "<i>" + column + "</i>";
 }
 
+PhaseVelocityAxis phase_velocity_axis(const TrajectoryInfo& info) {
+  const int v = velocity_column(info);
+  const std::string& main = info.columns[1], &velocity = info.columns[v];
+  if (!(info.mesh.period > 0)) return {v, display_factor(velocity), quantity_markup(velocity), false};
+  const double w = 2 * M_PI / info.mesh.period;
+  if (main == "theta") return {v, display_factor(main) / w, "<i>θ</i>′ / <i>ω</i><sub>0</sub> (°)", true};
+  const std::string symbol = velocity == "v" ? "<i>v</i>" : quantity_markup(velocity);
+  return {v, display_factor(main) / w, symbol + " / <i>ω</i>", true};
+}
+
 std::vector<std::string> plot_panel_names(const TrajectoryInfo& info) {
   std::vector<std::string> names(info.columns.begin() + 1, info.columns.end());
   names.push_back("exact");

@@ -23,6 +23,19 @@ std::string quantity_markup(const std::string& column);
 /// A column's symbol alone, in italics: "<i>θ</i>", "<i>u</i>".
 std::string quantity_symbol(const std::string& column);
 
+/// The phase plane's vertical axis for a run. Where the model has a
+/// small-oscillation period P, the velocity over w = 2 pi / P in the main
+/// quantity's own unit, drawn at one scale with it: an undamped oscillator's
+/// exact orbit u^2 + (v/w)^2 = U^2 is then the circle it is (the pendulum's
+/// w0 = sqrt(g/L), labelled θ′/ω₀). Without a period, the velocity column as it is.
+struct PhaseVelocityAxis {
+  int column;            ///< the velocity column (velocity_column)
+  double factor;         ///< what the column is multiplied by on screen
+  std::string label;     ///< Pango markup
+  bool equal_scales;     ///< draw both axes at one scale
+};
+PhaseVelocityAxis phase_velocity_axis(const TrajectoryInfo&);
+
 /// The panels `vibra plot` can draw for a run: every column but t (against
 /// t), `exact` (the exact solution over the main quantity's panel), `phase`
 /// (the main quantity against its velocity) and, for models with x and y

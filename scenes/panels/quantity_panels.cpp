@@ -35,7 +35,9 @@ SeriesSpec energy_curve(const TrajectoryInfo& info, render::Color color, const s
 
 SeriesSpec period_curve(const TrajectoryInfo& info, render::Color color, const std::string& label) {
   auto track = std::make_shared<PeriodTrack>(1, velocity_column(info));
-  return {label, color, [track](std::span<const double> r) { return track->at(r); }};
+  SeriesSpec curve{label, color, [track](std::span<const double> r) { return track->at(r); }};
+  curve.mesh_values = false;  // a running measure, held between the crossings it is measured at
+  return curve;
 }
 
 /// The period the measured ones are held against, named by its formula: the
@@ -47,7 +49,9 @@ std::optional<SeriesSpec> period_reference(const TrajectoryInfo& info, render::C
   if (!(P > 0)) return std::nullopt;
   const std::string name = exact ? (info.exact_period_label.empty() ? "exact period" : info.exact_period_label)
                                  : info.small_period_label;
-  return SeriesSpec{name, color, [P](std::span<const double>) { return P; }, true};
+  SeriesSpec line{name, color, [P](std::span<const double>) { return P; }, true};
+  line.mesh_values = false;
+  return line;
 }
 }  // namespace
 
@@ -66,12 +70,12 @@ QuantityPanelSpec quantity_panel(const std::string& name, const TrajectoryInfo& 
   const double f = display_factor(main);
   QuantityPanelSpec spec;
   if (name == "phase") {
-    const int v = velocity_column(info);
-    spec.label = quantity_markup(info.columns[v]);
+    const PhaseVelocityAxis axis = phase_velocity_axis(info);
     spec.x_label = quantity_markup(main);
-    const double fv = display_factor(info.columns[v]);
+    spec.label = axis.label;
+    spec.equal_scales = axis.equal_scales;
     spec.phase.push_back({curve_label, color, [f](std::span<const double> r) { return f * r[1]; },
-                          [v, fv](std::span<const double> r) { return fv * r[v]; }});
+                          [v = axis.column, fv = axis.factor](std::span<const double> r) { return fv * r[v]; }});
   } else if (name == "energy") {
     if (!info.energy)
       throw UsageError("this model has no mechanical energy to plot: drop 'energy' from --panels");
@@ -112,12 +116,15 @@ std::unique_ptr<ScenePanel> make_scene_panel(QuantityPanelSpec spec, const Traje
                                              const render::PixelRect& outer, double scale, WindowMode mode, double window) {
   if (spec.is_phase()) {
     const double trail = info.mesh.period > 0 ? std::min(info.mesh.period, info.mesh.T) : info.mesh.T / 8;
-    return std::make_unique<PhasePanel>(outer, scale, std::move(spec.x_label), std::move(spec.label),
-                                        std::move(spec.phase), trail);
+    auto panel = std::make_unique<PhasePanel>(outer, scale, std::move(spec.x_label), std::move(spec.label),
+                                              std::move(spec.phase), trail);
+    if (spec.equal_scales) panel->keep_equal_scales();
+    return panel;
   }
   std::vector<SeriesSpec> series = std::move(spec.curves);
   for (auto& r : spec.references) series.push_back(std::move(r));
   auto panel = std::make_unique<SeriesPanel>(outer, scale, std::move(spec.label), std::move(series), info.mesh.T, mode, window);
+  panel->mark_mesh_points(fixed_mesh_step(info));
   panel->set_least_span(spec.least_span);
   panel->set_empty_note(std::move(spec.empty_note));
   return panel;

@@ -25,6 +25,9 @@ struct QuantityPanelSpec {
   std::vector<SeriesSpec> references;
   std::string x_label;  ///< phase only
   std::vector<PhaseCurveSpec> phase;
+  /// Phase only: both axes at one scale (u against v/w, so that an undamped
+  /// oscillator's orbit is drawn as the circle it is).
+  bool equal_scales = false;
   double least_span = 0;  ///< the y range spans at least this much (SeriesPanel::set_least_span)
   std::string empty_note;  ///< shown when the first curve has no value in the run
   bool is_phase() const { return !phase.empty(); }

@@ -19,6 +19,10 @@ class ScenePanel {
   virtual void record(std::span<const double> row) = 0;
   /// Live, for every solver step up to the frame being drawn.
   virtual void observe(std::span<const double> row) = 0;
+  /// Rows between solver steps (an adaptive run's dense output, a step cut
+  /// by an impact): curves pass through them, but they are no mesh points.
+  virtual void record_between(std::span<const double> row) { record(row); }
+  virtual void observe_between(std::span<const double> row) { observe(row); }
   /// Simulated time per pixel column of its curves; 0 when not against time.
   virtual double time_per_column() const { return 0; }
   /// After the pre-pass: fixes the ranges.
@@ -31,9 +35,10 @@ class ScenePanel {
   virtual const render::PlotPanel* time_plot() const { return nullptr; }
   /// What never changes per frame, drawn once under every frame.
   virtual void draw_static(render::Canvas&, bool time_labels) const = 0;
-  /// Extends what the layer under the frames keeps up to time t (from t = 0
-  /// when the layer is new); nothing for a panel without such a layer.
-  virtual void draw_progress(LayerGrowth& growth, double t) { (void)growth, (void)t; }
+  /// Extends what the layer under the frames keeps up to the time of `row`,
+  /// the solution then (from t = 0 when the layer is new); nothing for a
+  /// panel without such a layer.
+  virtual void draw_progress(LayerGrowth& growth, std::span<const double> row) { (void)growth, (void)row; }
   /// The dynamic part at time t; `row` is the solution at t.
   virtual void draw(render::Canvas&, double t, std::span<const double> row, bool time_labels) const = 0;
 };

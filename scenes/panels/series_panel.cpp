@@ -33,21 +33,55 @@ SeriesPanel::SeriesPanel(const render::PixelRect& outer, double scale, std::stri
   panel_.set_x_range(0, window_);
 }
 
-void SeriesPanel::record(std::span<const double> row) {
+void SeriesPanel::record(std::span<const double> row) { add_row(row, true); }
+void SeriesPanel::record_between(std::span<const double> row) { add_row(row, false); }
+void SeriesPanel::observe(std::span<const double> row) { add_recent(row, true); }
+void SeriesPanel::observe_between(std::span<const double> row) { add_recent(row, false); }
+
+void SeriesPanel::add_row(std::span<const double> row, bool mesh_row) {
+  marks_.resize(series_.size());
   for (size_t i = 0; i < series_.size(); ++i) {
     const double v = series_[i].value(row);
     if (!std::isfinite(v)) continue;
     if (i == 0) first_curve_seen_ = true;
     lo_ = std::min(lo_, v), hi_ = std::max(hi_, v);
-    if (mode_ == WindowMode::whole_run) whole_[i].add(row[0], v);
+    if (mode_ != WindowMode::whole_run) continue;
+    whole_[i].add(row[0], v);
+    // At least 6 px apart, so at most a few hundred marks over the run.
+    if (mesh_row && marker_radius(i) > 0) marks_[i].emplace_back(row[0], v);
   }
 }
 
-void SeriesPanel::observe(std::span<const double> row) {
+void SeriesPanel::add_recent(std::span<const double> row, bool mesh_row) {
+  marks_.resize(series_.size());
   for (size_t i = 0; i < recent_.size(); ++i) {
     if (series_[i].of_time) continue;  // drawn from its function of t
-    if (const double v = series_[i].value(row); std::isfinite(v)) recent_[i].add(row[0], v);
+    const double v = series_[i].value(row);
+    if (!std::isfinite(v)) continue;
+    recent_[i].add(row[0], v);
+    if (!mesh_row || marker_radius(i) <= 0) continue;
+    // The two windows a frame can show, like the envelope's.
+    auto& marks = marks_[i];
+    if (!marks.empty() && row[0] < marks.back().first) marks.clear();  // a new pass from the start
+    marks.emplace_back(row[0], v);
+    const auto old = std::find_if(marks.begin(), marks.end(), [&](const auto& m) { return m.first >= row[0] - 2 * window_; });
+    marks.erase(marks.begin(), old);
   }
+}
+
+void SeriesPanel::draw_marks(render::Canvas& canvas, size_t i, double from_x, double until_x) const {
+  const double radius = marker_radius(i);
+  if (radius <= 0 || i >= marks_.size()) return;
+  cairo_t* cr = canvas.cr();
+  cairo_save(cr);
+  cairo_rectangle(cr, from_x, 0, canvas.width() - from_x, canvas.height());
+  cairo_clip(cr);
+  for (const auto& [t, v] : marks_[i]) {
+    const render::Point p = panel_.to_pixel(t, v);
+    if (p.x() > until_x) break;
+    if (p.x() >= from_x - radius - 1) render::fill_pixel_disc(canvas, p, radius, series_[i].color);
+  }
+  cairo_restore(cr);
 }
 
 void SeriesPanel::finish_recording() {
@@ -91,31 +125,37 @@ void SeriesPanel::draw_axes(render::Canvas& canvas, bool time_labels) const {
   }
 }
 
+double SeriesPanel::marker_radius(size_t i) const {
+  if (!(mesh_dt_ > 0) || series_[i].of_time || !series_[i].mesh_values) return 0;
+  const double spacing = mesh_dt_ / window_ * panel_.area().w, scale = panel_.scale();
+  return spacing >= kMarkedSpacing * scale ? std::min(3.4 * scale, spacing / 3) : 0;
+}
+
+std::vector<size_t> SeriesPanel::drawing_order() const {
+  std::vector<size_t> order;
+  for (size_t i = series_.size(); i-- > 0;)
+    if (!series_[i].dashed) order.push_back(i);
+  for (size_t i = 0; i < series_.size(); ++i)
+    if (series_[i].dashed) order.push_back(i);
+  return order;
+}
+
 const std::vector<render::GrowingPolyline>& SeriesPanel::whole_curves() const {
   if (!whole_curves_.empty() || mode_ != WindowMode::whole_run) return whole_curves_;
   const int columns = whole_.empty() ? panel_.columns() : whole_[0].columns();
   const double column_width = t_end_ / columns;
   for (size_t i = 0; i < series_.size(); ++i) {
     std::vector<render::Point> points;
-    std::vector<int> ends(columns);
     if (series_[i].of_time) {
-      // At every half column, on one grid for the whole run: column c holds
-      // samples 2c and 2c + 1, as an envelope's column holds the samples
-      // whose x falls in it.
+      // At every half column, on one grid for the whole run: smooth at any dt.
       for (int k = 0; k <= 2 * columns; ++k) {
         const double x = std::min(t_end_, k * column_width / 2), y = series_[i].of_time(x);
         if (std::isfinite(y)) points.push_back(panel_.to_pixel(x, y));
-        ends[std::min(k / 2, columns - 1)] = int(points.size());
       }
     } else {
-      const render::ColumnEnvelope& envelope = whole_[i];
-      for (int c = 0; c < columns; ++c) {
-        const auto column = envelope.polyline(c, c, [&](double x, double y) { return panel_.to_pixel(x, y); });
-        points.insert(points.end(), column.begin(), column.end());
-        ends[c] = int(points.size());
-      }
+      points = whole_[i].polyline(columns - 1, [&](double x, double y) { return panel_.to_pixel(x, y); });
     }
-    whole_curves_.emplace_back(std::move(points), std::move(ends));
+    whole_curves_.emplace_back(std::move(points));
   }
   return whole_curves_;
 }
@@ -123,21 +163,20 @@ const std::vector<render::GrowingPolyline>& SeriesPanel::whole_curves() const {
 void SeriesPanel::draw_static(render::Canvas& canvas, bool time_labels) const {
   if (mode_ != WindowMode::whole_run) return;
   draw_axes(canvas, time_labels);
-  const render::PixelRect& area = panel_.area();
-  cairo_save(canvas.cr());
-  render::clip_to_pixels(canvas.cr(), area);
-  // Backwards: the first curve (the measured one) on top of the references.
-  for (size_t i = series_.size(); i-- > 0;)
-    whole_curves()[i].draw_through(canvas, panel_.columns(), {series_[i].color.with_alpha(0.22), 2, series_[i].dashed});
-  cairo_restore(canvas.cr());
 }
 
-void SeriesPanel::draw_progress(LayerGrowth& growth, double t) {
+void SeriesPanel::draw_progress(LayerGrowth& growth, std::span<const double> row) {
   if (mode_ != WindowMode::whole_run || whole_.empty()) return;
-  const int to = whole_[0].column_of(t);
-  // The whole run's columns are known from the pre-pass, so a column once
-  // drawn is complete: frames that stay in it (slow motion) add nothing.
-  if (!growth.from_start && to <= progress_column_) return;
+  const double t = std::min(row[0], t_end_), until_x = panel_.to_pixel(t, 0).x();
+  // Each curve ends where it is at t: its value from the solution at t.
+  auto now = [&](size_t i) -> std::optional<render::Point> {
+    const double value = series_[i].of_time ? series_[i].of_time(t) : series_[i].value(row);
+    if (!std::isfinite(value)) return std::nullopt;
+    return panel_.to_pixel(t, value);
+  };
+  // What is on the layer is final left of settled_x_: a frame at the same
+  // instant (a pause) adds nothing.
+  if (!growth.from_start && until_x <= progress_x_) return;
   const render::PixelRect& area = panel_.area();
   render::Canvas& layer = growth.layer;
   const double reach = render::GrowingPolyline::reach(2.4 * layer.scale());
@@ -146,35 +185,45 @@ void SeriesPanel::draw_progress(LayerGrowth& growth, double t) {
   // would redraw a strip from there, wider and wider.
   double last_x = 1e300;
   for (size_t i = 0; i < series_.size(); ++i)
-    if (const auto x = whole_curves()[i].last_x(to); x && !whole_curves()[i].complete_through(to))
+    if (const auto x = whole_curves()[i].last_x(until_x); x && !whole_curves()[i].complete_until(until_x))
       last_x = std::min(last_x, *x);
   cairo_save(layer.cr());
   render::clip_to_pixels(layer.cr(), area);
   if (growth.from_start) {
     settled_x_ = std::floor(area.x);
-    // Backwards: the first curve (the measured one) on top of the references.
-    for (size_t i = series_.size(); i-- > 0;)
-      whole_curves()[i].draw_through(layer, to, {series_[i].color, 2.4, series_[i].dashed});
+    for (size_t i : drawing_order()) {
+      whole_curves()[i].draw_until(layer, until_x, now(i), {series_[i].color, 2.4, series_[i].dashed});
+      draw_marks(layer, i, area.x, until_x);
+    }
   } else {
     // The strip from where the curves were last final to past their new end
     // is drawn again, as the still would draw it.
-    const double right = std::ceil(panel_.to_pixel((to + 1.0) * t_end_ / whole_[0].columns(), 0).x() + reach);
+    const double right = std::ceil(until_x + reach);
     growth.reset({settled_x_, std::floor(area.y), right - settled_x_, std::ceil(area.y + area.h) - std::floor(area.y)});
-    // Backwards: the first curve (the measured one) on top of the references.
-    for (size_t i = series_.size(); i-- > 0;)
-      whole_curves()[i].draw_piece(layer, settled_x_, to, {series_[i].color, 2.4, series_[i].dashed});
+    for (size_t i : drawing_order()) {
+      whole_curves()[i].draw_piece_until(layer, settled_x_, until_x, now(i), {series_[i].color, 2.4, series_[i].dashed});
+      draw_marks(layer, i, settled_x_, until_x);  // clipped to the strip
+    }
   }
   cairo_restore(layer.cr());
   if (last_x < 1e300) settled_x_ = std::max(settled_x_, std::floor(last_x - reach));
-  progress_column_ = to;
+  progress_x_ = until_x;
+}
+
+void SeriesPanel::draw_cursors(render::Canvas& canvas, double t, std::span<const double> row) const {
+  // Every run's own cursor, the first (measured) one last, on top: curves
+  // that coincide still show each run where it is.
+  for (size_t i : drawing_order()) {
+    if (series_[i].dashed) continue;
+    const double value = series_[i].value(row);
+    if (!std::isfinite(value)) continue;
+    if (i == 0) panel_.draw_cursor(canvas, t, value, series_[i].color);
+    else render::fill_pixel_disc(canvas, panel_.to_pixel(t, value), 4 * panel_.scale(), series_[i].color);
+  }
 }
 
 void SeriesPanel::draw(render::Canvas& canvas, double t, std::span<const double> row, bool time_labels) const {
-  const double cursor = series_[0].value(row);
-  if (mode_ == WindowMode::whole_run) {
-    if (std::isfinite(cursor)) panel_.draw_cursor(canvas, t, cursor, series_[0].color);
-    return;
-  }
+  if (mode_ == WindowMode::whole_run) return draw_cursors(canvas, t, row);
   const auto [x0, x1] = window_at(t);
   panel_.set_x_range(x0, x1);
   draw_axes(canvas, time_labels);
@@ -184,19 +233,26 @@ void SeriesPanel::draw(render::Canvas& canvas, double t, std::span<const double>
   render::clip_to_pixels(canvas.cr(), area);
   // jumps shows only completed windows; the others draw up to t.
   const double last_x = mode_ == WindowMode::jumps ? x1 : t;
-  // Backwards: the first curve (the measured one) on top of the references.
-  for (size_t i = series_.size(); i-- > 0;) {
+  cairo_set_line_join(canvas.cr(), CAIRO_LINE_JOIN_ROUND);  // no mitre spikes past a coarse run's mesh values
+  for (size_t i : drawing_order()) {
+    const render::Stroke stroke{series_[i].color, 2.4, series_[i].dashed};
     if (series_[i].of_time) {
-      panel_.draw_function(canvas, series_[i].of_time, x0, last_x, {series_[i].color, 2.4, series_[i].dashed});
+      panel_.draw_function(canvas, series_[i].of_time, x0, last_x, stroke);
       continue;
     }
     const auto& envelope = recent_[i];
     auto points = envelope.polyline(envelope.column_of(x0), envelope.column_of(last_x) - (mode_ == WindowMode::jumps),
                                     [&](double x, double y) { return panel_.to_pixel(x, y); });
-    render::draw_pixel_polyline(canvas, points, {series_[i].color, 2.4, series_[i].dashed});
+    // On from the last sample to where the curve is at t (the cursor).
+    if (const double value = series_[i].value(row); mode_ != WindowMode::jumps && std::isfinite(value)) {
+      const render::Point now = panel_.to_pixel(t, value);
+      if (points.empty() || now.x() > points.back().x()) points.push_back(now);
+    }
+    render::draw_pixel_polyline(canvas, points, stroke);
+    draw_marks(canvas, i, area.x, panel_.to_pixel(last_x, 0).x());
   }
   cairo_restore(canvas.cr());
-  if (mode_ != WindowMode::jumps && std::isfinite(cursor)) panel_.draw_cursor(canvas, t, cursor, series_[0].color);
+  if (mode_ != WindowMode::jumps) draw_cursors(canvas, t, row);
 }
 
 }  // namespace vibra::scenes

@@ -37,6 +37,8 @@ ComparisonTrajectory::ComparisonTrajectory(const ModelDefinition& model, const P
     info.mesh.T = std::max(info.mesh.T, member.mesh.T);
     info.amplitude_bound = std::max(info.amplitude_bound, member.amplitude_bound);
     info.damped = info.damped || member.damped;
+    info.rows_on_one_mesh = info.rows_on_one_mesh && member.rows_on_one_mesh && !member.mesh.adaptive() &&
+                            member.mesh.dt == first.mesh.dt;
   }
   // About one sample per finest step; done() tells the true end.
   info.mesh.steps = std::isfinite(info.mesh.T) ? std::llround(info.mesh.T / info.mesh.dt) : first.mesh.steps;
@@ -91,6 +93,12 @@ bool ComparisonTrajectory::advance() {
   t_ = next;
   ++index_;
   return true;
+}
+
+bool ComparisonTrajectory::bends_between_samples() const {
+  for (size_t i = 0; i < comparison_.size(); ++i)
+    if (comparison_.trajectory(i).bends_between_samples()) return true;
+  return false;
 }
 
 void ComparisonTrajectory::row_at(double t, std::span<double> out) const {

@@ -39,6 +39,8 @@ class ComparisonTrajectory final : public Trajectory {
   bool advance() override;
   void row(std::span<double> out) const override { row_at(t_, out); }
   void row_at(double t, std::span<double> out) const override;
+  /// Whether any member's rows between its samples follow a curve.
+  bool bends_between_samples() const override;
 
  private:
   struct MemberState {

@@ -13,6 +13,7 @@ class ErrorColumn final : public Trajectory {
   long long index() const override { return run_->index(); }
   bool done() const override { return run_->done(); }
   bool advance() override { return run_->advance(); }
+  bool bends_between_samples() const override { return run_->bends_between_samples(); }
   void row(std::span<double> out) const override {
     run_->row(out.first(run_->width()));
     add_error(out);

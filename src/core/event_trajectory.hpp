@@ -51,6 +51,8 @@ class EventTrajectory final : public Trajectory {
   bool advance() override;
   void row(std::span<double> out) const override { to_row_(current_, out); }
   void row_at(double t, std::span<double> out) const override;
+  /// Rows between mesh points turn at the events inside a step (v jumps at an impact).
+  bool bends_between_samples() const override { return true; }
 
   /// Every event so far: time and the state before and after it.
   struct Event {

@@ -9,6 +9,7 @@
 
 #include "core/energy_parts.hpp"
 #include "core/hermite.hpp"
+#include "core/linear_between.hpp"
 #include "core/solution_stream.hpp"
 #include "core/time_mesh.hpp"
 
@@ -49,7 +50,18 @@ struct TrajectoryInfo {
     double mu = 0;
   };
   std::optional<SpringAndFriction> spring_and_friction;
+  /// False when rows are not all mesh points of one fixed-step mesh (a
+  /// comparison of runs with different dt or an adaptive member).
+  bool rows_on_one_mesh = true;
 };
+
+/// The step dt of the mesh every row lies on (t_n = n dt, and an impact's
+/// instant where a model has events), or 0 when the rows are an adaptive
+/// run's or a comparison's of several meshes: what a plot marks as the
+/// scheme's own points.
+inline double fixed_mesh_step(const TrajectoryInfo& info) {
+  return info.rows_on_one_mesh && !info.mesh.adaptive() ? info.mesh.dt : 0;
+}
 
 /// The column holding the main quantity's velocity: v<name> where the model
 /// has it (vx for x), else the column after the main quantity (v for u, omega for theta).
@@ -71,10 +83,15 @@ class Trajectory {
   virtual bool advance() = 0;
   /// The columns at the current sample.
   virtual void row(std::span<double> out) const = 0;
-  /// The columns at time t between the previous and the current sample,
-  /// by the scheme's dense output where it has one (dopri5), else by
-  /// quintic Hermite interpolation (core/hermite.hpp).
+  /// The columns at time t between the previous and the current sample: for
+  /// a fixed-step scheme the mesh values joined by straight lines
+  /// (core/linear_between.hpp); for an adaptive one its dense output where
+  /// it has one (dopri5), else quintic Hermite interpolation (core/hermite.hpp).
   virtual void row_at(double t, std::span<double> out) const = 0;
+  /// Whether rows between samples leave the straight line between them (an
+  /// adaptive scheme's dense output, an impact inside a step): only then
+  /// does a drawing need rows between samples to show the run.
+  virtual bool bends_between_samples() const { return info_.mesh.adaptive(); }
 
  protected:
   explicit Trajectory(TrajectoryInfo info) : info_(std::move(info)) {}
@@ -117,6 +134,7 @@ class SecondOrderTrajectory final : public Trajectory {
     const Sample<D>& b = stream_.current();
     if (b.t - a.t <= 0 || t >= b.t) return b;
     if (t <= a.t) return a;
+    if (!info_.mesh.adaptive()) return linear_between<D>(a, b, t);
     if (auto dense = stream_.dense_at(t)) return *dense;
     return hermite_between<D>(a, system_->acceleration(a.u, a.v, a.t), b, system_->acceleration(b.u, b.v, b.t), t);
   }
