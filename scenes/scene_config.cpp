@@ -140,6 +140,25 @@ bool sets_same_thing(const std::string& a, const std::string& b) {
 }
 }  // namespace
 
+namespace {
+void refuse_long_keys_in(const toml::node& node, const std::string& file, int depth) {
+  if (depth > 8) return;  // deeper than any key vibra reads: table_settings refuses it
+  if (const toml::array* list = node.as_array())
+    for (const toml::node& item : *list) refuse_long_keys_in(item, file, depth + 1);
+  const toml::table* table = node.as_table();
+  if (!table) return;
+  for (auto&& [key, value] : *table) {
+    if (key.str().size() > kLongestKey)
+      throw UsageError(file + ":" + std::to_string(key.source().begin.line) + ": a key of " +
+                       std::to_string(key.str().size()) + " characters: keys are at most " +
+                       std::to_string(kLongestKey) + " (vibra render --help lists the scene keys)");
+    refuse_long_keys_in(value, file, depth + 1);
+  }
+}
+}  // namespace
+
+void refuse_long_keys(const toml::table& table, const std::string& file) { refuse_long_keys_in(table, file, 0); }
+
 std::vector<Setting> table_settings(const toml::table& table, const std::string& file, const std::string& where,
                                     const std::vector<std::string>& skip) {
   std::vector<Setting> settings;
@@ -388,7 +407,7 @@ SceneConfig load_scene(const std::string& name_or_path) {
       throw UsageError("no scene '" + name_or_path + "': give a scene file (.toml), a built-in scene (" + names +
                        ") or a model name (vibra solve --help lists them)");
     }
-    text = read_input_file(name_or_path, "the scene file", "the scene file");
+    text = read_input_file(name_or_path, "the scene file", "the scene file", kMostSettingsBytes);
     file = name_or_path;
   }
   return parse_scene(text, file);
@@ -403,6 +422,7 @@ SceneConfig parse_scene(const std::string& text, const std::string& file) {
     throw UsageError(file + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()) +
                      " (scene files are TOML: key = value)");
   }
+  refuse_long_keys(table, file);
   if (table.empty())
     throw UsageError(file + ": the scene file sets nothing: give at least model = \"pendulum\" (vibra render --help lists the keys)");
   const std::vector<Setting> settings = table_settings(table, file);

@@ -16,6 +16,14 @@ namespace vibra::scenes {
 /// storyboard's "shot 2"). Top-level keys in `skip` are left out (a shot's
 /// own keys). Throws UsageError for a value that is not a number, string or
 /// boolean, or a table nested too deeply.
+/// The longest key a scene file or storyboard may hold: longer is no key of vibra's.
+inline constexpr std::size_t kLongestKey = 64;
+
+/// Throws UsageError, one line naming the line and the limit (and not the
+/// key), for a key longer than kLongestKey anywhere in `table` (its tables
+/// and arrays of tables, 8 levels deep), before any key is looked up.
+void refuse_long_keys(const toml::table&, const std::string& file);
+
 std::vector<Setting> table_settings(const toml::table&, const std::string& file, const std::string& where = "",
                                     const std::vector<std::string>& skip = {});
 

@@ -7,6 +7,7 @@
 // text that reaches a page must arrive escaped.
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -274,4 +275,52 @@ TEST_CASE("adversarial: a huge amplitude draws its still in bounded time", "[cli
   CHECK(r.exit_code == 0);
   CHECK(seconds < 60);
   CHECK(vibra::test::png_size(dir / "still.png") == std::pair{1280, 720});
+}
+
+TEST_CASE("adversarial: a lecture's inputs as its outputs, and huge keys, refused before any work",
+          "[cli][adversarial][lecture]") {
+  // Each case: the files it starts with, the command (in the case's folder),
+  // what the one line names. Refused quickly (no shot rendered, no megabytes
+  // kept), exit 2, and every file as it was, nothing added.
+  struct FileCase {
+    std::vector<std::pair<std::string, std::string>> files;
+    std::string args, expected;
+  };
+  // A lecture long enough that rendering it would show in the time taken.
+  const std::string story = "size = \"640x360\"\nfps = 30\n[[shot]]\ncard = \"A\"\nseconds = 60\n"
+                            "[[shot]]\nscene = \"pendulum\"\nseconds = 60\n";
+  const std::string huge_key(5 << 20, 'k'), long_key(200, 'k');
+  const std::vector<FileCase> cases = {
+      {{{"lec.mp4", story}}, "lecture lec.mp4 -o lec.mp4", "this run reads it, as the storyboard"},
+      {{{"lec.webm", story}}, "lecture lec.webm -o lec.webm", "this run reads it, as the storyboard"},
+      {{{"talk.vtt", story}}, "lecture talk.vtt -o talk.mp4", "this run reads it, as the storyboard"},
+      {{{"story.toml", story + "[[shot]]\nscene = \"cut.vtt\"\n"}, {"cut.vtt", "model = \"undamped\"\nT = 1\n"}},
+       "lecture story.toml -o cut.mp4", "this run reads it, as the scene file"},
+      {{{"story.toml", story + huge_key + " = 1\n"}}, "lecture story.toml -o out.mp4",
+       "is longer than 1024 KiB, the most vibra reads of it"},
+      {{{"story.toml", story + long_key + " = 1\n"}}, "lecture story.toml -o out.mp4",
+       "a key of 200 characters: keys are at most 64"},
+      {{{"story.toml", "[[shot]]\ncard = \"A\"\n" + long_key + " = 1\n"}}, "lecture story.toml -o out.mp4",
+       "story.toml:3: a key of 200 characters"},
+      {{{"story.toml", "[[shot]]\nscene = \"s.toml\"\n"}, {"s.toml", "model = \"undamped\"\n" + huge_key + " = 1\n"}},
+       "lecture story.toml -o out.mp4", "the scene file"},
+      {{{"s.toml", "model = \"undamped\"\n" + huge_key + " = 1\n"}}, "render s.toml -o out.mp4",
+       "is longer than 1024 KiB"},
+      {{{"s.toml", "model = \"undamped\"\n[colors]\n" + long_key + " = \"red\"\n"}}, "render s.toml -o out.mp4",
+       "s.toml:3: a key of 200 characters"},
+  };
+  for (const FileCase& c : cases) {
+    ScratchDirectory dir;
+    for (const auto& [name, text] : c.files) std::ofstream(dir / name, std::ios::binary) << text;
+    INFO(c.args);
+    const auto start = std::chrono::steady_clock::now();
+    const auto r = run_vibra(c.args, "cd '" + dir.path.string() + "' && ");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    INFO(r.err);
+    check_refusal(r, c.expected);
+    CHECK(longest_line(r.err) <= 240);
+    CHECK(seconds < 5);  // one shot alone takes longer than this to render
+    CHECK(std::size_t(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator())) == c.files.size());
+    for (const auto& [name, text] : c.files) CHECK(read_file(dir / name) == text);
+  }
 }

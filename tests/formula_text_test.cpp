@@ -58,3 +58,45 @@ TEST_CASE("every model's equation and scheme's formula has a plain text without 
     CHECK(formula_plain_text(scheme.formula).find('\\') == std::string::npos);
   }
 }
+
+TEST_CASE("plain text, table-driven: scripts, fractions, function names, Greek letters, primes, asked-for spaces",
+          "[typeset]") {
+  struct Case {
+    const char *kind, *source, *text;
+  };
+  const Case cases[] = {
+      // A space the formula asks for (\, \: \; \quad) reads as one space; \! as none.
+      {"space", R"(-\mu\,\mathrm{sign}(u'))", "−μ sign(u′)"},
+      {"space", R"(u'' + \mu\,\mathrm{sign}(u') + u = 0)", "u″ + μ sign(u′) + u = 0"},  // the sliding box (1.8.2)
+      {"space", R"(u^{n+1} = u^n + \Delta t\, v^n)", "uⁿ⁺¹ = uⁿ + Δt vⁿ"},            // Forward Euler (1.5.x)
+      {"space", R"(k_1 = f(y^n),\; k_2)", "k₁ = f(yⁿ), k₂"},
+      {"space", R"(a\quad b)", "a b"},
+      {"space", R"(a\!b)", "ab"},
+      {"subscript", R"(u_{n-1})", "uₙ₋₁"},
+      {"subscript", R"(x_i)", "xᵢ"},
+      {"subscript", R"(k_{12})", "k₁₂"},
+      {"subscript", R"(u_{\theta})", "u_θ"},  // no subscript θ in Unicode: written out
+      {"superscript", R"(\omega^2)", "ω²"},
+      {"superscript", R"(u^{n})", "uⁿ"},
+      {"superscript", R"(e^{i\omega t})", "e^(iωt)"},
+      {"fraction", R"(\frac{g}{L})", "g/L"},
+      {"fraction", R"(\frac{1 - 2\lambda}{2})", "(1 − 2λ)/2"},
+      {"fraction", R"(\frac{\tanh(\alpha u)}{\alpha})", "tanh(αu)/α"},
+      {"function", R"(\sin\theta)", "sin θ"},
+      {"function", R"(\cos(\omega t))", "cos(ωt)"},
+      {"function", R"(\exp x)", "exp x"},
+      {"greek", R"(\alpha\beta\gamma)", "αβγ"},
+      {"greek", R"(\Delta\Theta\Omega)", "ΔΘΩ"},
+      {"prime", R"(u')", "u′"},
+      {"prime", R"(\theta'')", "θ″"},
+      {"prime", R"(u''')", "u‴"},
+      {"prime", R"(u'^2)", "u′²"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.kind << ": " << c.source);
+    CHECK(formula_plain_text(c.source) == c.text);
+  }
+  // And inside rich text, as subtitles and legends show it.
+  CHECK(rich_text_plain(R"(friction $-\mu\,\mathrm{sign}(u')$ opposes the motion)") ==
+        "friction −μ sign(u′) opposes the motion");
+}

@@ -3,12 +3,15 @@
 // it), --shot, --segment per shot, the page, and bad storyboards refused
 // before anything is written.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "cli_support.hpp"
+#include "render/output/output_error.hpp"
+#include "render/output/place_together.hpp"
 
 using vibra::test::check_refused;
 using vibra::test::read_file;
@@ -26,8 +29,14 @@ void write(const std::string& path, const std::string& text) {
   std::fclose(f);
 }
 
-// 10 fps: the card is 10 frames; the spring's T = 2 at seconds = 3 with a
-// pause of 1 s runs at speed 1: 31 frames; the last card 5: 46 frames, 4.6 s.
+// 10 fps: a shot of S seconds is round(10 S) frames. The card: 10 frames.
+// The spring: 31 frames, the last at 3.0 s showing T = 2, so with its pause
+// of 1 s it runs at speed 1 (frame k shows t = k/10 up to 1, then t = 1 held
+// for frames 10..19, then t = k/10 - 1). The last card: 5. 46 frames, 4.6 s.
+// "held here" is shown by frames, so it is drawn in the picture and is no
+// subtitle; no frame shows a time in [1.02, 1.08] (frames show 1.0 and 1.1),
+// so "between frames" is a subtitle from t = 1.02 (video 1 + 2.02 s) for the
+// shortest note cue, 2 s, cut at the shot's end (4.1 s).
 const std::string kStory = R"(title = "Springs"
 size = "320x180"
 fps = 10
@@ -38,9 +47,9 @@ seconds = 1
 [[shot]]
 scene = "spring"
 set = { T = 2, dt = 0.05 }
-seconds = 3
+seconds = 3.1
 pause = [{ at = 1, seconds = 1 }]
-notes = ["0.5-1.5: held here"]
+notes = ["0.5-1.5: held here", "1.02-1.08: between frames"]
 [[shot]]
 card = "The end"
 seconds = 0.5
@@ -48,7 +57,7 @@ seconds = 0.5
 
 const std::string kCues = "WEBVTT\n\nNOTE written by vibra lecture\n\n"
                           "1\n00:00:00.000 --> 00:00:01.000\nSprings\nu\u2033 + \u03c9\u00b2u = 0\n\n"
-                          "2\n00:00:01.500 --> 00:00:03.500\nheld here\n\n"
+                          "2\n00:00:03.020 --> 00:00:04.100\nbetween frames\n\n"
                           "3\n00:00:04.100 --> 00:00:04.600\nThe end\n";
 
 const std::string kChapters = "-show_entries chapter=start_time,end_time:chapter_tags=title";
@@ -86,7 +95,8 @@ TEST_CASE("a lecture: a chapter per shot, subtitles from cards and notes, the fr
       CHECK(probe(out, "-count_frames -select_streams v:0 -show_entries stream=nb_read_frames") == "nb_read_frames=46\n");
       // The subtitle track's cues, as ffmpeg reads them back.
       const std::string srt = shell("ffmpeg -v error -i '" + out + "' -map 0:s:0 -f srt -");
-      CHECK_THAT(srt, Catch::Contains("00:00:01,500 --> 00:00:03,500\nheld here"));
+      CHECK_THAT(srt, Catch::Contains("00:00:03,020 --> 00:00:04,100\nbetween frames"));
+      CHECK(srt.find("held here") == std::string::npos);  // drawn in the picture: not shown twice
       CHECK_THAT(srt, Catch::Contains("00:00:04,100 --> 00:00:04,600\nThe end"));
       CHECK(read_file(dir / "lecture.vtt") == kCues);
       // Every shot starts with a keyframe, so that a chapter's first frame
@@ -106,7 +116,8 @@ TEST_CASE("lecture --shot N renders one shot alone with its chapter and its subt
   CHECK(probe(dir / "two.mp4", "-count_frames -select_streams v:0 -show_entries stream=nb_read_frames") ==
         "nb_read_frames=31\n");
   CHECK_THAT(probe(dir / "two.mp4", kChapters), Catch::Contains("end_time=3.100000\nTAG:title=spring"));
-  CHECK_THAT(read_file(dir / "two.vtt"), Catch::Contains("1\n00:00:00.500 --> 00:00:02.500\nheld here\n"));
+  CHECK_THAT(read_file(dir / "two.vtt"), Catch::Contains("1\n00:00:02.020 --> 00:00:03.100\nbetween frames\n"));
+  CHECK(read_file(dir / "two.vtt").find("held here") == std::string::npos);
   check_refused("lecture " + (dir / "story.toml") + " --shot 4 -o OUT.mp4", "has shots 1..3");
 }
 
@@ -205,4 +216,113 @@ TEST_CASE("subtitles beside a video replace only vibra's own", "[lecture]") {
   check_refusal(r, "was not written by vibra lecture");
   CHECK_FALSE(fs::exists(dir / "lecture.mp4"));
   CHECK(read_file(dir / "lecture.vtt") == "WEBVTT\n\nmy own notes\n");
+}
+
+TEST_CASE("a shot of S seconds is round(S * fps) frames: the video's frames and chapters add up", "[lecture][video]") {
+  // 10 fps: 0.74 s -> 7 frames, 2.42 s -> 24, 1.53 s -> 15 (one more each
+  // when a shot counted its end frame beyond S * fps): 46 frames.
+  ScratchDirectory dir;
+  write(dir / "story.toml", R"(size = "160x90"
+fps = 10
+[[shot]]
+card = "A"
+seconds = 0.74
+[[shot]]
+scene = "spring"
+set = { T = 2, dt = 0.01 }
+seconds = 2.42
+slow = ["0.5-1:3"]
+[[shot]]
+scene = "spring"
+set = { T = 2, dt = 0.01 }
+seconds = 1.53
+pause = [{ at = 2, seconds = 0.3 }]
+)");
+  const std::string out = dir / "lecture.mp4";
+  const auto r = run_vibra("lecture " + (dir / "story.toml") + " -q -o " + out);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const long long frames[] = {7, 24, 15};
+  CHECK(probe(out, "-count_frames -select_streams v:0 -show_entries stream=nb_read_frames") == "nb_read_frames=46\n");
+  std::string expected;
+  long long start = 0;
+  char line[96];
+  for (long long n : frames) {
+    std::snprintf(line, sizeof line, "start_time=%.6f\nend_time=%.6f\n", start / 10.0, (start + n) / 10.0);
+    expected += line;
+    start += n;
+  }
+  CHECK(probe(out, "-show_entries chapter=start_time,end_time") == expected);
+}
+
+TEST_CASE("a note is shown once: drawn when a frame shows its time, else a subtitle", "[lecture]") {
+  // A scene file's notes and the storyboard's alike. At 10 fps and speed 1
+  // (T = 2 in 2.1 s: 21 frames, t = k / 10) frames show t = 0.5 .. 1.5 but
+  // none of [1.02, 1.08] or [1.73, 1.76].
+  ScratchDirectory dir;
+  write(dir / "spring_notes.toml", "model = \"vibration\"\ndiagram = \"oscillator\"\nT = 2\ndt = 0.01\nnotes = [\"0.5-1.5: drawn\", \"1.73-1.76: in between\"]\n");
+  write(dir / "story.toml", R"(size = "160x90"
+fps = 10
+[[shot]]
+scene = "spring_notes.toml"
+seconds = 2.1
+notes = ["0.2-0.4: also drawn", "1.02-1.08: a subtitle"]
+)");
+  const auto r = run_vibra("lecture " + (dir / "story.toml") + " -q -o " + (dir / "n.mp4"));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  // 1.02 s for 2 s, cut where the next starts (1.73 s); 1.73 s to the shot's end, 2.1 s.
+  CHECK(read_file(dir / "n.vtt") == "WEBVTT\n\nNOTE written by vibra lecture\n\n"
+                                    "1\n00:00:01.020 --> 00:00:01.730\na subtitle\n\n"
+                                    "2\n00:00:01.730 --> 00:00:02.100\nin between\n");
+}
+
+TEST_CASE("outputs are placed together or not at all: a failed placement puts the earlier ones back",
+          "[lecture][output]") {
+  using vibra::render::Placement;
+  ScratchDirectory dir;
+  write(dir / "out.mp4", "earlier video");
+  fs::create_directories(dir.path / "out.vtt" / "inside");  // a folder where the subtitles go
+  write(dir / ".new.mp4", "new video");
+  write(dir / ".new.vtt", "new subtitles");
+  CHECK_THROWS_AS(vibra::render::place_together({{dir.path / ".new.mp4", dir.path / "out.mp4"},
+                                                 {dir.path / ".new.vtt", dir.path / "out.vtt"}}),
+                  vibra::render::OutputError);
+  CHECK(read_file(dir / "out.mp4") == "earlier video");
+  CHECK(fs::is_directory(dir.path / "out.vtt" / "inside"));
+  CHECK(read_file(dir / ".new.mp4") == "new video");  // the temporaries still hold the new, for their owners
+  // Placed: the earlier outputs wait under the temporary names, for their owners to remove.
+  fs::remove_all(dir.path / "out.vtt");
+  write(dir / "out.vtt", "earlier subtitles");
+  vibra::render::place_together({{dir.path / ".new.mp4", dir.path / "out.mp4"}, {dir.path / ".new.vtt", dir.path / "out.vtt"}});
+  CHECK(read_file(dir / "out.mp4") == "new video");
+  CHECK(read_file(dir / "out.vtt") == "new subtitles");
+  CHECK(read_file(dir / ".new.mp4") == "earlier video");
+}
+
+TEST_CASE("a lecture whose subtitles cannot be placed leaves the earlier video and subtitles as they were",
+          "[lecture][output]") {
+  // The subtitles' path is a mount point (a file bound over itself): it passes
+  // every check before the work, and only the final rename fails (EBUSY).
+  if (shell("unshare -m true 2>/dev/null && echo yes") != "yes\n") {
+    WARN("skipped: no mount namespace here (unshare -m needs CAP_SYS_ADMIN)");
+    return;
+  }
+  ScratchDirectory dir;
+  write(dir / "story.toml", kStory);
+  REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " -q -o " + (dir / "lecture.mp4")).exit_code == 0);
+  const std::string video = read_file(dir / "lecture.mp4"), subtitles = read_file(dir / "lecture.vtt");
+  std::string changed = kStory;
+  changed.replace(changed.find("\"The end\""), 9, "\"Fin\"");
+  write(dir / "story.toml", changed);
+  const std::string vtt = dir / "lecture.vtt";
+  const auto r = run_vibra("lecture " + (dir / "story.toml") + " -q -o " + (dir / "lecture.mp4"),
+                           "unshare -m sh -c 'mount --bind \"" + vtt + "\" \"" + vtt + "\" && exec \"$0\" \"$@\"' ");
+  check_refusal(r, "lecture.vtt");
+  CHECK(read_file(dir / "lecture.mp4") == video);
+  CHECK(read_file(dir / "lecture.vtt") == subtitles);
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(dir.path)) left.push_back(entry.path().filename().string());
+  std::sort(left.begin(), left.end());
+  CHECK(left == std::vector<std::string>{"lecture.mp4", "lecture.vtt", "story.toml"});
 }

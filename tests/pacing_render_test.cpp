@@ -3,11 +3,14 @@
 // same picture, and the lecture page maps the video's time through the same
 // pieces (page.js evaluated by node against the render's own clock).
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <regex>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli_support.hpp"
 #include "png_compare.hpp"
@@ -156,4 +159,83 @@ TEST_CASE("the page maps the video's time through the render's pieces (page.js r
   // t = 1.5 is halfway through the slowed range (1 s + 2 s of video), t = 3 the pause's first frame (6 s), t = 3.5
   // half a second after the pause.
   CHECK_THAT(out, Catch::Contains("[30,60,75]"));
+}
+
+namespace {
+/// Seconds from a WebVTT time, HH:MM:SS.mmm.
+double vtt_seconds(const std::string& text) {
+  return std::stoi(text.substr(0, 2)) * 3600 + std::stoi(text.substr(3, 2)) * 60 + std::stod(text.substr(6));
+}
+
+/// Each cue's start and end, in the order of the file.
+std::vector<std::pair<double, double>> vtt_cue_times(const std::string& vtt) {
+  std::vector<std::pair<double, double>> cues;
+  const std::regex cue(R"((\d\d:\d\d:\d\d\.\d\d\d) --> (\d\d:\d\d:\d\d\.\d\d\d))");
+  for (auto it = std::sregex_iterator(vtt.begin(), vtt.end(), cue); it != std::sregex_iterator(); ++it)
+    cues.emplace_back(vtt_seconds((*it)[1]), vtt_seconds((*it)[2]));
+  return cues;
+}
+
+/// The video time that first shows simulated time t, from the definition:
+/// the integral of 1 / speed over [0, t] plus the pauses before t. Here
+/// speed = rate outside 1-2 and rate / 2 inside it, and t = 3 is held 1 s.
+double paced_video_time(double t, double rate) {
+  const double slowed = std::clamp(t, 1.0, 2.0) - 1;  // the part of [0, t] inside 1-2
+  return (t - slowed) / rate + 2 * slowed / rate + (t > 3 ? 1 : 0);
+}
+}  // namespace
+
+TEST_CASE("a lecture's subtitles and chapters fall where the time map puts their times, to the millisecond",
+          "[pacing][lecture][video]") {
+  // A card of 1.2 s (12 frames), then T = 4 in 6.1 s: 61 frames, the last at
+  // 6.0 s showing T; 2 - 1 = 1 time unit twice slower and 1 s held at t = 3,
+  // so rate = (4 + 1) / (6 - 1) = 1, and frame k of the shot shows simulated
+  // time 0.1 k, then 0.05 steps in 1-2, then 3 held, then 0.1 steps again.
+  // The notes at 1.51-1.54 and 3.52-3.58 fall between frames, so they are
+  // subtitles; 0.2-0.8 is drawn in the picture.
+  ScratchDirectory dir;
+  const std::string story = R"(size = "160x90"
+fps = 10
+[[shot]]
+card = "Paced"
+seconds = 1.2
+[[shot]]
+scene = "spring"
+set = { T = 4, dt = 0.01 }
+seconds = 6.1
+slow = ["1-2:2"]
+pause = [{ at = 3, seconds = 1 }]
+notes = ["0.2-0.8: drawn", "1.51-1.54: slowed", "3.52-3.58: after the pause"]
+)";
+  std::FILE* f = std::fopen((dir / "story.toml").c_str(), "wb");
+  REQUIRE(f);
+  std::fputs(story.c_str(), f);
+  std::fclose(f);
+  const std::string out = dir / "paced.mp4";
+  const auto r = run_vibra("lecture " + (dir / "story.toml") + " -q -o " + out);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const double card = 1.2, rate = (4 + 1) / (6.0 - 1), length = 6.1, shortest_cue = 2;
+  const double slowed_start = card + paced_video_time(1.51, rate);
+  const double after_start = card + paced_video_time(3.52, rate);
+  const std::vector<std::pair<double, double>> expected = {
+      {0, card},
+      {slowed_start, std::min(slowed_start + shortest_cue, after_start)},
+      {after_start, std::min(after_start + shortest_cue, card + length)}};
+  const auto cues = vtt_cue_times(read_file(dir / "paced.vtt"));
+  REQUIRE(cues.size() == expected.size());
+  for (std::size_t i = 0; i < cues.size(); ++i) {
+    INFO("cue " << i + 1);
+    CHECK(cues[i].first == Approx(expected[i].first).margin(0.0005));
+    CHECK(cues[i].second == Approx(expected[i].second).margin(0.0005));
+  }
+  // The chapters: the card, then the scene to the end of its 61 frames.
+  const std::string chapters =
+      shell("ffprobe -v error -show_entries chapter=start_time,end_time -of csv=p=0 '" + out + "'");
+  double starts[2], ends[2];
+  REQUIRE(std::sscanf(chapters.c_str(), "%lf,%lf\n%lf,%lf", &starts[0], &ends[0], &starts[1], &ends[1]) == 4);
+  CHECK(starts[0] == Approx(0).margin(0.0005));
+  CHECK(ends[0] == Approx(card).margin(0.0005));
+  CHECK(starts[1] == Approx(card).margin(0.0005));
+  CHECK(ends[1] == Approx(card + paced_video_time(4, rate) + 0.1).margin(0.0005));  // T's frame, then one frame long
 }

@@ -1,6 +1,7 @@
 // Pacing: slow motion and pauses as a map from video time to simulated time.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <vector>
 
 #include "core/error.hpp"
 #include "scenes/frame_clock.hpp"
@@ -100,5 +101,64 @@ TEST_CASE("ill-formed pacing is refused with one line naming the fix", "[pacing]
   for (const char* text : {"2-4", "x-y:z", ":", "", "2-4:4:4"}) {
     Pacing q;
     CHECK_THROWS_AS(q.add_slow(text), UsageError);
+  }
+}
+
+namespace {
+constexpr int kPoints = 400, kCellsPerPoint = 60;
+
+/// Video times of simulated times t_i = T i / kPoints from the definition:
+/// the integral of 1 / speed(s) over [0, t_i], speed = rate / factor(s),
+/// plus every pause at a time before t_i (a pause at t_i itself starts when
+/// t_i is first shown). The integral by the midpoint rule on cells whose
+/// edges fall on every range's ends (the cases' ends are multiples of T/24000),
+/// where 1 / speed is constant: a sum of the definition, not the map's pieces.
+std::vector<double> video_times_by_integral(const Pacing& p, double rate, double T) {
+  const double h = T / (kPoints * kCellsPerPoint);
+  std::vector<double> times = {0};
+  double integral = 0;
+  for (int cell = 0; cell < kPoints * kCellsPerPoint; ++cell) {
+    const double s = (cell + 0.5) * h;
+    double factor = 1;
+    for (const auto& range : p.slow)
+      if (s >= range.from && s < range.to) factor = range.factor;
+    integral += h * factor / rate;
+    if ((cell + 1) % kCellsPerPoint) continue;
+    const double t = T * ((cell + 1) / kCellsPerPoint) / kPoints;
+    double held = 0;
+    for (const auto& pause : p.pauses) held += pause.at < t ? pause.seconds : 0;
+    times.push_back(integral + held);
+  }
+  return times;
+}
+}  // namespace
+
+TEST_CASE("every simulated time's video time is the pacing integral plus the pauses before it", "[pacing]") {
+  struct Case {
+    double T, rate;
+    std::vector<const char*> slow, pauses;
+  };
+  const Case cases[] = {
+      {10, 1, {"2-4:4"}, {"6:1.5"}},
+      {10, 0.7, {"1-3:2", "5-6:0.25"}, {"0:1", "3:0.5", "8:2"}},
+      {4, 2, {"0-4:3"}, {"4:1"}},              // slow from start to end, a pause at T
+      {6, 1.3, {"2-3:5"}, {"2:1", "3:0.25"}},  // pauses at a range's start and end
+  };
+  for (const Case& c : cases) {
+    Pacing p;
+    for (const char* text : c.slow) p.add_slow(text);
+    for (const char* text : c.pauses) p.add_pause(text);
+    const TimeMap map(c.T, c.rate, p);
+    INFO("T = " << c.T << ", rate = " << c.rate << ", " << p.describe());
+    const std::vector<double> expected = video_times_by_integral(p, c.rate, c.T);
+    for (int i = 0; i <= kPoints; ++i) {
+      const double t = c.T * i / kPoints;
+      INFO("t = " << t);
+      CHECK(map.first_video_time(t) == Approx(expected[i]).margin(1e-9));
+      // And back: the map shows t at that video time (the first of a pause's).
+      CHECK(map.simulated(expected[i]) == Approx(t).margin(1e-9));
+    }
+    const double held_at_end = p.pauses.back().at == c.T ? p.pauses.back().seconds : 0;
+    CHECK(map.duration() == Approx(expected.back() + held_at_end).margin(1e-9));
   }
 }

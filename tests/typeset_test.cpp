@@ -384,3 +384,58 @@ TEST_CASE("a model's equation follows its settings when they change its form", "
   CHECK(equation("vibration", {"s=u^3"}) == R"(m u'' + s(u) = 0)");
   CHECK(equation("resonance", {"beta=0"}) == R"(u'' + u = \sin(\gamma t))");
 }
+
+TEST_CASE("typeset, table-driven: the glyphs each formula sets and how its boxes stand to each other",
+          "[typeset]") {
+  // Relations of the script, fraction and function boxes, TeX's way (em = 30 px).
+  enum class Relation { subscript_below_smaller, superscript_above_smaller, numerator_over_denominator, spaced, none };
+  struct Case {
+    const char* source;
+    std::vector<std::string> glyphs;
+    Relation relation;
+  };
+  const Case cases[] = {
+      {R"(u_{n+1})", {"u", "n", "+", "1"}, Relation::subscript_below_smaller},
+      {R"(x_i)", {"x", "i"}, Relation::subscript_below_smaller},
+      {R"(\omega^2)", {"ω", "2"}, Relation::superscript_above_smaller},
+      {R"(u^{n-1})", {"u", "n", "−", "1"}, Relation::superscript_above_smaller},
+      {R"(\frac{g}{L})", {"g", "L"}, Relation::numerator_over_denominator},
+      {R"(\frac{\Delta t}{2})", {"Δ", "t", "2"}, Relation::numerator_over_denominator},
+      {R"(\mu\,\mathrm{sign})", {"μ", "s", "i", "g", "n"}, Relation::spaced},  // upright letters
+      {R"(\sin\theta)", {"sin", "θ"}, Relation::spaced},
+      {R"(\alpha\beta)", {"α", "β"}, Relation::none},
+      {R"(\theta'')", {"θ", "″"}, Relation::none},
+  };
+  const double em = 30;
+  for (const Case& c : cases) {
+    INFO(c.source);
+    const MathBox tree = set(c.source, em);
+    CHECK(leaf_texts(tree) == c.glyphs);
+    Point at;
+    if (c.relation == Relation::subscript_below_smaller || c.relation == Relation::superscript_above_smaller) {
+      const MathBox* scripts = find(tree, Role::scripts, {0, 0}, &at);
+      REQUIRE(scripts);
+      const bool sub = c.relation == Relation::subscript_below_smaller;
+      const MathBox& script = child_of(*scripts, sub ? Role::subscript : Role::superscript);
+      const MathBox& base = child_of(*scripts, Role::base);
+      CHECK(glyph_leaves(script).front()->size < glyph_leaves(base).front()->size);   // smaller than its base
+      CHECK((sub ? script.at.y() > base.at.y() : script.at.y() < base.at.y()));      // below or above its baseline
+      CHECK(script.at.x() >= base.at.x() + base.width - 0.2 * em);                   // after the base
+    } else if (c.relation == Relation::numerator_over_denominator) {
+      const MathBox* fraction = find(tree, Role::fraction, {0, 0}, &at);
+      REQUIRE(fraction);
+      const MathBox& num = child_of(*fraction, Role::numerator);
+      const MathBox& den = child_of(*fraction, Role::denominator);
+      CHECK(num.at.y() + num.ink.y1 < den.at.y() + den.ink.y0);  // the numerator's ink wholly above
+    } else if (c.relation == Relation::spaced) {
+      // The second glyph run starts clear of the first: a visible gap (a thin space is 1/6 em, and
+      // an operator's space after it, 1/6 em).
+      std::vector<double> x0, x1;
+      for_each_leaf(tree, {0, 0}, [&](const MathBox& leaf, const Point& origin) {
+        if (leaf.role == Role::glyphs) x0.push_back(origin.x() + leaf.ink.x0), x1.push_back(origin.x() + leaf.ink.x1);
+      });
+      REQUIRE(x0.size() >= 2);
+      CHECK(x0[1] - x1[0] >= em / 8);
+    }
+  }
+}

@@ -18,9 +18,9 @@ seconds = 1
 [[shot]]
 scene = "spring"
 set = { T = 2, dt = 0.05 }
-seconds = 3
+seconds = 3.1
 pause = [{ at = 1, seconds = 1 }]
-notes = ["0.5-1.5: held here"]
+notes = ["0.5-1.5: held here", "1.02-1.08: between frames"]
 """
 
 
@@ -36,16 +36,20 @@ def test_a_lecture_is_a_video_with_chapters_and_subtitles(in_tmp):
     assert isinstance(video, vibra.Video) and os.fspath(video) == "talk.mp4"
     info = probe(video, "chapter=start_time,end_time:chapter_tags=title:stream=codec_name,nb_read_frames")
     assert [c["tags"]["title"] for c in info["chapters"]] == ["Springs", "spring"]
+    # A shot of S seconds is round(10 S) frames: 10 and 31.
     assert [float(c["end_time"]) for c in info["chapters"]] == [1.0, 4.1]
     assert [s["codec_name"] for s in info["streams"]][:2] == ["h264", "mov_text"]
     assert int(info["streams"][0]["nb_read_frames"]) == 41
-    assert "00:00:01.500 --> 00:00:03.500\nheld here" in (in_tmp / "talk.vtt").read_text()
+    # A note a frame shows is drawn, not a subtitle; one between frames is a subtitle.
+    subtitles = (in_tmp / "talk.vtt").read_text()
+    assert "held here" not in subtitles
+    assert "00:00:03.020 --> 00:00:04.100\nbetween frames" in subtitles
     one = vibra.lecture("story.toml", output="two.webm", shot=2)
     assert int(probe(one, "stream=nb_read_frames")["streams"][0]["nb_read_frames"]) == 31
 
 
 def test_a_bad_storyboard_raises_with_the_shot_and_key(in_tmp):
-    (in_tmp / "story.toml").write_text(STORY.replace("seconds = 3", "secnds = 3"))
+    (in_tmp / "story.toml").write_text(STORY.replace("seconds = 3.1", "secnds = 3.1"))
     with pytest.raises(ValueError, match=r"shot 2, secnds: unknown key 'secnds'"):
         vibra.lecture("story.toml", output="talk.mp4")
     assert not (in_tmp / "talk.mp4").exists() and not (in_tmp / "talk.vtt").exists()

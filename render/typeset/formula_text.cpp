@@ -82,14 +82,28 @@ class PlainText {
   }
 
  private:
-  /// A part as an operand of /, ^ or _: bracketed when it is more than one symbol.
+  /// A part as an operand of /, ^ or _: bracketed when it is more than one
+  /// symbol, unless it is a function applied to a bracket (tanh(αu)/α).
   std::string operand(const MathNode& part) {
     const std::string text = node_text(part);
     const bool single = part.kind == MathNode::Kind::glyphs ||
                         (part.kind == MathNode::Kind::group && part.parts.size() == 1 &&
                          part.parts[0].kind == MathNode::Kind::glyphs) ||
-                        part.kind == MathNode::Kind::delimited;
+                        part.kind == MathNode::Kind::delimited || applied_function(part, text);
     return single ? text : "(" + text + ")";
+  }
+
+  /// Whether `group` reads "name(...)": an operator's name, then one bracket to its end.
+  static bool applied_function(const MathNode& group, const std::string& text) {
+    if (group.kind != MathNode::Kind::group || group.parts.size() < 3 || group.parts[0].atom != Atom::op) return false;
+    const std::size_t open = group.parts[0].glyphs.size();
+    if (open >= text.size() || text[open] != '(' || text.back() != ')') return false;
+    int depth = 0;
+    for (std::size_t i = open; i < text.size(); ++i) {
+      depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
+      if (depth == 0 && i + 1 < text.size()) return false;  // closed before the end: (a)(b)
+    }
+    return depth == 0;
   }
 
   std::string node_text(const MathNode& node) {
@@ -98,7 +112,9 @@ class PlainText {
       case MathNode::Kind::group: return row(node);
       case MathNode::Kind::fraction: return operand(node.parts[0]) + "/" + operand(node.parts[1]);
       case MathNode::Kind::radical: return "√" + operand(node.parts[0]);
-      case MathNode::Kind::space: return node.space >= 0.25 ? " " : "";
+      // Any space the writer asked for reads as one (\mu\,\mathrm{sign}: "μ sign", not "μsign");
+      // a negative one (\!) as none.
+      case MathNode::Kind::space: return node.space > 0 ? " " : "";
       case MathNode::Kind::delimited: {
         const std::string open = node.glyphs == "." ? "" : node.glyphs;
         const std::string close = node.close == "." ? "" : node.close;

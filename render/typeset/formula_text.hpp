@@ -11,7 +11,8 @@ namespace vibra::render {
 /// (subtitles, chapter titles, a player's captions): θ″ + α|θ′|θ′ + sin θ = 0,
 /// u₍ₙ₊₁₎ as uₙ₊₁, a fraction as a/b with brackets around a sum. Spaces come
 /// where TeX puts them: around binary operators and relations, after a
-/// function name. Lines (\\) are separated by '\n'.
+/// function name, and where the formula asks for one (\mu\,\mathrm{sign}(u')
+/// reads −μ sign(u′)). Lines (\\) are separated by '\n'.
 std::string formula_plain_text(const Formula&);
 
 /// Text with $math$ inside (parse_rich_text) as plain text.

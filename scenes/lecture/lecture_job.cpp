@@ -1,5 +1,6 @@
 #include "scenes/lecture/lecture_job.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/input_files.hpp"
 #include "core/quoted_value.hpp"
 #include "render/draw/canvas.hpp"
 #include "render/draw/text.hpp"
@@ -18,6 +20,7 @@
 #include "render/encode/video_concat.hpp"
 #include "render/output/output_error.hpp"
 #include "render/output/output_path.hpp"
+#include "render/output/place_together.hpp"
 #include "render/output/progress.hpp"
 #include "render/output/stop_signal.hpp"
 #include "render/output/temporary_file.hpp"
@@ -85,32 +88,71 @@ PlannedShot plan_card(const Storyboard& board, const Shot& shot) {
   return p;
 }
 
+/// The speed that makes a shot of `seconds` exactly round(seconds * fps)
+/// frames: frame k shows video time k / fps, so the run's end T is shown by
+/// the last frame, at (frames - 1) / fps.
+double speed_for_seconds(const SceneConfig& scene, double T, double seconds) {
+  const long long frames = std::llround(seconds * scene.fps);
+  if (frames < 2)
+    throw UsageError("seconds = " + short_number(seconds) + " is less than two frames at " + short_number(scene.fps) +
+                     " fps: a scene shot needs its start and its end, so give seconds >= " +
+                     short_number(2 / scene.fps));
+  const double last_frame = double(frames - 1) / scene.fps;
+  double held = 0;
+  for (const Pause& p : scene.pacing.pauses) held += p.seconds;
+  if (!(last_frame > held))
+    throw UsageError("seconds = " + short_number(seconds) + " leaves no time for the motion: the pauses alone take " +
+                     short_number(held) + " s of the " + short_number(last_frame) +
+                     " s before the last frame, so give more seconds or shorter pauses");
+  return scene.pacing.rate_for_length(T, last_frame);
+}
+
+/// Whether some frame of `clock` shows `note` (the scene draws it as a callout then).
+bool note_on_screen(const Note& note, const FrameClock& clock) {
+  const long long k = clock.first_frame_from(note.from);
+  return k < clock.frames() && note.shown_at(clock.time(k));
+}
+
+/// Subtitles for the notes no frame shows (a note at an instant between two
+/// frames): a note is shown once, in the picture or as a subtitle, never both.
+/// Each lasts at least kShortestNoteCue, up to the next cue or the shot's end.
+std::vector<render::SubtitleCue> note_cues(const std::vector<Note>& notes, const FrameClock& clock,
+                                           const TimeMap& map, double length) {
+  constexpr double kShortestNoteCue = 2;  // seconds: time to read a line
+  std::vector<render::SubtitleCue> cues;
+  for (const Note& note : notes) {
+    if (note_on_screen(note, clock)) continue;
+    const double start = map.first_video_time(note.from);
+    const double end = std::max(map.first_video_time(note.to), start + kShortestNoteCue);
+    cues.push_back({start, std::min(length, end), render::rich_text_plain(note.text)});
+  }
+  std::sort(cues.begin(), cues.end(), [](const auto& a, const auto& b) { return a.start < b.start; });
+  for (std::size_t i = 0; i + 1 < cues.size(); ++i) cues[i].end = std::min(cues[i].end, cues[i + 1].start);
+  return cues;  // MP4's subtitles cannot overlap
+}
+
 PlannedShot plan_scene(const Storyboard& board, const Shot& shot) {
   PlannedShot p;
   p.shot = &shot;
   p.scene = shot.scene;
   const TimeMesh mesh = build_scene_runs(p.scene)->info().mesh;  // reads the run's files (a road)
   if (!std::isfinite(mesh.T)) throw UsageError("a shot needs a finite end time: give T or periods");
-  if (shot.seconds) p.scene.speed = p.scene.pacing.rate_for_length(mesh.T, *shot.seconds);
+  if (shot.seconds) p.scene.speed = speed_for_seconds(p.scene, mesh.T, *shot.seconds);
   const FrameClock clock = frame_clock_of(p.scene, mesh);
   p.frames = clock.frames();
   const double end_time = p.scene.frame_per_step ? double(mesh.steps) * mesh.dt : mesh.T;
   const TimeMap map(end_time, video_rate_of(p.scene, mesh), p.scene.pacing);
-  const double length = double(p.frames) / board.fps;
+  std::vector<Note> notes;
   for (const std::string& spec : p.scene.notes) {
-    const Note note = parse_note(spec);
-    if (note.to > end_time * (1 + 1e-12)) {
+    notes.push_back(parse_note(spec));
+    if (notes.back().to > end_time * (1 + 1e-12)) {
       char text[160];
       std::snprintf(text, sizeof text, "note %g-%g reaches past the run's end T = %g: end it at most there",
-                    note.from, note.to, end_time);
+                    notes.back().from, notes.back().to, end_time);
       throw UsageError(text);
     }
-    // Shown while simulated time is in [from, to): a pause at `to` belongs to the next note, so notes that
-    // meet never overlap (MP4's subtitles cannot).
-    const double end = note.to >= end_time ? length : map.first_video_time(note.to);
-    const double start = map.first_video_time(note.from);
-    if (std::min(length, end) > start) p.cues.push_back({start, std::min(length, end), render::rich_text_plain(note.text)});
   }
+  p.cues = note_cues(notes, clock, map, double(p.frames) / board.fps);
   return p;
 }
 
@@ -253,6 +295,7 @@ void run_lecture(const LectureRequest& r) {
     throw UsageError("--segment renders shot files to join later: give -o LECTURE.mp4 or .webm, not a page");
   if (r.segment && r.shot) throw UsageError("--shot and --segment both choose shots: give one of them");
   if (r.video.transparent) throw UsageError("a lecture cannot be transparent: drop --transparent");
+  note_input_file(r.storyboard, "the storyboard");  // before the outputs are checked: never written over
   const render::OutputTarget target = render::resolve_output(r.output, render::kNeedsAFile);
   render::refuse_input_as_output(target.file);
   render::check_output_settings(page ? "x.mp4" : r.output, false, r.video);
@@ -365,10 +408,12 @@ void run_lecture(const LectureRequest& r) {
   const double seconds = double(frames) / board.fps;
   const int fps = int(board.fps);
   if (!page) {
+    // Both finished before either is placed, then placed together or not at all.
     render::TemporaryFile subtitles(vtt);
     render::write_text(subtitles, render::web_vtt(cues));
-    render::join_clips(clip_files[0], final_video, fps, chapters, cues, metadata);
-    subtitles.commit();
+    const fs::path joined = clips.path() / final_video.filename();
+    render::join_clips(clip_files[0], joined, fps, chapters, cues, metadata);
+    render::place_together({{joined, final_video}, {subtitles.path(), subtitles.final_path()}});
     if (!r.quiet)
       std::fprintf(stderr, "vibra: wrote %s (%zu shot%s, %lld frames, %.1f s, %zu chapters) and %s\n",
                    one_line_message(target.shown(), 4096).c_str(), chosen.size(), chosen.size() == 1 ? "" : "s",
@@ -401,8 +446,7 @@ void run_lecture(const LectureRequest& r) {
                    {"size", std::to_string(board.width) + "x" + std::to_string(board.height)}};
   lecture.command_line = r.command_line;
   render::write_text(page_file, render::lecture_page_html(lecture));
-  staged.replace(companions);
-  page_file.commit();
+  render::place_together({{staged.path(), companions}, {page_file.path(), page_file.final_path()}});
   if (!r.quiet)
     std::fprintf(stderr, "vibra: wrote %s and %s (%zu chapters, %lld frames, %.1f s)\n",
                  one_line_message(target.shown(), 4096).c_str(), one_line_message(companions.string(), 4096).c_str(),

@@ -155,7 +155,7 @@ Shot scene_shot(const toml::table& table, const std::string& file, const std::st
       if (!notes) at.refuse("must be a list of \"T0-T1: text\", e.g. notes = [\"2-4: drag takes energy out\"]");
       for (const toml::node& note : *notes) {
         try {
-          // A note is the scene's callout (render --note) and a subtitle while it shows.
+          // A note is the scene's callout (render --note); a subtitle only when no frame shows it.
           const std::string spec = text_value(note, at);
           (void)parse_note(spec);
           shot.scene.notes.push_back(spec);
@@ -194,6 +194,7 @@ Storyboard parse_storyboard(const std::string& text, const std::string& file, co
     throw UsageError(file + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()) +
                      " (a storyboard is TOML: title = \"...\", then [[shot]] tables)");
   }
+  refuse_long_keys(table, file);
   Storyboard board;
   board.file = file;
   board.title = fs::path(file).stem().string();
@@ -240,7 +241,7 @@ Storyboard load_storyboard(const std::string& path) {
   if (!fs::is_regular_file(path, ec))
     throw UsageError("no storyboard '" + quoted_value(path, 80) + "': give a TOML file of [[shot]] tables "
                      "(docs/lecture.md has an example)");
-  return parse_storyboard(read_input_file(path, "the storyboard", "the storyboard"), path, fs::path(path).parent_path().string());
+  return parse_storyboard(read_input_file(path, "the storyboard", "the storyboard", kMostSettingsBytes), path, fs::path(path).parent_path().string());
 }
 
 }  // namespace vibra::scenes

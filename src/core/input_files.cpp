@@ -32,7 +32,8 @@ void note_input_file(const std::filesystem::path& path, std::string role) {
   noted.push_back({{path, std::move(role)}, status.st_dev, status.st_ino});
 }
 
-std::string read_input_file(const std::string& path, const std::string& what, std::string role) {
+std::string read_input_file(const std::string& path, const std::string& what, std::string role,
+                            std::size_t most_bytes) {
   const auto refuse = [&](int error) {
     throw UsageError("cannot read " + what + " '" + quoted_value(path, 80) + "': " + std::strerror(error) +
                      (error == EACCES ? ": give vibra read permission (chmod a+r) or copy it" : ""));
@@ -41,10 +42,18 @@ std::string read_input_file(const std::string& path, const std::string& what, st
   std::ifstream in(path, std::ios::binary);
   if (!in) refuse(errno ? errno : EACCES);
   note_input_file(path, std::move(role));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
+  std::string text;
+  char chunk[65536];
+  while (in && text.size() <= most_bytes) {  // bounded by most_bytes: a huge file is not read whole
+    const std::size_t left = most_bytes - text.size();  // one byte more than allowed tells a longer file
+    in.read(chunk, std::streamsize(left < sizeof chunk ? left + 1 : sizeof chunk));
+    text.append(chunk, std::size_t(in.gcount()));
+  }
   if (in.bad()) refuse(errno ? errno : EIO);
-  return buffer.str();
+  if (text.size() > most_bytes)
+    throw UsageError(what + " '" + quoted_value(path, 80) + "' is longer than " + std::to_string(most_bytes >> 10) +
+                     " KiB, the most vibra reads of it: is it the right file? Split it, or shorten what it holds");
+  return text;
 }
 
 std::optional<InputFile> input_at(const std::filesystem::path& output) {

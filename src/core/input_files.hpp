@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -23,7 +24,13 @@ std::optional<InputFile> input_at(const std::filesystem::path& output);
 /// The whole of the input file at `path`, noted as an input with `role`.
 /// `what` names it in the one-line error a file that cannot be opened or read
 /// gives ("the scene file"): the system's reason, and for a permission the fix.
-std::string read_input_file(const std::string& path, const std::string& what, std::string role);
+/// A file longer than `most_bytes` is refused after reading only that much
+/// (one line naming the limit), so that a huge file costs no time or memory.
+std::string read_input_file(const std::string& path, const std::string& what, std::string role,
+                            std::size_t most_bytes = SIZE_MAX);
+
+/// The most a text file of settings (a scene file, a storyboard) may hold: 1 MiB.
+inline constexpr std::size_t kMostSettingsBytes = std::size_t(1) << 20;
 
 /// Forgets every input: a process that runs several commands (the Python
 /// module) starts each afresh.
