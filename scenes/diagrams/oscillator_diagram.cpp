@@ -127,7 +127,8 @@ std::optional<ForceKey> OscillatorDiagram::force_key() const {
   std::vector<ForceName> names = {{colors_.gravity, std::string(kSpringLabel[law_.s ? 1 : 0]) + " spring"}};
   if (has_damper()) names.push_back({colors_.drag, damper_label(law_.damping) + " damping"});
   if (law_.F) names.push_back({colors_.wire_force, "<i>F</i>(<i>t</i>) driving force"});
-  return ForceKey{scale_.per_force(), "", "", names};
+  // On wheels on a level floor: the weight and the floor's push cancel, and only horizontal forces move it.
+  return ForceKey{scale_.per_force(), "", "<i>mg</i>, <i>N</i> cancel: not drawn", names};
 }
 
 DiagramKind oscillator_diagram_kind() {
