@@ -108,12 +108,11 @@ void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& vie
 }
 
 std::optional<ForceKey> BumpyRoadDiagram::force_key() const {
-  // u is measured from the rest height, where the spring's static load carries
-  // the weight: the two cancel, and the note says why neither is drawn.
-  std::string note = "<i>mg</i> = static spring load";
-  char heights[48];
-  if (factor_ != 1) std::snprintf(heights, sizeof heights, "heights drawn ×%g, ", factor_), note = heights + note;
-  std::vector<ForceName> names = {{colors_.gravity, "−<i>ku</i> spring"}};
+  char note[64] = "";
+  if (factor_ != 1) std::snprintf(note, sizeof note, "heights drawn ×%g", factor_);
+  // u is measured from the rest height, where the spring's static load
+  // carries the weight: the two cancel, and the name says why neither is drawn.
+  std::vector<ForceName> names = {{colors_.gravity, "−<i>ku</i> spring beyond its static load"}};
   if (vehicle_.b > 0) names.push_back({colors_.drag, "−<i>bu</i>′ damper"});
   return ForceKey{scale_.per_force(), "N", note, names};
 }

@@ -17,7 +17,7 @@ namespace vibra::scenes {
 /// L + u; arrows on the body for the spring force -k u and the damper force
 /// -b u' (in newtons, to one scale; no damper arrow when b = 0). u is
 /// measured from the rest height, where the spring's static load balances
-/// the weight mg: the two cancel and neither is drawn (the key's note says so). The view follows the vehicle; heights
+/// the weight mg: the two cancel and neither is drawn (the key's name for -k u says so). The view follows the vehicle; heights
 /// are fixed from the pre-pass. Heights (the road's and the body's u) are
 /// drawn `exaggeration()` times larger, said in the force key: a few
 /// centimetres under a metre-high vehicle would otherwise be a few pixels.

@@ -65,6 +65,8 @@ void SlidingBoxDiagram::finish_recording(WorldBox& world) {
 namespace {
 /// What the friction's label says in each phase (the model's mu is both the
 /// kinetic and the static coefficient, section 1.12.3).
+/// Box heights: mg's and N's fixed length, short of the spring's arrow head at mid-height.
+constexpr double kVertical = 0.34;
 constexpr const char* kFrictionPhase[] = {" kinetic = μ<i>N</i>", " static ≤ μ<i>N</i>", " = μ<i>N</i> at the turn"};
 }  // namespace
 
@@ -72,27 +74,27 @@ std::vector<DrawnForce> SlidingBoxDiagram::forces(std::span<const double> row) c
   const HorizontalLayout& l = *layout_;
   const double u = row[1], v = row[2];
   const Point c = l.body_center(u);
+  // The floor's push on the box, N up and f along, from one point of the contact.
+  const Point foot(c.x() - 0.2 * l.body_width, 0);
   std::vector<DrawnForce> out;
   for (ForceKind kind : present(row)) switch (kind) {
       case ForceKind::spring:
         out.push_back({kind, {c, c + Point(scale_.length(-law_.spring(u)), 0)}, colors_.gravity, "−<i>s</i>(<i>u</i>)"});
         break;
-      case ForceKind::friction: {  // along the floor under the box, where it acts
-        const Point foot(c.x() - 0.2 * l.body_width, 0.02 * l.unit);
+      case ForceKind::friction: {  // along the floor, just above its line
+        const Point from = foot + Point(0, 0.02 * l.unit);
         char magnified[32] = "";
         if (friction_magnification_ != 1) std::snprintf(magnified, sizeof magnified, " \u00d7%g", friction_magnification_);
-        const Point tip = foot + Point(friction_magnification_ * scale_.length(law_.friction(u, v)), 0);
-        out.push_back({kind, {foot, tip}, colors_.drag,
+        const Point tip = from + Point(friction_magnification_ * scale_.length(law_.friction(u, v)), 0);
+        out.push_back({kind, {from, tip}, colors_.drag,
                        std::string("<i>f</i>") + magnified + kFrictionPhase[int(phase(row))]});
         break;
       }
-      case ForceKind::weight:  // down from the centre (a fixed length, see the class comment)
-        out.push_back({kind, {Point(c.x() + 0.2 * l.body_width, c.y()), Point(c.x() + 0.2 * l.body_width, c.y() - 0.42 * l.body_height)},
-                       colors_.wire_force, "<i>mg</i>"});
+      case ForceKind::weight:  // down from the centre, where the spring's force starts too
+        out.push_back({kind, {c, c - Point(0, kVertical * l.body_height)}, colors_.wire_force, "<i>mg</i>"});
         break;
-      case ForceKind::normal:  // up from the floor where the box stands on it, as long as mg
-        out.push_back({kind, {Point(c.x() + 0.38 * l.body_width, 0), Point(c.x() + 0.38 * l.body_width, 0.42 * l.body_height)},
-                       colors_.wire_force, "<i>N</i>"});
+      case ForceKind::normal:  // as long as mg: equal and opposite
+        out.push_back({kind, {foot, foot + Point(0, kVertical * l.body_height)}, colors_.wire_force, "<i>N</i>"});
         break;
       default: break;
     }
@@ -124,9 +126,9 @@ void SlidingBoxDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
                          Point(l.equilibrium_x() + u, l.body_height + 0.35 * l.unit), "<i>u</i>", Point(0, -1),
                          colors_.wire, colors_.background);
 
-  // Labels beside the shaft for the vertical forces (mg left, N right) and
-  // the friction's under the floor (pixel y points down), where there is room.
-  const std::map<ForceKind, Point> beside = {{ForceKind::weight, Point(-1, 0)}, {ForceKind::normal, Point(1, 0)},
+  // Labels beside the shaft for the vertical forces (N at the left, mg at
+  // the right) and the friction's under the floor (pixel y points down).
+  const std::map<ForceKind, Point> beside = {{ForceKind::weight, Point(1, 0)}, {ForceKind::normal, Point(-1, 0)},
                                              {ForceKind::friction, Point(0, 1)}};
   for (const DrawnForce& f : forces(row)) {
     const auto side = beside.find(f.kind);
