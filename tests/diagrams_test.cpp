@@ -20,30 +20,16 @@
 #include "scenes/diagrams/sliding_box_diagram.hpp"
 #include "scenes/diagrams/washing_machine_diagram.hpp"
 #include "scenes/scene_factory.hpp"
+#include "recorded_diagram.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;
 using namespace vibra::scenes;
 
 namespace {
-struct Recorded {
-  SceneConfig config;
-  std::unique_ptr<Diagram> diagram;
-  std::vector<std::vector<double>> rows;
-  WorldBox world;
-};
-
+using Recorded = vibra::test::RecordedDiagram;
 Recorded record(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& settings = {}) {
-  Recorded r{load_scene(scene), nullptr, {}, {}};
-  for (const auto& [k, v] : settings) apply_setting(r.config, {k, v, "test"});
-  const Parameters p = model_parameters_of(r.config);
-  auto run = find_model(r.config.model).build(p);
-  r.diagram = diagram_for(r.config).make({r.config, p, run->info()});
-  r.rows = vibra::test::rows(*run);
-  r.world.setEmpty();
-  for (const auto& row : r.rows) r.diagram->record(row, r.world);
-  r.diagram->finish_recording(r.world);
-  return r;
+  return vibra::test::record_diagram(scene, settings);
 }
 
 /// A built-in scene in layout fbd at w x h, its pre-pass over the run done.
@@ -68,9 +54,7 @@ RecordedScene record_scene(const std::string& name, int w, int h) {
 
 template <class T>
 T& as(const Recorded& r) {
-  auto* d = dynamic_cast<T*>(r.diagram.get());
-  REQUIRE(d != nullptr);
-  return *d;
+  return vibra::test::diagram_as<T>(r);
 }
 }  // namespace
 

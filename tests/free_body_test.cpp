@@ -16,39 +16,19 @@
 #include "scenes/diagrams/oscillator_diagram.hpp"
 #include "scenes/diagrams/sliding_box_diagram.hpp"
 #include "scenes/scene_factory.hpp"
-#include "test_support.hpp"
+#include "recorded_diagram.hpp"
 
 using namespace vibra;
 using namespace vibra::scenes;
 using Settings = std::vector<std::pair<std::string, std::string>>;
 
 namespace {
-struct Run {
-  SceneConfig config;
-  std::unique_ptr<Diagram> diagram;
-  std::vector<std::vector<double>> rows;
-  WorldBox world;
-};
-
-/// A built-in scene's diagram for the run `settings` give, its pre-pass done.
-Run run_of(const std::string& scene, const Settings& settings = {}) {
-  Run r{load_scene(scene), nullptr, {}, {}};
-  for (const auto& [k, v] : settings) apply_setting(r.config, {k, v, "test"});
-  const Parameters p = model_parameters_of(r.config);
-  auto trajectory = find_model(r.config.model).build(p);
-  r.diagram = diagram_for(r.config).make({r.config, p, trajectory->info()});
-  r.rows = vibra::test::rows(*trajectory);
-  r.world.setEmpty();
-  for (const auto& row : r.rows) r.diagram->record(row, r.world);
-  r.diagram->finish_recording(r.world);
-  return r;
-}
+using Run = vibra::test::RecordedDiagram;
+Run run_of(const std::string& scene, const Settings& settings = {}) { return vibra::test::record_diagram(scene, settings); }
 
 template <class T>
 T& as(const Run& r) {
-  auto* d = dynamic_cast<T*>(r.diagram.get());
-  REQUIRE(d != nullptr);
-  return *d;
+  return vibra::test::diagram_as<T>(r);
 }
 
 std::vector<ForceKind> kinds(const std::vector<DrawnForce>& forces) {
