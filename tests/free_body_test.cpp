@@ -96,7 +96,7 @@ Sticking sticking(double mu) {
 }
 }  // namespace
 
-TEST_CASE("bouncing ball: mg in flight; at rest on the ground N = mg up from it; the key lists N only "
+TEST_CASE("bouncing ball: mg in flight, at rest on the ground N = mg up from it, and the key lists N only "
           "for a run that rests",
           "[scene][diagram][free-body]") {
   const Run r = run_of("bouncing_ball");
@@ -135,7 +135,7 @@ TEST_CASE("bouncing ball: mg in flight; at rest on the ground N = mg up from it;
   CHECK(key_names(*short_run.diagram) == std::vector<std::string>{"mg weight"});
 }
 
-TEST_CASE("bouncing ball: what is drawn is the force list; the v arrow is to scale and never passes the ground",
+TEST_CASE("bouncing ball: what is drawn is the force list, and the v arrow is to scale and never passes the ground",
           "[scene][diagram][free-body]") {
   Run r = run_of("bouncing_ball");
   auto& d = as<BouncingBallDiagram>(r);

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <map>
 
 #include "render/draw/annotations.hpp"
 #include "render/draw/machine_elements.hpp"
@@ -59,15 +58,20 @@ void SlidingBoxDiagram::finish_recording(WorldBox& world) {
   friction_magnification_ = magnification_for(law_.mu, scale_.largest());
   world.extend(layout_->extent());
   world.extend(Point(layout_->equilibrium_x() + 2.3 * layout_->unit, 0));
-  world.extend(Point(layout_->equilibrium_x(), -0.75 * layout_->unit));  // the normal force's label under the floor
+  world.extend(Point(layout_->equilibrium_x(), -0.75 * layout_->unit));  // the labels of N and f under the floor
 }
 
 namespace {
-/// What the friction's label says in each phase (the model's mu is both the
-/// kinetic and the static coefficient, section 1.12.3).
 /// Box heights: mg's and N's fixed length, short of the spring's arrow head at mid-height.
 constexpr double kVertical = 0.34;
+/// What the friction's label says in each phase (the model's mu is both the
+/// kinetic and the static coefficient, section 1.12.3).
 constexpr const char* kFrictionPhase[] = {" kinetic = μ<i>N</i>", " static ≤ μ<i>N</i>", " = μ<i>N</i> at the turn"};
+/// Pixel side of a label beside its shaft (y down): N's at the left, mg's at
+/// the right, the friction's under the floor; the spring's goes past its tip.
+Point label_side(ForceKind kind) {
+  return kind == ForceKind::normal ? Point(-1, 0) : kind == ForceKind::weight ? Point(1, 0) : Point(0, 1);
+}
 }  // namespace
 
 std::vector<DrawnForce> SlidingBoxDiagram::forces(std::span<const double> row) const {
@@ -126,14 +130,9 @@ void SlidingBoxDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
                          Point(l.equilibrium_x() + u, l.body_height + 0.35 * l.unit), "<i>u</i>", Point(0, -1),
                          colors_.wire, colors_.background);
 
-  // Labels beside the shaft for the vertical forces (N at the left, mg at
-  // the right) and the friction's under the floor (pixel y points down).
-  const std::map<ForceKind, Point> beside = {{ForceKind::weight, Point(1, 0)}, {ForceKind::normal, Point(-1, 0)},
-                                             {ForceKind::friction, Point(0, 1)}};
   for (const DrawnForce& f : forces(row)) {
-    const auto side = beside.find(f.kind);
     render::ForceArrow arrow{f.arrow.from, f.arrow.to, f.color, f.label};
-    if (side != beside.end()) arrow.place = render::LabelPlace::beside, arrow.side = side->second;
+    if (f.kind != ForceKind::spring) arrow.place = render::LabelPlace::beside, arrow.side = label_side(f.kind);
     render::draw_force_arrow(canvas, view, arrow, colors_.background);
   }
 }

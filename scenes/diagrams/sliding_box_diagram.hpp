@@ -18,7 +18,7 @@ namespace vibra::scenes {
 /// friction cannot hold (|s(u)| > mu), mu N against the coming motion; once
 /// stuck, the static friction s(u), equal and opposite to the spring force
 /// and at most mu N. The normal force N acts up from the floor where the box
-/// stands on it, the weight mg down from its centre. The scaled model knows forces in units of
+/// stands on it, from the friction's point, the weight mg down from its centre. The scaled model knows forces in units of
 /// the initial spring force only, not the weight, so N and mg are drawn at a
 /// fixed length (equal and opposite), not to the force scale. Friction much
 /// smaller than the spring force is magnified (by 2, 5, 10, ...) and its
