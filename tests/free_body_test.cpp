@@ -195,6 +195,9 @@ TEST_CASE("sliding box: kinetic friction mu N against v while sliding, static fr
     CHECK(n.to.y() > 0);
     CHECK(n.to.y() - n.from.y() == Approx(w.from.y() - w.to.y()).epsilon(1e-12));
     const double per = (spring.arrow.to.x() - spring.arrow.from.x()) / -row[1];  // s(u) = u
+    // The spring runs from the wall to the box: u < 0 compresses it, and it pushes.
+    CHECK(spring.label.find(row[1] < 0 ? ", compressed" : ", stretched") != std::string::npos);
+    CHECK((per * -row[1] > 0) == (row[1] < 0));
     const double f = (friction.arrow.to.x() - friction.arrow.from.x()) / (m * per);
     if (row[0] == 0) {
       // Released from rest at u = 1 > mu: friction at its limit against the motion to come.
@@ -234,6 +237,29 @@ TEST_CASE("sliding box: kinetic friction mu N against v while sliding, static fr
     CHECK(drawn_labels(d, r.world, row) == expected);
   }
   CHECK(key_names(d) == std::vector<std::string>{"−s(u) spring", "f friction", "mg, N weight, floor"});
+}
+
+TEST_CASE("the spring's force is named compressed when u < 0 and it pushes, stretched when it pulls",
+          "[scene][diagram][free-body]") {
+  Run r = run_of("spring");
+  auto& d = as<OscillatorDiagram>(r);
+  int compressed = 0, stretched = 0;
+  for (size_t i = 1; i < r.rows.size(); i += 7) {
+    const auto& row = r.rows[i];
+    const Arrow a = d.force_arrows(row).front();
+    const std::string label = drawn_labels(d, r.world, row).at(1);  // after u's dimension
+    if (row[1] < 0) {
+      ++compressed;
+      CHECK(a.to.x() > a.from.x());  // pushes the body away from the wall
+      CHECK(label == "−<i>ku</i>, compressed");
+    } else if (row[1] > 0) {
+      ++stretched;
+      CHECK(a.to.x() < a.from.x());  // pulls it toward the wall
+      CHECK(label == "−<i>ku</i>, stretched");
+    }
+  }
+  CHECK(compressed > 5);
+  CHECK(stretched > 5);
 }
 
 TEST_CASE("keys list exactly the forces a run has: no friction without mu, no damper without b",

@@ -21,6 +21,13 @@ struct DrawnForce {
   std::string label;
 };
 
+/// What a spring's force label adds about the spring (section 1.12.1): a
+/// spring from a wall to a body whose displacement u from its natural length
+/// is `extension` pushes when compressed and pulls when stretched.
+inline const char* spring_state(double extension) {
+  return extension < 0 ? ", compressed" : extension > 0 ? ", stretched" : "";
+}
+
 /// One row of a diagram's key: the entry shown when the run drew `kind`.
 struct KeyEntry {
   ForceKind kind;
