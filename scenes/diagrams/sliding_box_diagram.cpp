@@ -83,8 +83,7 @@ std::vector<DrawnForce> SlidingBoxDiagram::forces(std::span<const double> row) c
   std::vector<DrawnForce> out;
   for (ForceKind kind : present(row)) switch (kind) {
       case ForceKind::spring:
-        out.push_back({kind, {c, c + Point(scale_.length(-law_.spring(u)), 0)}, colors_.gravity,
-                       "−<i>s</i>(<i>u</i>)" + std::string(spring_state(u))});
+        out.push_back({kind, {c, c + Point(scale_.length(-law_.spring(u)), 0)}, colors_.gravity, "−<i>s</i>(<i>u</i>)"});
         break;
       case ForceKind::friction: {  // along the floor, just above its line
         const Point from = foot + Point(0, 0.02 * l.unit);
