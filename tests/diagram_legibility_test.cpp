@@ -154,7 +154,8 @@ TEST_CASE("the force key names each force drawn, in its arrow's colour, clear of
     for (const OutlineShape& s : frame.outline.shapes()) {
       if (s.kind != OutlineKind::text) continue;
       for (const char* force : {"gravity", "wire force", "air drag", "spring", "damping", "damper", "friction",
-                                "driving force", "forcing", "weight, floor", "wire (spring) force"})
+                                "driving force", "forcing", "weight, floor", "wire (spring) force", "weight",
+                                "at rest", "static load"})
         if (s.name.size() > std::strlen(force) && s.name.compare(s.name.size() - std::strlen(force), std::string::npos, force) == 0) {
           names.push_back(s.name);
           // A name covers nothing the diagram draws.
@@ -176,8 +177,9 @@ TEST_CASE("the force key names each force drawn, in its arrow's colour, clear of
         Names{"−<i>ku</i> spring", "−<i>bu</i>′ damping", "<i>F</i>(<i>t</i>) driving force"});
   CHECK(names_in("sliding_box", {}).size() == 3);
   CHECK(names_in("washing_machine", {}).size() == 3);
-  CHECK(names_in("bumpy_road", {}) == Names{"−<i>ku</i> spring", "−<i>bu</i>′ damper"});
+  CHECK(names_in("bumpy_road", {}) == Names{"−<i>ku</i> spring beyond its static load", "−<i>bu</i>′ damper"});
   CHECK(names_in("elastic_pendulum", {}).size() == 3);
+  CHECK(names_in("bouncing_ball", {}) == Names{"<i>mg</i> weight", "<i>N</i> ground, at rest"});
 }
 
 TEST_CASE("a panel's legend sits on its title row, off the data, where the row has room", "[legibility][panels]") {

@@ -20,30 +20,16 @@
 #include "scenes/diagrams/sliding_box_diagram.hpp"
 #include "scenes/diagrams/washing_machine_diagram.hpp"
 #include "scenes/scene_factory.hpp"
+#include "recorded_diagram.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;
 using namespace vibra::scenes;
 
 namespace {
-struct Recorded {
-  SceneConfig config;
-  std::unique_ptr<Diagram> diagram;
-  std::vector<std::vector<double>> rows;
-  WorldBox world;
-};
-
+using Recorded = vibra::test::RecordedDiagram;
 Recorded record(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& settings = {}) {
-  Recorded r{load_scene(scene), nullptr, {}, {}};
-  for (const auto& [k, v] : settings) apply_setting(r.config, {k, v, "test"});
-  const Parameters p = model_parameters_of(r.config);
-  auto run = find_model(r.config.model).build(p);
-  r.diagram = diagram_for(r.config).make({r.config, p, run->info()});
-  r.rows = vibra::test::rows(*run);
-  r.world.setEmpty();
-  for (const auto& row : r.rows) r.diagram->record(row, r.world);
-  r.diagram->finish_recording(r.world);
-  return r;
+  return vibra::test::record_diagram(scene, settings);
 }
 
 /// A built-in scene in layout fbd at w x h, its pre-pass over the run done.
@@ -68,9 +54,7 @@ RecordedScene record_scene(const std::string& name, int w, int h) {
 
 template <class T>
 T& as(const Recorded& r) {
-  auto* d = dynamic_cast<T*>(r.diagram.get());
-  REQUIRE(d != nullptr);
-  return *d;
+  return vibra::test::diagram_as<T>(r);
 }
 }  // namespace
 
@@ -111,15 +95,19 @@ TEST_CASE("sliding box diagram: the friction arrow is kinetic while sliding, sta
   law.mu = 0.2;
   bool saw_rest = false;
   for (const auto& row : r.rows) {
-    const auto arrows = d.force_arrows(row);
-    const double per = (arrows[0].to.x() - arrows[0].from.x()) / -law.spring(row[1]);
-    const double friction = (arrows[1].to.x() - arrows[1].from.x());
+    Arrow spring{}, friction{};
+    for (const DrawnForce& f : d.forces(row)) {
+      if (f.kind == ForceKind::spring) spring = f.arrow;
+      if (f.kind == ForceKind::friction) friction = f.arrow;
+    }
+    const double per = (spring.to.x() - spring.from.x()) / -law.spring(row[1]);
+    const double pull = friction.to.x() - friction.from.x();
     const double m = d.friction_magnification();
-    if (row[2] != 0) CHECK(friction == Approx(-0.2 * (row[2] > 0 ? 1 : -1) * per * m).epsilon(1e-9));
+    if (row[2] != 0) CHECK(pull == Approx(-0.2 * (row[2] > 0 ? 1 : -1) * per * m).epsilon(1e-9));
     if (row[2] == 0 && row[0] > 1) {
       saw_rest = true;
       // Static friction balances the spring: the two arrows are opposite, equal but for the magnification.
-      CHECK(friction == Approx(-m * (arrows[0].to.x() - arrows[0].from.x())).margin(1e-12));
+      CHECK(pull == Approx(-m * (spring.to.x() - spring.from.x())).margin(1e-12));
     }
   }
   CHECK(saw_rest);
@@ -159,8 +147,11 @@ TEST_CASE("bumpy road diagram: the wheel on the road, the body at L + u over the
     const auto& row = r.rows[i];
     CHECK(d.axle(row).y() == Approx(row[4] + R));
     CHECK(d.body_bottom(row) == Approx(row[4] + R + L + row[1]));
-    const auto arrows = d.force_arrows(row);
-    const double spring = arrows[0].to.y() - arrows[0].from.y(), damper = arrows[1].to.y() - arrows[1].from.y();
+    const auto forces = d.forces(row);
+    REQUIRE(forces.size() == 2);
+    const Arrow& s = forces[0].arrow;
+    const Arrow& f = forces[1].arrow;
+    const double spring = s.to.y() - s.from.y(), damper = f.to.y() - f.from.y();
     if (std::abs(row[1]) > 1e-3 && std::abs(row[2]) > 1e-2) CHECK(damper / spring == Approx((b * row[2]) / (k * row[1])).epsilon(1e-9));
     // The view follows the vehicle.
     const auto view = d.view_at(row);
@@ -213,9 +204,9 @@ TEST_CASE("bouncing ball diagram: the ball on the ground at h, v to one scale, t
   for (const auto& row : r.rows) {
     highest = std::max(highest, row[1]);
     CHECK(d.ball_center(row).y() - d.radius() == Approx(row[1]).margin(1e-15));
-    const auto v = d.velocity_arrow(row), w = d.weight_arrow(row);
+    const auto v = d.velocity_arrow(row);
+    const Arrow w = d.forces(row).front().arrow;
     CHECK(v.to.x() == v.from.x());
-    CHECK(v.from.y() == d.ball_center(row).y());
     if (std::abs(row[2]) > 0.1) {
       if (per_speed == 0) per_speed = (v.to.y() - v.from.y()) / row[2];
       CHECK((v.to.y() - v.from.y()) / row[2] == Approx(per_speed).epsilon(1e-12));

@@ -14,6 +14,7 @@ namespace vibra::scenes {
 namespace {
 // Proportions of the drawing, in units of the highest point reached.
 constexpr double kRadius = 0.07, kLongestVelocity = 0.42, kArrowOffset = 2.2;
+constexpr double kWeightLength = 2.4;  ///< radii: mg's arrow (and N's at rest), the key's unit
 // The tally of impacts: dots in rows of kTallyRow, right of the ball.
 constexpr int kTallyRow = 8, kTallyMost = 40;  // beyond, the count alone
 constexpr double kTallyLeft = 0.34, kTallySpacing = 0.045, kTallyDot = 0.014;
@@ -36,6 +37,8 @@ void BouncingBallDiagram::record_other(std::span<const double> row, WorldBox&) {
 
 void BouncingBallDiagram::record(std::span<const double> row, WorldBox& world) {
   record_other(row, world);
+  seen_.see(ForceKind::weight);
+  if (at_rest(row)) seen_.see(ForceKind::normal);
   // A step that ends moving up (or at rest) after moving down held an impact:
   // the previous row's parabola h + v s - g s^2/2 reaches 0 at s.
   if (!previous_.empty() && previous_[2] < 0 && row[2] >= 0) {
@@ -49,23 +52,44 @@ void BouncingBallDiagram::finish_recording(WorldBox& world) {
   const double H = highest_ > 0 ? highest_ : 1;
   radius_ = kRadius * H;
   per_speed_ = fastest_ > 0 ? kLongestVelocity * H / fastest_ : 0;
-  // The ball's top at its highest, the velocity arrow below the ground when
-  // it lands, the weight's and the tally's labels at the sides.
+  // The ball's top at its highest, the weight's and the tally's labels at
+  // the sides, the hatching under the ground (no arrow goes below it).
   world.extend(Point(-0.75 * H, H + 2 * radius_ + 0.05 * H));
-  world.extend(Point(0.75 * H, radius_ - kLongestVelocity * H - 0.05 * H));
+  world.extend(Point(0.75 * H, 0));
   world.extend(Point(0, -0.12 * H));
 }
 
 Arrow BouncingBallDiagram::velocity_arrow(std::span<const double> row) const {
-  const Point from = ball_center(row) + Point(kArrowOffset * radius_, 0);
-  return {from, from + Point(0, per_speed_ * row[2])};
+  // From the ball's centre beside it; a downward arrow that would reach
+  // below the ground is lifted to end on it (the ball about to land).
+  Point from = ball_center(row) + Point(kArrowOffset * radius_, 0);
+  const double length = per_speed_ * row[2];
+  from.y() += std::max(0.0, -(from.y() + length));
+  return {from, from + Point(0, length)};
 }
 
-Arrow BouncingBallDiagram::weight_arrow(std::span<const double> row) const {
-  // Beside the ball, from above its top down to the level of its bottom, so
-  // that it ends on the ground, not in it, when the ball lands.
-  const Point c = ball_center(row) - Point(kArrowOffset * radius_, 0);
-  return {c + Point(0, 1.4 * radius_), c - Point(0, radius_)};
+std::vector<DrawnForce> BouncingBallDiagram::forces(std::span<const double> row) const {
+  // The weight beside the ball, from above its top down to the level of its
+  // bottom, so that it ends on the ground, not in it, when the ball lands.
+  const Point c = ball_center(row), beside = c - Point(kArrowOffset * radius_, 0);
+  const double length = kWeightLength * radius_;
+  std::vector<DrawnForce> out = {{ForceKind::weight, {beside + Point(0, length - radius_), beside - Point(0, radius_)},
+                                  colors_.gravity, "<i>mg</i>"}};
+  // At rest the ground holds it up: N = mg, up from the level of the
+  // contact, beside the ball opposite mg (through the ball it would hide).
+  const Point contact_level = c + Point(kArrowOffset * radius_, -radius_);
+  if (at_rest(row))
+    out.push_back({ForceKind::normal, {contact_level, contact_level + Point(0, length)}, colors_.wire_force,
+                   "<i>N</i> = <i>mg</i>"});
+  return out;
+}
+
+std::optional<ForceKey> BouncingBallDiagram::force_key() const {
+  const std::vector<KeyEntry> table = {
+      {ForceKind::weight, {colors_.gravity, "<i>mg</i> weight"}},
+      {ForceKind::normal, {colors_.wire_force, "<i>N</i> ground, at rest"}},
+  };
+  return ForceKey{kWeightLength * radius_, "<i>mg</i>", "burst: impulse at impact", seen_.names(table)};
 }
 
 void BouncingBallDiagram::draw_static(render::Canvas& canvas, const render::WorldView& view) const {
@@ -103,11 +127,12 @@ void BouncingBallDiagram::draw(render::Canvas& canvas, const render::WorldView& 
   render::draw_text(canvas, view.to_pixel(Point((kTallyLeft - kTallyDot) * H, (rows * kTallySpacing + 0.02) * H)), tally,
                     label, render::Anchor::bottom_left);
 
-  const Point c = ball_center(row);
-  render::draw_circle(canvas, view, c, radius_, colors_.bob, {colors_.wire, 1.8});
-  const Arrow w = weight_arrow(row), v = velocity_arrow(row);
-  render::draw_force_arrow(canvas, view, {w.from, w.to, colors_.gravity, "<i>mg</i>", render::LabelPlace::beside,
-                                          Point(-1, 0)}, colors_.background);
+  render::draw_circle(canvas, view, ball_center(row), radius_, colors_.bob, {colors_.wire, 1.8});
+  for (const DrawnForce& f : forces(row))
+    render::draw_force_arrow(canvas, view, {f.arrow.from, f.arrow.to, f.color, f.label, render::LabelPlace::beside,
+                                            Point(f.kind == ForceKind::weight ? -1 : 1, 0)}, colors_.background);
+  if (at_rest(row)) return;  // v = 0: no arrow beside the normal force's label
+  const Arrow v = velocity_arrow(row);
   render::draw_force_arrow(canvas, view, {v.from, v.to, colors_.bob, "<i>v</i>", render::LabelPlace::beside, Point(1, 0)},
                            colors_.background);
 }

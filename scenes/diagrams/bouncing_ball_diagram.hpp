@@ -3,15 +3,19 @@
 #include <vector>
 
 #include "scenes/diagrams/diagram.hpp"
+#include "scenes/diagrams/drawn_force.hpp"
 #include "scenes/scene_style.hpp"
 
 namespace vibra::scenes {
 
 /// The bouncing ball of section 1.12.9 for the `bouncing-ball` model: the
 /// hatched ground, the ball resting on it at height h, its velocity arrow
-/// (to one scale over the run) and the weight mg (a fixed length: one force
-/// only, nothing to compare it with), a burst on the ground at each impact
-/// that fades within a fifth of a period, and a tally of the impacts so far.
+/// (to one scale over the run, lifted to end on the ground rather than pass
+/// through it), the weight mg and, once the ball rests on the ground, the
+/// normal force N = mg up from the ground beside it (both one length: the key's
+/// unit is mg). An impact lasts no time in the model (section 1.12.9): the
+/// ground's impulse reverses v and is drawn as a burst on the ground that
+/// fades within a fifth of a period, not as a force; a tally counts them.
 /// Panels: h with the exact height dashed, and v, whose jumps at the impacts
 /// are vertical.
 class BouncingBallDiagram final : public Diagram {
@@ -24,10 +28,14 @@ class BouncingBallDiagram final : public Diagram {
   void draw_static(render::Canvas&, const render::WorldView&) const override;
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
+  std::optional<ForceKey> force_key() const override;
 
-  /// The velocity arrow (to scale) and the weight, in world units.
+  /// The velocity arrow (to scale, never below the ground), in world units.
   Arrow velocity_arrow(std::span<const double> row) const;
-  Arrow weight_arrow(std::span<const double> row) const;
+  /// The forces on the ball at a row: the weight, and the normal force while it rests.
+  std::vector<DrawnForce> forces(std::span<const double> row) const;
+  /// Resting on the ground: the model holds h = 0, v = 0 from its last impact on.
+  static bool at_rest(std::span<const double> row) { return row[1] == 0 && row[2] == 0; }
   Point ball_center(std::span<const double> row) const { return Point(0, row[1] + radius_); }
   double radius() const { return radius_; }
   /// The impact times found in the pre-pass (from each step that rebounds,
@@ -42,6 +50,7 @@ class BouncingBallDiagram final : public Diagram {
   double radius_ = 0, per_speed_ = 0;
   std::vector<double> impacts_;
   std::vector<double> previous_;  ///< the pre-pass's previous row
+  ForcesSeen seen_;               ///< over this run's rows: the key's entries
 };
 
 }  // namespace vibra::scenes

@@ -68,11 +68,17 @@ std::optional<WorldBox> BumpyRoadDiagram::view_at(std::span<const double> row) c
   return WorldBox(Point(row[3] - half_width_, low_), Point(row[3] + half_width_, high_));
 }
 
-std::array<Arrow, 2> BumpyRoadDiagram::force_arrows(std::span<const double> row) const {
+std::vector<DrawnForce> BumpyRoadDiagram::forces(std::span<const double> row) const {
+  // Vertical, from the body's centre line: the spring's at the left, the damper's (only with b > 0) at the right.
   const Point c(row[3], body_bottom(row) + 0.5 * body_height_);
   const double dx = 0.28 * body_width_;
-  return {Arrow{c - Point(dx, 0), c + Point(-dx, scale_.length(-vehicle_.k * row[1]))},
-          Arrow{c + Point(dx, 0), c + Point(dx, scale_.length(-vehicle_.b * row[2]))}};
+  std::vector<DrawnForce> out = {
+      {ForceKind::spring, {c - Point(dx, 0), c + Point(-dx, scale_.length(-vehicle_.k * row[1]))}, colors_.gravity,
+       "−<i>ku</i>"}};
+  if (vehicle_.b > 0)
+    out.push_back({ForceKind::damper, {c + Point(dx, 0), c + Point(dx, scale_.length(-vehicle_.b * row[2]))},
+                   colors_.drag, "−<i>bu</i>′"});
+  return out;
 }
 
 void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
@@ -97,15 +103,16 @@ void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& vie
                    colors_.bob.with_alpha(0.85), {colors_.wire, 1.8});
   if (ghost()) return;
 
-  const auto arrows = force_arrows(row);
-  render::draw_force_arrow(canvas, view, {arrows[0].from, arrows[0].to, colors_.gravity, "−<i>ku</i>"}, colors_.background);
-  render::draw_force_arrow(canvas, view, {arrows[1].from, arrows[1].to, colors_.drag, "−<i>bu</i>′"}, colors_.background);
+  for (const DrawnForce& f : forces(row))
+    render::draw_force_arrow(canvas, view, {f.arrow.from, f.arrow.to, f.color, f.label}, colors_.background);
 }
 
 std::optional<ForceKey> BumpyRoadDiagram::force_key() const {
   char note[64] = "";
   if (factor_ != 1) std::snprintf(note, sizeof note, "heights drawn ×%g", factor_);
-  std::vector<ForceName> names = {{colors_.gravity, "−<i>ku</i> spring"}};
+  // u is measured from the rest height, where the spring's static load
+  // carries the weight: the two cancel, and the name says why neither is drawn.
+  std::vector<ForceName> names = {{colors_.gravity, "−<i>ku</i> spring beyond its static load"}};
   if (vehicle_.b > 0) names.push_back({colors_.drag, "−<i>bu</i>′ damper"});
   return ForceKey{scale_.per_force(), "N", note, names};
 }

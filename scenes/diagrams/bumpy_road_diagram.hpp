@@ -1,11 +1,11 @@
 #pragma once
-#include <array>
 #include <memory>
 #include <optional>
 
 #include "core/road_profile.hpp"
 #include "render/draw/ground_profile.hpp"
 #include "scenes/diagrams/diagram.hpp"
+#include "scenes/diagrams/drawn_force.hpp"
 #include "scenes/diagrams/force_scale.hpp"
 #include "scenes/scene_style.hpp"
 
@@ -15,7 +15,9 @@ namespace vibra::scenes {
 /// the road profile, a wheel of radius R rolling on it at x = s t, a spring
 /// and a damper from the axle up to the body, whose height over the axle is
 /// L + u; arrows on the body for the spring force -k u and the damper force
-/// -b u' (in newtons, to one scale). The view follows the vehicle; heights
+/// -b u' (in newtons, to one scale; no damper arrow when b = 0). u is
+/// measured from the rest height, where the spring's static load balances
+/// the weight mg: the two cancel and neither is drawn (the key's name for -k u says so). The view follows the vehicle; heights
 /// are fixed from the pre-pass. Heights (the road's and the body's u) are
 /// drawn `exaggeration()` times larger, said in the force key: a few
 /// centimetres under a metre-high vehicle would otherwise be a few pixels.
@@ -47,8 +49,8 @@ class BumpyRoadDiagram final : public Diagram {
   /// Where the spring (left) and the damper (right) stand, from the axle's
   /// centre: outside the wheel, so that neither crosses its rim.
   double strut_offset() const { return 0.4 * body_width_; }
-  /// Spring and damper force arrows at a row, in world units.
-  std::array<Arrow, 2> force_arrows(std::span<const double> row) const;
+  /// The spring's force and (when b > 0) the damper's at a row, in world units.
+  std::vector<DrawnForce> forces(std::span<const double> row) const;
 
  private:
   std::shared_ptr<const RoadProfile> road_;

@@ -117,7 +117,8 @@ void OscillatorDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
 
   const std::vector<Arrow> arrows = force_arrows(row);
   const render::Color colors[] = {colors_.gravity, has_damper() ? colors_.drag : colors_.wire_force, colors_.wire_force};
-  const std::string labels[] = {kSpringLabel[law_.s ? 1 : 0], has_damper() ? damper_label(law_.damping) : "<i>F</i>(<i>t</i>)",
+  // The spring runs from the wall to the body: u < 0 compresses it.
+  const std::string labels[] = {kSpringLabel[law_.s ? 1 : 0] + std::string(spring_state(u)), has_damper() ? damper_label(law_.damping) : "<i>F</i>(<i>t</i>)",
                                 "<i>F</i>(<i>t</i>)"};
   for (size_t i = 0; i < arrows.size(); ++i)
     render::draw_force_arrow(canvas, view, {arrows[i].from, arrows[i].to, colors[i], labels[i]}, colors_.background);
@@ -127,7 +128,8 @@ std::optional<ForceKey> OscillatorDiagram::force_key() const {
   std::vector<ForceName> names = {{colors_.gravity, std::string(kSpringLabel[law_.s ? 1 : 0]) + " spring"}};
   if (has_damper()) names.push_back({colors_.drag, damper_label(law_.damping) + " damping"});
   if (law_.F) names.push_back({colors_.wire_force, "<i>F</i>(<i>t</i>) driving force"});
-  return ForceKey{scale_.per_force(), "", "", names};
+  // On wheels on a level floor: the weight and the floor's push cancel, and only horizontal forces move it.
+  return ForceKey{scale_.per_force(), "", "<i>mg</i>, <i>N</i> cancel: not drawn", names};
 }
 
 DiagramKind oscillator_diagram_kind() {

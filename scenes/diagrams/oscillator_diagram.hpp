@@ -4,6 +4,7 @@
 
 #include "core/models/vibration_law.hpp"
 #include "scenes/diagrams/diagram.hpp"
+#include "scenes/diagrams/drawn_force.hpp"
 #include "scenes/diagrams/force_scale.hpp"
 #include "scenes/horizontal_layout.hpp"
 #include "scenes/scene_style.hpp"

@@ -27,6 +27,19 @@ void SlidingBoxDiagram::record(std::span<const double> row, WorldBox&) {
   largest_u_ = std::max(largest_u_, std::abs(row[1]));
   scale_.see(law_.spring(row[1]));
   scale_.see(law_.friction(row[1], row[2]));
+  for (ForceKind kind : present(row)) seen_.see(kind);
+}
+
+SlidingBoxDiagram::Phase SlidingBoxDiagram::phase(std::span<const double> row) const {
+  if (row[2] != 0) return Phase::sliding;
+  return law_.holds(row[1]) ? Phase::stuck : Phase::turning;
+}
+
+std::vector<ForceKind> SlidingBoxDiagram::present(std::span<const double> row) const {
+  std::vector<ForceKind> kinds = {ForceKind::weight, ForceKind::normal};
+  if (law_.spring(row[1]) != 0) kinds.push_back(ForceKind::spring);
+  if (law_.mu > 0 && law_.friction(row[1], row[2]) != 0) kinds.push_back(ForceKind::friction);
+  return kinds;
 }
 
 namespace {
@@ -45,15 +58,51 @@ void SlidingBoxDiagram::finish_recording(WorldBox& world) {
   friction_magnification_ = magnification_for(law_.mu, scale_.largest());
   world.extend(layout_->extent());
   world.extend(Point(layout_->equilibrium_x() + 2.3 * layout_->unit, 0));
-  world.extend(Point(layout_->equilibrium_x(), -0.75 * layout_->unit));  // the normal force's label under the floor
+  world.extend(Point(layout_->equilibrium_x(), -0.75 * layout_->unit));  // the labels of N and f under the floor
 }
 
-std::array<Arrow, 2> SlidingBoxDiagram::force_arrows(std::span<const double> row) const {
+namespace {
+/// Box heights: mg's and N's fixed length, short of the spring's arrow head at mid-height.
+constexpr double kVertical = 0.34;
+/// What the friction's label says in each phase (the model's mu is both the
+/// kinetic and the static coefficient, section 1.12.3).
+constexpr const char* kFrictionPhase[] = {" kinetic = μ<i>N</i>", " static ≤ μ<i>N</i>", " = μ<i>N</i> at the turn"};
+/// Pixel side of a label beside its shaft (y down): N's at the left, mg's at
+/// the right, the friction's under the floor; the spring's goes past its tip.
+Point label_side(ForceKind kind) {
+  return kind == ForceKind::normal ? Point(-1, 0) : kind == ForceKind::weight ? Point(1, 0) : Point(0, 1);
+}
+}  // namespace
+
+std::vector<DrawnForce> SlidingBoxDiagram::forces(std::span<const double> row) const {
+  const HorizontalLayout& l = *layout_;
   const double u = row[1], v = row[2];
-  const Point c = layout_->body_center(u);
-  const Point foot(c.x() - 0.2 * layout_->body_width, 0.02 * layout_->unit);
-  return {Arrow{c, c + Point(scale_.length(-law_.spring(u)), 0)},
-          Arrow{foot, foot + Point(friction_magnification_ * scale_.length(law_.friction(u, v)), 0)}};
+  const Point c = l.body_center(u);
+  // The floor's push on the box, N up and f along, from one point of the contact.
+  const Point foot(c.x() - 0.2 * l.body_width, 0);
+  std::vector<DrawnForce> out;
+  for (ForceKind kind : present(row)) switch (kind) {
+      case ForceKind::spring:
+        out.push_back({kind, {c, c + Point(scale_.length(-law_.spring(u)), 0)}, colors_.gravity, "−<i>s</i>(<i>u</i>)"});
+        break;
+      case ForceKind::friction: {  // along the floor, just above its line
+        const Point from = foot + Point(0, 0.02 * l.unit);
+        char magnified[32] = "";
+        if (friction_magnification_ != 1) std::snprintf(magnified, sizeof magnified, " \u00d7%g", friction_magnification_);
+        const Point tip = from + Point(friction_magnification_ * scale_.length(law_.friction(u, v)), 0);
+        out.push_back({kind, {from, tip}, colors_.drag,
+                       std::string("<i>f</i>") + magnified + kFrictionPhase[int(phase(row))]});
+        break;
+      }
+      case ForceKind::weight:  // down from the centre, where the spring's force starts too
+        out.push_back({kind, {c, c - Point(0, kVertical * l.body_height)}, colors_.wire_force, "<i>mg</i>"});
+        break;
+      case ForceKind::normal:  // as long as mg: equal and opposite
+        out.push_back({kind, {foot, foot + Point(0, kVertical * l.body_height)}, colors_.wire_force, "<i>N</i>"});
+        break;
+      default: break;
+    }
+  return out;
 }
 
 void SlidingBoxDiagram::draw_static(render::Canvas& canvas, const render::WorldView& view) const {
@@ -68,7 +117,7 @@ void SlidingBoxDiagram::draw_static(render::Canvas& canvas, const render::WorldV
 
 void SlidingBoxDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
   const HorizontalLayout& l = *layout_;
-  const double u = row[1], v = row[2];
+  const double u = row[1];
   const render::Stroke ink{colors_.wire, 2.2};
   const double left = l.body_left(u);
   render::SpringShape spring;
@@ -81,36 +130,25 @@ void SlidingBoxDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
                          Point(l.equilibrium_x() + u, l.body_height + 0.35 * l.unit), "<i>u</i>", Point(0, -1),
                          colors_.wire, colors_.background);
 
-  // Weight and normal force: equal and opposite, a fixed length (see the class
-  // comment); the normal force pushes up on the box's bottom from the floor.
-  const Point c = l.body_center(u);
-  const double x_weight = c.x() + 0.2 * l.body_width, x_normal = c.x() + 0.38 * l.body_width;
-  render::draw_force_arrow(canvas, view, {Point(x_weight, c.y()), Point(x_weight, c.y() - 0.42 * l.body_height),
-                                          colors_.wire_force, "<i>mg</i>", render::LabelPlace::beside, Point(-1, 0)},
-                           colors_.background);
-  render::draw_force_arrow(canvas, view, {Point(x_normal, -0.42 * l.body_height), Point(x_normal, 0), colors_.wire_force,
-                                          "<i>N</i>", render::LabelPlace::beside, Point(1, 0)}, colors_.background);
-  const auto arrows = force_arrows(row);
-  render::draw_force_arrow(canvas, view, {arrows[0].from, arrows[0].to, colors_.gravity, "−<i>s</i>(<i>u</i>)"},
-                           colors_.background);
-  char magnified[32] = "";
-  if (friction_magnification_ != 1) std::snprintf(magnified, sizeof magnified, " \u00d7%g", friction_magnification_);
-  const std::string label = std::string("<i>f</i>") + magnified + (v != 0 ? " kinetic" : " static");
-  render::draw_force_arrow(canvas, view, {arrows[1].from, arrows[1].to, colors_.drag, label, render::LabelPlace::beside,
-                                          Point(0, 1)}, colors_.background);
+  for (const DrawnForce& f : forces(row)) {
+    render::ForceArrow arrow{f.arrow.from, f.arrow.to, f.color, f.label};
+    if (f.kind != ForceKind::spring) arrow.place = render::LabelPlace::beside, arrow.side = label_side(f.kind);
+    render::draw_force_arrow(canvas, view, arrow, colors_.background);
+  }
 }
 
 std::optional<ForceKey> SlidingBoxDiagram::force_key() const {
   // mg and N are drawn at a fixed length: the key says so.
   std::string note = "<i>mg</i>, <i>N</i> not to scale";
-  if (friction_magnification_ != 1) {
+  if (friction_magnification_ != 1 && seen_.has(ForceKind::friction)) {
     char magnified[64];
     std::snprintf(magnified, sizeof magnified, "<i>f</i> drawn \u00d7%g, ", friction_magnification_);
     note = magnified + note;
   }
-  return ForceKey{scale_.per_force(), "", note,
-                  {{colors_.gravity, "−<i>s</i>(<i>u</i>) spring"}, {colors_.drag, "<i>f</i> friction"},
-                   {colors_.wire_force, "<i>mg</i>, <i>N</i> weight, floor"}}};
+  const std::vector<KeyEntry> table = {{ForceKind::spring, {colors_.gravity, "−<i>s</i>(<i>u</i>) spring"}},
+                                       {ForceKind::friction, {colors_.drag, "<i>f</i> friction"}},
+                                       {ForceKind::weight, {colors_.wire_force, "<i>mg</i>, <i>N</i> weight, floor"}}};
+  return ForceKey{scale_.per_force(), "", note, seen_.names(table)};
 }
 
 DiagramKind sliding_box_diagram_kind() {
