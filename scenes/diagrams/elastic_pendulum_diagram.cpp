@@ -10,7 +10,7 @@ namespace vibra::scenes {
 
 namespace {
 const Point kPivot(0, 1);
-constexpr double kBob = 0.06, kLongestArrow = 0.45;
+constexpr double kLongestArrow = 0.45;
 Point position(std::span<const double> row) { return Point(row[1], row[2]); }
 Point velocity(std::span<const double> row) { return Point(row[3], row[4]); }
 }  // namespace
@@ -38,6 +38,7 @@ void ElasticPendulumDiagram::record(std::span<const double> row, WorldBox& world
 
 void ElasticPendulumDiagram::record_other(std::span<const double> row, WorldBox&) {
   bodies_.extend(position(row));
+  support_.see(position(row), kBob);
   scale_.see(1);
   scale_.see(wire_force(row));
   scale_.see(gamma_ / (beta_ * beta_) * velocity(row).squaredNorm());
@@ -62,7 +63,7 @@ std::array<Arrow, 3> ElasticPendulumDiagram::force_arrows(std::span<const double
 }
 
 void ElasticPendulumDiagram::draw_static(render::Canvas& canvas, const render::WorldView& view) const {
-  render::draw_ceiling(canvas, view, kPivot, 0.3, {colors_.wire, 2.2});
+  support_.draw(canvas, view, colors_.wire);
 }
 
 void ElasticPendulumDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {

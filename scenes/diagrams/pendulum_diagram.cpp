@@ -42,9 +42,7 @@ std::vector<PanelSpec> PendulumDiagram::panels() const {
 void PendulumDiagram::record(std::span<const double> row, WorldBox& world) {
   const PendulumGeometry g = pendulum_geometry(state_of(row), options_);
   const double r = options_.bob_radius;
-  // The ceiling's hatching reaches 12 px up and the bob r: anything within
-  // about a tenth of L of the pivot's level would touch it.
-  if (g.bob.y() + r > -0.1) above_pivot_ = true;
+  support_.see(g.bob, r);
   if (row[4] != 0) has_drag_ = true;
   for (const Point& p : {Point(g.bob + Point(r, r)), Point(g.bob - Point(r, r)), g.gravity_tip, g.wire_force_tip,
                          g.drag_tip})
@@ -61,10 +59,7 @@ void PendulumDiagram::finish_recording(WorldBox& world) {
 }
 
 void PendulumDiagram::draw_static(Canvas& canvas, const render::WorldView& view) const {
-  if (above_pivot_)
-    render::draw_pivot_block(canvas, view, Point::Zero(), 0.07, colors_.wire.with_alpha(0.12), {colors_.wire, 1.6});
-  else
-    draw_ceiling(canvas, view, Point::Zero(), 0.3, {colors_.wire, 2.2});
+  support_.draw(canvas, view, colors_.wire);
 }
 
 void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::span<const double> row) {

@@ -1,6 +1,7 @@
 #pragma once
 #include "scenes/diagrams/diagram.hpp"
 #include "scenes/diagrams/pendulum_geometry.hpp"
+#include "scenes/diagrams/pendulum_support.hpp"
 #include "scenes/scene_style.hpp"
 
 namespace vibra::scenes {
@@ -20,15 +21,15 @@ class PendulumDiagram final : public Diagram {
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
   std::optional<ForceKey> force_key() const override;
+  const PendulumSupport& support() const { return support_; }
 
  private:
   /// `--annotate geometry`: the unit vectors, the pivot (x0, y0) and L.
   void draw_geometry(render::Canvas&, const render::WorldView&, const PendulumGeometry&,
                      const Point& away_from_vertical) const;
 
-  /// Whether the bob or the wire ever rises to the pivot's height, where a
-  /// ceiling would cut them: the pivot is then a bearing block.
-  bool above_pivot_ = false;
+  /// A ceiling, or a bearing block when the bob rises near the pivot's height.
+  PendulumSupport support_{Point::Zero()};
   /// Whether the run has any drag at all (alpha > 0): no D arrow otherwise.
   bool has_drag_ = false;
   PendulumDiagramOptions options_;
