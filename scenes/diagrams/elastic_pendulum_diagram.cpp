@@ -4,6 +4,7 @@
 
 #include "render/draw/annotations.hpp"
 #include "render/draw/machine_elements.hpp"
+#include "scenes/diagrams/broken_force.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 
 namespace vibra::scenes {
@@ -45,6 +46,8 @@ void ElasticPendulumDiagram::record_other(std::span<const double> row, WorldBox&
 }
 
 void ElasticPendulumDiagram::finish_recording(WorldBox& world) {
+  // mg = 1 reads at any scale; a wire force far larger is drawn clipped.
+  scale_.set_reference(1);
   scale_.set_longest(kLongestArrow);
   // The bob's reach, every arrow from anywhere it goes, the ceiling.
   const Point reach(kBob + kLongestArrow + 0.08, kBob + kLongestArrow + 0.08);
@@ -78,7 +81,7 @@ void ElasticPendulumDiagram::draw(render::Canvas& canvas, const render::WorldVie
   const render::ForceArrow forces[] = {{arrows[0].from, arrows[0].to, colors_.gravity, "<i>mg</i>"},
                                        {arrows[1].from, arrows[1].to, colors_.wire_force, "<i>S</i>"},
                                        {arrows[2].from, arrows[2].to, colors_.drag, "<i>D</i>"}};
-  for (const auto& f : forces) render::draw_force_arrow(canvas, view, f, colors_.background);
+  for (const auto& f : forces) draw_broken_force(canvas, view, scale_, f, colors_.background);
 }
 
 std::optional<ForceKey> ElasticPendulumDiagram::force_key() const {
