@@ -9,6 +9,7 @@
 #include "render/draw/canvas.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "scene_run_support.hpp"
+#include "scenes/diagrams/force_scale.hpp"
 #include "scenes/scene_config.hpp"
 #include "scenes/scene_factory.hpp"
 #include "scenes/system_scene.hpp"
@@ -27,9 +28,12 @@ struct HardMoment {
   bool swept;
 };
 
-/// The bodies and supports: the bob, the machine's box and drum, a ceiling,
-/// block or floor (not the springs and legs, whose length the motion sets).
-bool is_system(OutlineKind kind) { return kind == OutlineKind::body || kind == OutlineKind::ground; }
+/// What measures the system: a pendulum's bob and support (over the run);
+/// the machine's box and drum (not its legs and floor, which its motion
+/// stretches apart).
+bool is_system(OutlineKind kind, bool swept) {
+  return kind == OutlineKind::body || (swept && kind == OutlineKind::ground);
+}
 
 /// The larger side of what the system's bodies and support cover (see
 /// HardMoment::swept; arrows, labels and text left out), and the short side
@@ -53,7 +57,7 @@ std::pair<double, double> system_and_part(const HardMoment& m, int width, int he
       scene->draw(canvas, row);
       REQUIRE(scene->last_layout());
       for (const auto& s : scene->last_layout()->outline.shapes())
-        if (is_system(s.kind)) {
+        if (is_system(s.kind, m.swept)) {
           x0 = std::min(x0, s.bounds.x), y0 = std::min(y0, s.bounds.y);
           x1 = std::max(x1, s.bounds.x + s.bounds.w), y1 = std::max(y1, s.bounds.y + s.bounds.h);
         }
@@ -65,6 +69,12 @@ std::pair<double, double> system_and_part(const HardMoment& m, int width, int he
   const auto* system = dynamic_cast<const vibra::scenes::SystemScene*>(scene.get());
   REQUIRE(system);
   const PixelRect part = system->diagram_area();
+  if (m.scene == "pendulum") {
+    // The view is set by the bob's path, within the 2 x 2 square of a wire of
+    // length 1, and the 0.5 L of room its arrows get: no arrow sets it.
+    INFO("world box " << system->world_box().min().transpose() << " to " << system->world_box().max().transpose());
+    CHECK(system->world_box().sizes().maxCoeff() <= 2 * (1 + 0.5) + 1e-9);
+  }
   return {std::max(x1 - x0, y1 - y0), std::min(part.w, part.h)};
 }
 }  // namespace
@@ -88,4 +98,26 @@ TEST_CASE("the view is set by the bodies: every system at least a third of its p
       const auto [system, part] = system_and_part(m, w, h);
       CHECK(system >= part / 3);
     }
+}
+
+TEST_CASE("a force scale draws the largest force its longest, the reference at least 0.4 of that, and clips the rest",
+          "[scene][diagram][extent]") {
+  vibra::scenes::ForceScale scale;
+  scale.set_longest(2);
+  scale.set_reference(1);
+  for (double f : {0.5, -1.0, 2.0}) scale.see(f);
+  // Largest 2 fits: 1 world unit per force, the reference 1 at 1 > 0.4 * 2.
+  CHECK(scale.per_force() == Approx(1));
+  CHECK_FALSE(scale.clips(scale.length(2)));
+  // At resonance the spring force is 20 times the forcing: 20 at 2/20 per force
+  // would draw the forcing 0.1 long, so the forcing gets 0.4 * 2 and 20 is clipped.
+  scale.see(20);
+  CHECK(scale.per_force() == Approx(0.4 * 2 / 1));
+  CHECK(scale.length(1) == Approx(0.8));
+  const vibra::scenes::Arrow spring{{1, 1}, {1, 1 + scale.length(20)}};
+  CHECK(scale.clips((spring.to - spring.from).norm()));
+  const vibra::scenes::Arrow drawn = scale.clipped(spring);
+  CHECK((drawn.to - drawn.from).norm() == Approx(2));
+  CHECK((drawn.to - drawn.from).normalized().isApprox((spring.to - spring.from).normalized()));
+  CHECK(drawn.from == spring.from);
 }

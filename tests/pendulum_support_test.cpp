@@ -1,6 +1,7 @@
 // A pendulum's support is drawn where no bob of the run ever is: a ceiling
 // while the motion stays below it, a bearing block when it goes over the top
-// or is flung above its pivot (docs/drawing.md).
+// or is flung above its pivot; and its link is a strut when it pushes
+// (docs/drawing.md).
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -71,4 +72,23 @@ TEST_CASE("the elastic pendulum's support: no bob of the run inside its hatched 
     const WorldBox hatched = support.region();
     for (const auto& row : run.rows) CHECK_FALSE(overlaps(hatched, Point(row[1], row[2]), ElasticPendulumDiagram::kBob));
   }
+}
+
+TEST_CASE("a rigid pendulum whose link pushes (S < 0) is drawn and named as a strut, one that only pulls as a wire",
+          "[scene][pendulum][support]") {
+  // Released at rest, S = omega^2 + cos(Theta) = cos(Theta): negative above
+  // the horizontal (170 degrees), and the link pushes the bob out; at 60
+  // degrees, and at every later moment of that swing, it pulls.
+  auto key_names = [](const Diagram& d) {
+    std::string names;
+    for (const auto& n : d.force_key()->names) names += n.name + "; ";
+    return names;
+  };
+  const Run pushed = recorded("pendulum", {{"Theta", "170"}});
+  const Run pulled = recorded("pendulum", {{"Theta", "60"}});
+  CHECK(pushed.rows.front()[3] == Approx(std::cos(170 * M_PI / 180)));
+  CHECK(dynamic_cast<const PendulumDiagram&>(*pushed.diagram).strut());
+  CHECK_FALSE(dynamic_cast<const PendulumDiagram&>(*pulled.diagram).strut());
+  CHECK_THAT(key_names(*pushed.diagram), Catch::Contains("strut"));
+  CHECK_THAT(key_names(*pulled.diagram), !Catch::Contains("strut") && Catch::Contains("wire"));
 }

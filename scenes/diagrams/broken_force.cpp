@@ -21,9 +21,9 @@ void draw_break_mark(render::Canvas& canvas, const Point& from, const Point& tip
 }
 }  // namespace
 
-bool draw_broken_force(render::Canvas& canvas, const render::WorldView& view, const ForceScale& scale,
-                       render::ForceArrow f, const render::Color& background) {
-  const Arrow drawn = scale.clipped({f.from, f.to});
+bool draw_broken_force(render::Canvas& canvas, const render::WorldView& view, double room, render::ForceArrow f,
+                       const render::Color& background) {
+  const Arrow drawn = ForceScale::clipped({f.from, f.to}, room);
   const bool broken = drawn.to != f.to;
   f.to = drawn.to;
   render::draw_force_arrow(canvas, view, f, background);

@@ -81,7 +81,7 @@ void ElasticPendulumDiagram::draw(render::Canvas& canvas, const render::WorldVie
   const render::ForceArrow forces[] = {{arrows[0].from, arrows[0].to, colors_.gravity, "<i>mg</i>"},
                                        {arrows[1].from, arrows[1].to, colors_.wire_force, "<i>S</i>"},
                                        {arrows[2].from, arrows[2].to, colors_.drag, "<i>D</i>"}};
-  for (const auto& f : forces) draw_broken_force(canvas, view, scale_, f, colors_.background);
+  for (const auto& f : forces) draw_broken_force(canvas, view, scale_.longest(), f, colors_.background);
 }
 
 std::optional<ForceKey> ElasticPendulumDiagram::force_key() const {

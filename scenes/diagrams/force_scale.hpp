@@ -36,12 +36,14 @@ class ForceScale {
   double largest() const { return largest_; }
   double longest() const { return longest_; }
   /// Whether an arrow of this many world units is drawn clipped.
-  bool clips(double world_length) const { return std::abs(world_length) > longest_ * (1 + 1e-9); }
-  /// The arrow as drawn: at most `longest` long.
-  Arrow clipped(const Arrow& a) const {
+  bool clips(double world_length) const { return clips(world_length, longest_); }
+  static bool clips(double world_length, double room) { return std::abs(world_length) > room * (1 + 1e-9); }
+  /// The arrow as drawn: at most `room` (by default `longest`) long.
+  Arrow clipped(const Arrow& a) const { return clipped(a, longest_); }
+  static Arrow clipped(const Arrow& a, double room) {
     const Point along = a.to - a.from;
     const double n = along.norm();
-    return clips(n) ? Arrow{a.from, a.from + longest_ / n * along} : a;
+    return clips(n, room) ? Arrow{a.from, a.from + room / n * along} : a;
   }
 
  private:

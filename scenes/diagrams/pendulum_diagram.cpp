@@ -47,7 +47,9 @@ void PendulumDiagram::record(std::span<const double> row, WorldBox& world) {
   support_.see(g.bob, r);
   if (row[4] != 0) has_drag_ = true;
   if (row[3] < 0) pushed_ = true;
-  scale_.see(row[3]);
+  // S > 0 points from the bob toward the pivot, inside the bob's circle,
+  // where it has the wire's length for room (kInwardRoom), not the margin's.
+  scale_.see(row[3] > 0 ? row[3] * kArrowRoom / kInwardRoom : row[3]);
   scale_.see(options_.drag_magnification * row[4]);
   // The view is set by the bob's motion and the room its arrows get
   // (kArrowRoom, longer ones drawn clipped), not by the arrows' lengths.
@@ -102,8 +104,10 @@ void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::s
       {g.bob, g.drag_tip, c.drag, magnification_label(o.drag_magnification)}};
   // Without drag (alpha = 0) there is no D to draw: a ring labelled D would
   // claim a force the model does not have.
-  for (const auto& f : forces)
-    if (&f != &forces[2] || has_drag_) draw_broken_force(canvas, view, scale_, f, c.background);
+  // Each arrow is clipped at its room: S toward the pivot has the wire's.
+  const double rooms[] = {kArrowRoom, state.S > 0 ? kInwardRoom : kArrowRoom, kArrowRoom};
+  for (int i = 0; i < 3; ++i)
+    if (i != 2 || has_drag_) draw_broken_force(canvas, view, rooms[i], forces[i], c.background);
 
   // The angle's label beyond the middle of its arc, placed like the arrows' labels.
   if (std::abs(state.theta) > 0.02) {

@@ -44,6 +44,8 @@ class PendulumDiagram final : public Diagram {
   /// The room around the bob's path for the arrows, in units of L: the
   /// longest arrow; longer forces are drawn clipped with a break mark.
   static constexpr double kArrowRoom = 0.5;
+  /// The room of S > 0, toward the pivot: most of the wire.
+  static constexpr double kInwardRoom = 0.85;
   ForceScale scale_;
   PendulumDiagramOptions options_;
   SceneColors colors_;

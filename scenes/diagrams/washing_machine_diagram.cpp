@@ -109,12 +109,13 @@ void WashingMachineDiagram::draw(render::Canvas& canvas, const render::WorldView
   // Each label names its force ("spring −u", "drum sin(γt)"): two bare
   // formulas side by side, "−u sin(γt)", read as one product.
   const std::vector<Arrow> arrows = force_arrows(row);
-  draw_broken_force(canvas, view, scale_, {arrows[0].from, arrows[0].to, colors_.gravity, "spring −<i>u</i>"},
+  const double room = scale_.longest();
+  draw_broken_force(canvas, view, room, {arrows[0].from, arrows[0].to, colors_.gravity, "spring −<i>u</i>"},
                     colors_.background);
   if (beta_ > 0)
-    draw_broken_force(canvas, view, scale_, {arrows[1].from, arrows[1].to, colors_.drag, "damper −<i>βu</i>′"},
+    draw_broken_force(canvas, view, room, {arrows[1].from, arrows[1].to, colors_.drag, "damper −<i>βu</i>′"},
                       colors_.background);
-  draw_broken_force(canvas, view, scale_, {arrows.back().from, arrows.back().to, colors_.wire_force, "drum sin(<i>γt</i>)"},
+  draw_broken_force(canvas, view, room, {arrows.back().from, arrows.back().to, colors_.wire_force, "drum sin(<i>γt</i>)"},
                     colors_.background);
 }
 
