@@ -81,13 +81,15 @@ void ElasticPendulumDiagram::draw(render::Canvas& canvas, const render::WorldVie
   const render::ForceArrow forces[] = {{arrows[0].from, arrows[0].to, colors_.gravity, "<i>mg</i>"},
                                        {arrows[1].from, arrows[1].to, colors_.wire_force, "<i>S</i>"},
                                        {arrows[2].from, arrows[2].to, colors_.drag, "<i>D</i>"}};
-  for (const auto& f : forces) draw_broken_force(canvas, view, scale_.longest(), f, colors_.background);
+  // Without drag (gamma = 0) a ring labelled D would claim a force the model does not have.
+  for (const auto& f : forces)
+    if (&f != &forces[2] || gamma_ > 0) draw_broken_force(canvas, view, scale_.longest(), f, colors_.background);
 }
 
 std::optional<ForceKey> ElasticPendulumDiagram::force_key() const {
-  return ForceKey{scale_.per_force(), "<i>mg</i>", "",
-                  {{colors_.gravity, "<i>mg</i> gravity"}, {colors_.wire_force, "<i>S</i> wire (spring) force"},
-                   {colors_.drag, "<i>D</i> air drag"}}};
+  std::vector<ForceName> names = {{colors_.gravity, "<i>mg</i> gravity"}, {colors_.wire_force, "<i>S</i> wire (spring) force"}};
+  if (gamma_ > 0) names.push_back({colors_.drag, "<i>D</i> air drag"});
+  return ForceKey{scale_.per_force(), "<i>mg</i>", "", names};
 }
 
 DiagramKind elastic_pendulum_diagram_kind() {
