@@ -80,7 +80,7 @@ struct SolveCase {
 
 const SolveCase kSolveCases[] = {
     {"pendulum", {"scheme=rk4", "Theta=70", "alpha=0.4", "periods=3"}, 0x1cd3a901af16ba01ull, 1e-5},  // 4.7e-6
-    {"elastic-pendulum", {"scheme=pefrl", "Theta=40", "eps=0.1", "gamma=0.05"}, 0xfc39dbadddecb133ull,
+    {"elastic-pendulum", {"scheme=pefrl", "Theta=40", "eps=0.1", "gamma=0.05"}, 0xfecdd6304713e2a4ull,
      0.03},  // 0.0143
     {"vibration", {"scheme=crank-nicolson", "s=sin(u)", "F=3*cos(4*t)", "damping=quadratic", "b=0.2"},
      0x4826b72b8372fcdfull, 0.05},                                                          // 0.025
@@ -150,7 +150,7 @@ TEST_CASE("PNG frames are byte-identical across runs and thread counts, and held
   // Labels pasted from their kept images (LabelCache): the same glyphs, a
   // level of rounding apart at antialiased edges.
   INFO("if only the hash differs, see the next test case");
-  CHECK(hex(hash) == hex(0x45d8fdd62d9cfb69ull));
+  CHECK(hex(hash) == hex(0x2da7fd7d655e64acull));
 }
 
 TEST_CASE("the held PNG frames, when their hash trips: 21 frames of 320x180, each the still at its time, in motion",

@@ -45,3 +45,34 @@ TEST_CASE("elastic pendulum: energy conserved without drag to the scheme's order
   auto r = rows(*trajectory("elastic-pendulum", {"beta=0.8", "Theta=40", "gamma=0.2", "steps_per_period=400"}));
   for (size_t i = 1; i < r.size(); ++i) CHECK(energy(r[i], 0.8) <= energy(r[i - 1], 0.8) + 1e-8);
 }
+
+namespace {
+/// Checks a run's theta column against its positions, row by row, and
+/// returns the largest |theta| it reaches.
+double largest_theta(const std::string& release) {
+  INFO(release);
+  const auto r = rows(*trajectory("elastic-pendulum", {"beta=0.8", release, "eps=0.2"}));
+  // The wire turns at |r x v| / r^2 <= |v| / r: no step turns it further than that allows.
+  auto turn_rate = [](const std::vector<double>& row) { return std::hypot(row[3], row[4]) / std::hypot(row[1], row[2] - 1); };
+  double largest = 0;
+  for (size_t i = 0; i < r.size(); ++i) {
+    const double x = r[i][1], y = r[i][2], theta = r[i][5];
+    // The bob at (x, y) hangs at theta from the downward vertical at the pivot (0, 1).
+    CHECK(std::remainder(theta - std::atan2(x, 1 - y), 2 * M_PI) == Approx(0).margin(1e-12));
+    largest = std::max(largest, std::abs(theta));
+    if (i == 0) continue;
+    const double dt = r[i][0] - r[i - 1][0];
+    CHECK(std::abs(theta - r[i - 1][5]) <= 1.5 * dt * std::max(turn_rate(r[i]), turn_rate(r[i - 1])));
+  }
+  return largest;
+}
+}  // namespace
+
+TEST_CASE("elastic pendulum: theta is the wire's angle over all four quadrants, continuous, counting whole turns",
+          "[models][elastic-pendulum]") {
+  // Released level with the pivot and stretched (eps = 0.2), the bob is flung
+  // up above it, past 90 degrees; released at 170 degrees it goes over the
+  // top, turn after turn: theta passes 90 and 180 degrees without a jump.
+  CHECK(largest_theta("Theta=90") > M_PI / 2);
+  CHECK(largest_theta("Theta=170") > M_PI);
+}

@@ -139,7 +139,8 @@ TEST_CASE("a label chain's restart adds few jumps to those its spots being taken
   // Within a chain a label stays in a spot while it is free and not much
   // worse than the best; when the chain restarts it goes to the best. Over
   // 600 frames, the render's chains add few jumps to a render that never
-  // restarts (84 in all; chains of 15 frames made it 151).
+  // restarts (some 12 to 20 in all, as the diagrams' arrows change; chains
+  // of 15 frames added 67).
   int with_restarts = 0, never = 0;
   for (const char* scene : {"pendulum", "spring_dashpot", "washing_machine", "elastic_pendulum", "sliding_box"}) {
     const int restarting = jumps(scene, vibra::scenes::kLabelChainFrames, 600), kept = jumps(scene, 600, 600);
@@ -149,5 +150,5 @@ TEST_CASE("a label chain's restart adds few jumps to those its spots being taken
   }
   INFO(with_restarts << " jumps with the render's chains, " << never << " never restarting");
   CHECK(never >= 40);  // the scenes do move their labels: the check above is not empty
-  CHECK(with_restarts <= 1.25 * never);
+  CHECK(with_restarts - never <= 25);
 }

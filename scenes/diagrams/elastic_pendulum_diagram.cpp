@@ -4,13 +4,14 @@
 
 #include "render/draw/annotations.hpp"
 #include "render/draw/machine_elements.hpp"
+#include "scenes/diagrams/broken_force.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 
 namespace vibra::scenes {
 
 namespace {
 const Point kPivot(0, 1);
-constexpr double kBob = 0.06, kLongestArrow = 0.45;
+constexpr double kLongestArrow = 0.45;
 Point position(std::span<const double> row) { return Point(row[1], row[2]); }
 Point velocity(std::span<const double> row) { return Point(row[3], row[4]); }
 }  // namespace
@@ -38,12 +39,15 @@ void ElasticPendulumDiagram::record(std::span<const double> row, WorldBox& world
 
 void ElasticPendulumDiagram::record_other(std::span<const double> row, WorldBox&) {
   bodies_.extend(position(row));
+  support_.see(position(row), kBob);
   scale_.see(1);
   scale_.see(wire_force(row));
   scale_.see(gamma_ / (beta_ * beta_) * velocity(row).squaredNorm());
 }
 
 void ElasticPendulumDiagram::finish_recording(WorldBox& world) {
+  // mg = 1 reads at any scale; a wire force far larger is drawn clipped.
+  scale_.set_reference(1);
   scale_.set_longest(kLongestArrow);
   // The bob's reach, every arrow from anywhere it goes, the ceiling.
   const Point reach(kBob + kLongestArrow + 0.08, kBob + kLongestArrow + 0.08);
@@ -62,7 +66,7 @@ std::array<Arrow, 3> ElasticPendulumDiagram::force_arrows(std::span<const double
 }
 
 void ElasticPendulumDiagram::draw_static(render::Canvas& canvas, const render::WorldView& view) const {
-  render::draw_ceiling(canvas, view, kPivot, 0.3, {colors_.wire, 2.2});
+  support_.draw(canvas, view, colors_.wire);
 }
 
 void ElasticPendulumDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
@@ -77,13 +81,15 @@ void ElasticPendulumDiagram::draw(render::Canvas& canvas, const render::WorldVie
   const render::ForceArrow forces[] = {{arrows[0].from, arrows[0].to, colors_.gravity, "<i>mg</i>"},
                                        {arrows[1].from, arrows[1].to, colors_.wire_force, "<i>S</i>"},
                                        {arrows[2].from, arrows[2].to, colors_.drag, "<i>D</i>"}};
-  for (const auto& f : forces) render::draw_force_arrow(canvas, view, f, colors_.background);
+  // Without drag (gamma = 0) a ring labelled D would claim a force the model does not have.
+  for (const auto& f : forces)
+    if (&f != &forces[2] || gamma_ > 0) draw_broken_force(canvas, view, scale_.longest(), f, colors_.background);
 }
 
 std::optional<ForceKey> ElasticPendulumDiagram::force_key() const {
-  return ForceKey{scale_.per_force(), "<i>mg</i>", "",
-                  {{colors_.gravity, "<i>mg</i> gravity"}, {colors_.wire_force, "<i>S</i> wire (spring) force"},
-                   {colors_.drag, "<i>D</i> air drag"}}};
+  std::vector<ForceName> names = {{colors_.gravity, "<i>mg</i> gravity"}, {colors_.wire_force, "<i>S</i> wire (spring) force"}};
+  if (gamma_ > 0) names.push_back({colors_.drag, "<i>D</i> air drag"});
+  return ForceKey{scale_.per_force(), "<i>mg</i>", "", names};
 }
 
 DiagramKind elastic_pendulum_diagram_kind() {

@@ -5,6 +5,7 @@
 #include "render/draw/trail.hpp"
 #include "scenes/diagrams/diagram.hpp"
 #include "scenes/diagrams/force_scale.hpp"
+#include "scenes/diagrams/pendulum_support.hpp"
 #include "scenes/scene_style.hpp"
 
 namespace vibra::scenes {
@@ -33,7 +34,9 @@ class ElasticPendulumDiagram final : public Diagram {
   /// The wire's force in units of mg, toward the pivot (negative: compressed).
   double wire_force(std::span<const double> row) const;
   const ForceScale& force_scale() const { return scale_; }
+  const PendulumSupport& support() const { return support_; }
   const render::Trail& trail() const { return trail_; }
+  static constexpr double kBob = 0.06;       ///< the bob's radius, scaled
   static constexpr double kFade = 4 * M_PI;  ///< the trail shows two periods P = 2 pi
 
  private:
@@ -42,6 +45,7 @@ class ElasticPendulumDiagram final : public Diagram {
   ForceScale scale_;
   render::Trail trail_{1e-3};
   WorldBox bodies_;
+  PendulumSupport support_{Point(0, 1)};
 };
 
 }  // namespace vibra::scenes

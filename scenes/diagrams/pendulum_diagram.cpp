@@ -9,6 +9,7 @@
 #include "render/draw/shapes.hpp"
 #include "render/draw/text.hpp"
 #include "render/labels/label_placer.hpp"
+#include "scenes/diagrams/broken_force.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 
 namespace vibra::scenes {
@@ -35,24 +36,34 @@ std::vector<PanelSpec> PendulumDiagram::panels() const {
   auto column = [](int i, double factor) { return [i, factor](std::span<const double> row) { return factor * row[i]; }; };
   // theta is shown in degrees, the forces in units of m g.
   return {{quantity_markup("theta"), {{"", colors_.bob, column(1, display_factor("theta"))}}},
-          {"<i>S</i> / <i>mg</i>  wire force", {{"", colors_.wire_force, column(3, 1)}}},
+          // Built before the pre-pass has seen S's sign: the title names both.
+          {"<i>S</i> / <i>mg</i>  wire force (&lt; 0: a rod, pushing)", {{"", colors_.wire_force, column(3, 1)}}},
           {"<i>D</i> / <i>mg</i>  air drag", {{"", colors_.drag, column(4, 1)}}}};
 }
 
 void PendulumDiagram::record(std::span<const double> row, WorldBox& world) {
   const PendulumGeometry g = pendulum_geometry(state_of(row), options_);
   const double r = options_.bob_radius;
-  // The ceiling's hatching reaches 12 px up and the bob r: anything within
-  // about a tenth of L of the pivot's level would touch it.
-  if (g.bob.y() + r > -0.1) above_pivot_ = true;
+  support_.see(g.bob, r);
   if (row[4] != 0) has_drag_ = true;
-  for (const Point& p : {Point(g.bob + Point(r, r)), Point(g.bob - Point(r, r)), g.gravity_tip, g.wire_force_tip,
-                         g.drag_tip})
-    world.extend(p);
+  if (row[3] < 0) pushed_ = true;
+  // S > 0 points from the bob toward the pivot, inside the bob's circle,
+  // where it has the wire's length for room (kInwardRoom), not the margin's.
+  scale_.see(row[3] > 0 ? row[3] * kArrowRoom / kInwardRoom : row[3]);
+  scale_.see(options_.drag_magnification * row[4]);
+  // The view is set by the bob's motion and the room its arrows get
+  // (kArrowRoom, longer ones drawn clipped), not by the arrows' lengths.
+  const Point room = Point::Constant(std::max(r, kArrowRoom));  // arrows start at the bob's centre
+  world.extend(g.bob + room), world.extend(g.bob - room);
   if (options_.geometry) world.extend(g.radial_unit_tip), world.extend(g.azimuthal_unit_tip);
 }
 
 void PendulumDiagram::finish_recording(WorldBox& world) {
+  // mg = 1 is the reference every run's scale draws readably.
+  scale_.see(1);
+  scale_.set_reference(1);
+  scale_.set_longest(kArrowRoom);
+  options_.force_unit = scale_.per_force();
   // The ceiling, the dashed vertical and the angle label always fit; the
   // pivot on the frame's centre line.
   world.extend(Point(-0.35, 0.12));
@@ -61,10 +72,7 @@ void PendulumDiagram::finish_recording(WorldBox& world) {
 }
 
 void PendulumDiagram::draw_static(Canvas& canvas, const render::WorldView& view) const {
-  if (above_pivot_)
-    render::draw_pivot_block(canvas, view, Point::Zero(), 0.07, colors_.wire.with_alpha(0.12), {colors_.wire, 1.6});
-  else
-    draw_ceiling(canvas, view, Point::Zero(), 0.3, {colors_.wire, 2.2});
+  support_.draw(canvas, view, colors_.wire);
 }
 
 void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
@@ -75,12 +83,12 @@ void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::s
   const double scale = canvas.scale();
 
   if (ghost()) {
-    draw_line(canvas, view, g.pivot, g.bob, {c.wire, 2.2});
+    draw_link(canvas, view, g);
     draw_circle(canvas, view, g.bob, o.bob_radius, c.bob, {c.wire, 1.6});
     return;
   }
   draw_line(canvas, view, g.pivot, g.vertical_end, {c.wire.with_alpha(0.6), 1.6, true});
-  draw_line(canvas, view, g.pivot, g.bob, {c.wire, 2.2});
+  draw_link(canvas, view, g);
   draw_arc(canvas, view, g.pivot, o.arc_radius, g.arc_from, g.arc_to, {c.wire, 1.6});
   draw_circle(canvas, view, g.bob, o.bob_radius, c.bob, {c.wire, 1.6});
 
@@ -91,12 +99,15 @@ void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::s
   const double side = state.theta >= 0 ? 1 : -1;
   const render::ForceArrow forces[] = {
       {g.bob, g.gravity_tip, c.gravity, "<i>mg</i>"},
-      {g.bob, g.wire_force_tip, c.wire_force, "<i>S</i>", render::LabelPlace::beside, side * outward},
+      {g.bob, g.wire_force_tip, c.wire_force, state.S < 0 ? "<i>S</i> push" : "<i>S</i>", render::LabelPlace::beside,
+       side * outward},
       {g.bob, g.drag_tip, c.drag, magnification_label(o.drag_magnification)}};
   // Without drag (alpha = 0) there is no D to draw: a ring labelled D would
   // claim a force the model does not have.
-  for (const auto& f : forces)
-    if (&f != &forces[2] || has_drag_) draw_force_arrow(canvas, view, f, c.background);
+  // Each arrow is clipped at its room: S toward the pivot has the wire's.
+  const double rooms[] = {kArrowRoom, state.S > 0 ? kInwardRoom : kArrowRoom, kArrowRoom};
+  for (int i = 0; i < 3; ++i)
+    if (i != 2 || has_drag_) draw_broken_force(canvas, view, rooms[i], forces[i], c.background);
 
   // The angle's label beyond the middle of its arc, placed like the arrows' labels.
   if (std::abs(state.theta) > 0.02) {
@@ -107,6 +118,16 @@ void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::s
     render::request_label(canvas, {"<i>θ</i>", label, at, direction, 4 * scale});
   }
   if (o.geometry) draw_geometry(canvas, view, g, side * outward);
+}
+
+void PendulumDiagram::draw_link(Canvas& canvas, const render::WorldView& view, const PendulumGeometry& g) const {
+  if (!pushed_) {
+    draw_line(canvas, view, g.pivot, g.bob, {colors_.wire, 2.2});
+    return;
+  }
+  // A strut: a hollow bar, thick enough to push, unlike a wire.
+  draw_line(canvas, view, g.pivot, g.bob, {colors_.wire, 6.5});
+  draw_line(canvas, view, g.pivot, g.bob, {colors_.background, 2.5});
 }
 
 void PendulumDiagram::draw_geometry(Canvas& canvas, const render::WorldView& view, const PendulumGeometry& g,
@@ -136,7 +157,9 @@ std::optional<ForceKey> PendulumDiagram::force_key() const {
   std::string note;
   if (has_drag_ && options_.drag_magnification != 1)
     note = magnification_label(options_.drag_magnification).insert(8, " drawn");
-  std::vector<ForceName> names = {{colors_.gravity, "<i>mg</i> gravity"}, {colors_.wire_force, "<i>S</i> wire force"}};
+  std::vector<ForceName> names = {{colors_.gravity, "<i>mg</i> gravity"},
+                                  {colors_.wire_force, pushed_ ? "<i>S</i> rod force (a strut: pushes when <i>S</i> &lt; 0)"
+                                                               : "<i>S</i> wire force"}};
   if (has_drag_) names.push_back({colors_.drag, "<i>D</i> air drag"});
   return ForceKey{options_.force_unit, "<i>mg</i>", note, names};
 }

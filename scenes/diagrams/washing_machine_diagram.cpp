@@ -1,10 +1,12 @@
 #include "scenes/diagrams/washing_machine_diagram.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/models/model.hpp"
 #include "render/draw/annotations.hpp"
 #include "render/draw/machine_elements.hpp"
+#include "scenes/diagrams/broken_force.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 
 namespace vibra::scenes {
@@ -31,14 +33,33 @@ void WashingMachineDiagram::record(std::span<const double> row, WorldBox&) {
   largest_u_ = std::max(largest_u_, std::abs(row[1]));
   scale_.see(row[1]);
   scale_.see(beta_ * row[2]);
-  scale_.see(1);
 }
 
+namespace {
+/// The divisor that draws a motion of `largest` static deflections within
+/// `room`: 1, 2 or 5 times a power of ten, so the key's note reads round.
+double round_divisor(double largest, double room) {
+  if (!(largest > room) || !std::isfinite(largest)) return 1;
+  const double needed = largest / room, decade = std::pow(10.0, std::floor(std::log10(needed)));
+  for (double step : {1.0, 2.0, 5.0, 10.0})
+    if (step * decade >= needed) return step * decade;
+  return 10 * decade;
+}
+}  // namespace
+
 void WashingMachineDiagram::finish_recording(WorldBox& world) {
+  // The view is set by the machine: its motion is drawn divided by a round
+  // number when larger than half its height (at resonance u grows to twenty
+  // static deflections against a body three high).
+  divisor_ = round_divisor(largest_u_, 0.5 * height_);
+  const double drawn_u = largest_u_ / divisor_;
   // Legs long enough that the body never reaches the floor.
-  leg_ = std::max(3.0, 1.35 * largest_u_ + 0.8);
-  scale_.set_longest(0.45 * height_ + 0.25 * std::min(largest_u_, 4.0));
-  const double reach = scale_.length(scale_.largest());
+  leg_ = std::max(3.0, 1.35 * drawn_u + 0.8);
+  // The drum's force, amplitude 1, reads at any scale; longer arrows are clipped.
+  scale_.see(1);
+  scale_.set_reference(1);
+  scale_.set_longest(0.45 * height_ + 0.25 * std::min(drawn_u, 4.0));
+  const double reach = scale_.longest();
   world.extend(Point(-0.5 * width_ - 1.0, -0.6));
   world.extend(Point(0.5 * width_ + 1.0, 0));
   world.extend(Point(0, body_bottom(largest_u_) + height_ + std::max(0.4, reach - 0.5 * height_ + 0.4)));
@@ -85,18 +106,26 @@ void WashingMachineDiagram::draw(render::Canvas& canvas, const render::WorldView
   render::draw_circle(canvas, view, c + drum_mass_offset(t), 0.2, colors_.bob, {colors_.wire, 1.4});
   if (ghost()) return;
 
+  // Each label names its force ("spring −u", "drum sin(γt)"): two bare
+  // formulas side by side, "−u sin(γt)", read as one product.
   const std::vector<Arrow> arrows = force_arrows(row);
-  const std::string labels[] = {"−<i>u</i>", beta_ > 0 ? "−<i>βu</i>′" : "sin(<i>γt</i>)", "sin(<i>γt</i>)"};
-  const render::Color colors[] = {colors_.gravity, beta_ > 0 ? colors_.drag : colors_.wire_force, colors_.wire_force};
-  for (size_t i = 0; i < arrows.size(); ++i)
-    render::draw_force_arrow(canvas, view, {arrows[i].from, arrows[i].to, colors[i], labels[i]}, colors_.background);
+  const double room = scale_.longest();
+  draw_broken_force(canvas, view, room, {arrows[0].from, arrows[0].to, colors_.gravity, "spring −<i>u</i>"},
+                    colors_.background);
+  if (beta_ > 0)
+    draw_broken_force(canvas, view, room, {arrows[1].from, arrows[1].to, colors_.drag, "damper −<i>βu</i>′"},
+                      colors_.background);
+  draw_broken_force(canvas, view, room, {arrows.back().from, arrows.back().to, colors_.wire_force, "drum sin(<i>γt</i>)"},
+                    colors_.background);
 }
 
 std::optional<ForceKey> WashingMachineDiagram::force_key() const {
   std::vector<ForceName> names = {{colors_.gravity, "−<i>u</i> spring"}};
   if (beta_ > 0) names.push_back({colors_.drag, "−<i>βu</i>′ damping"});
   names.push_back({colors_.wire_force, "sin(<i>γt</i>) forcing"});
-  return ForceKey{scale_.per_force(), "", "", names};
+  char note[64] = "";
+  if (divisor_ != 1) std::snprintf(note, sizeof note, "motion <i>u</i> drawn ÷%g", divisor_);
+  return ForceKey{scale_.per_force(), "", note, names};
 }
 
 DiagramKind washing_machine_diagram_kind() {

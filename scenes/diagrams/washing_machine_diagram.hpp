@@ -12,8 +12,10 @@ namespace vibra::scenes {
 /// damper over the floor, moving vertically, its drum turning at gamma with
 /// an off-centre mass at the forcing's phase gamma t (the mass is highest
 /// when the forcing pushes up hardest). Arrows on the body: the springs' -u,
-/// the damper's -beta u' and the drum's sin(gamma t), to one scale. Lengths
-/// in static deflections (the scaled u). Panels: u with the steady
+/// the damper's -beta u' and the drum's sin(gamma t), to one scale per run
+/// (ForceScale: the drum's force always reads, longer arrows are clipped with
+/// a break mark), each named. Lengths in static deflections (the scaled u),
+/// the motion drawn divided by a round number when it dwarfs the body. Panels: u with the steady
 /// amplitude, and the forcing.
 class WashingMachineDiagram final : public Diagram {
  public:
@@ -30,7 +32,11 @@ class WashingMachineDiagram final : public Diagram {
   Point drum_mass_offset(double t) const;
   /// Springs, damper (beta > 0), drum force, in that order, at a row.
   std::vector<Arrow> force_arrows(std::span<const double> row) const;
-  double body_bottom(double u) const { return leg_ + u; }
+  /// Where the body's bottom is drawn at displacement u (drawn ÷ motion_divisor()).
+  double body_bottom(double u) const { return leg_ + u / divisor_; }
+  /// The motion is drawn divided by this (1: true size), set after the pre-pass.
+  double motion_divisor() const { return divisor_; }
+  const ForceScale& force_scale() const { return scale_; }
 
  private:
   Point body_center(double u) const { return {0, body_bottom(u) + 0.5 * height_}; }
@@ -41,6 +47,7 @@ class WashingMachineDiagram final : public Diagram {
   double largest_u_ = 0;
   ForceScale scale_;
   double width_ = 4, height_ = 3, leg_ = 3, drum_ = 1.05;
+  double divisor_ = 1;
 };
 
 }  // namespace vibra::scenes

@@ -5,6 +5,17 @@
 
 namespace vibra {
 
+namespace {
+/// The angle of `raw` (any turn) nearest `reference`: the wire's angle taken
+/// whole turns on from the last row, so theta stays continuous through +-180
+/// degrees and counts the turns of a pendulum that goes over the top. Rows
+/// come in time order (the pre-pass, then the frames, each from a fresh run),
+/// and a step turns the wire far less than half a turn.
+double nearest_turn(double raw, double reference) {
+  return raw + 2 * M_PI * std::round((reference - raw) / (2 * M_PI));
+}
+}  // namespace
+
 // The elastic pendulum (1.132)-(1.148), scaled: pivot at (0, 1), equilibrium
 // at the origin, beta = L0 / (L0 + m g / k).
 ModelDefinition elastic_pendulum_model() {
@@ -63,10 +74,12 @@ ModelDefinition elastic_pendulum_model() {
     info.energy_unit = "m g L0 / beta^2";
     system->damping_per_mass = gamma / beta;
     const Vec<2> u0((1 + eps) * std::sin(Theta), 1 - (1 + eps) * std::cos(Theta));
+    // theta from the downward vertical at the pivot (0, 1), over all four
+    // quadrants (atan2: the bob above the pivot is past 90 degrees), unwrapped.
     return std::make_unique<SecondOrderTrajectory<2>>(
-        system, u0, Vec<2>::Zero(), info, [](const Sample<2>& s, std::span<double> out) {
+        system, u0, Vec<2>::Zero(), info, [last = Theta](const Sample<2>& s, std::span<double> out) mutable {
           out[0] = s.t, out[1] = s.u[0], out[2] = s.u[1], out[3] = s.v[0], out[4] = s.v[1];
-          out[5] = std::atan(s.u[0] / (1 - s.u[1]));
+          last = out[5] = nearest_turn(std::atan2(s.u[0], 1 - s.u[1]), last);
         });
   };
   return m;
