@@ -193,7 +193,7 @@ void SeriesPanel::draw_progress(LayerGrowth& growth, std::span<const double> row
     settled_x_ = std::floor(area.x);
     for (size_t i : drawing_order()) {
       whole_curves()[i].draw_until(layer, until_x, now(i), {series_[i].color, 2.4, series_[i].dashed});
-      draw_marks(layer, i, area.x, until_x);
+      draw_marks(layer, i, settled_x_, until_x);  // from the panel's first whole pixel, as every strip after
     }
   } else {
     // The strip from where the curves were last final to past their new end
@@ -249,7 +249,7 @@ void SeriesPanel::draw(render::Canvas& canvas, double t, std::span<const double>
       if (points.empty() || now.x() > points.back().x()) points.push_back(now);
     }
     render::draw_pixel_polyline(canvas, points, stroke);
-    draw_marks(canvas, i, area.x, panel_.to_pixel(last_x, 0).x());
+    draw_marks(canvas, i, std::floor(area.x), panel_.to_pixel(last_x, 0).x());
   }
   cairo_restore(canvas.cr());
   if (mode_ != WindowMode::jumps) draw_cursors(canvas, t, row);
