@@ -41,7 +41,7 @@ TEST_CASE("adaptive limits: a blow-up in finite time ends where the step underfl
     const std::string message = run_to_end<decltype(pair)>(system, {1e-8, 1e-10, 3, false});
     INFO(message);
     CHECK_THAT(message, Catch::StartsWith(std::string(decltype(pair)::name) +
-                                          ": the step size fell below what doubles resolve at t = 1.85 "));
+                                          ": the step size fell below what doubles resolve at t = 1.85"));
     CHECK_THAT(message, Catch::Contains("raise rtol/atol"));
   });
 }

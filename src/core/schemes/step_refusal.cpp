@@ -1,21 +1,15 @@
 // The messages that end an adaptive run which cannot advance in doubles.
 #include "core/schemes/step_refusal.hpp"
 
-#include <cstdio>
 #include <string>
 
 #include "core/error.hpp"
+#include "core/quoted_value.hpp"
 #include "core/schemes/step_controller.hpp"
 
 namespace vibra {
 
 namespace {
-std::string g(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", x);
-  return text;
-}
-
 /// What went wrong and what to do, by failure; the caller adds where.
 struct Advice {
   StepFailure failure;
@@ -36,9 +30,9 @@ constexpr Advice kAdvice[] = {
 void refuse_adaptive_step(const char* scheme, StepFailure failure, double t, double h) {
   for (const Advice& advice : kAdvice)
     if (advice.failure == failure)
-      throw UsageError(std::string(scheme) + ": " + advice.problem + " at t = " + g(t) + " (h = " + g(h) + "): " +
-                       advice.fix);
-  throw UsageError(std::string(scheme) + ": the run cannot advance at t = " + g(t));
+      throw UsageError(std::string(scheme) + ": " + advice.problem + " at t = " + short_number(t) +
+                       " (h = " + short_number(h) + "): " + advice.fix);
+  throw UsageError(std::string(scheme) + ": the run cannot advance at t = " + short_number(t));
 }
 
 }  // namespace vibra
