@@ -86,13 +86,15 @@ class AdaptiveRungeKutta {
   /// component at rest). NaN if any ratio is NaN, inf if any is infinite.
   static double scaled_rms(const Y& x, const Y& scale) {
     Y ratio;
+    for (int i = 0; i < 2 * D; ++i) ratio[i] = x[i] == 0 ? 0 : x[i] / scale[i];
+    // The plain sum of squares wherever it neither overflows nor underflows.
+    const double mean_square = ratio.array().square().mean();
+    if (mean_square >= std::numeric_limits<double>::min() && mean_square < HUGE_VAL) return std::sqrt(mean_square);
     double largest = 0;
-    for (int i = 0; i < 2 * D; ++i) {
-      ratio[i] = x[i] == 0 ? 0 : std::abs(x[i] / scale[i]);
-      if (!(ratio[i] <= largest)) largest = ratio[i];  // NaN sticks
-    }
-    if (!(largest > 0 && largest < std::numeric_limits<double>::infinity())) return largest;
-    return largest * std::sqrt((ratio / largest).squaredNorm() / (2 * D));
+    for (int i = 0; i < 2 * D; ++i)
+      if (!(std::abs(ratio[i]) <= largest)) largest = std::abs(ratio[i]);  // NaN sticks
+    if (!(largest > 0 && largest < HUGE_VAL)) return largest;
+    return largest * std::sqrt((ratio / largest).array().square().mean());
   }
 
  private:
