@@ -154,8 +154,9 @@ TEST_CASE("vibra solve prints an adaptive run's uneven times, ending at T", "[sc
 TEST_CASE("the new keys refuse bad values with one line", "[schemes][adaptive][cli]") {
   for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
            {"solve undamped --set scheme=dopri5 --set rtol=0", "rtol=0 is out of range"},
-           {"solve undamped --set scheme=dopri5 --set rtol=-1e-6", "give a relative tolerance in [1e-15, 1)"},
+           {"solve undamped --set scheme=dopri5 --set rtol=-1e-6", "give a relative tolerance in [1e-14, 1)"},
            {"solve undamped --set scheme=dopri5 --set rtol=1e-17", "rtol=1e-17 is out of range"},
+           {"solve undamped --set scheme=dopri5 --set rtol=9e-15", "rtol=9e-15 is out of range"},
            {"solve undamped --set scheme=dopri5 --set rtol=2", "rtol=2 is out of range"},
            {"solve undamped --set scheme=rkf45 --set rtol=abc", "cannot read rtol='abc'"},
            {"solve undamped --set scheme=dopri5 --set atol=-1", "atol=-1 is out of range"},

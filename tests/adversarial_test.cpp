@@ -123,6 +123,49 @@ TEST_CASE("adversarial: empty and malformed values of every kind of option", "[c
   CHECK(std::size(cases) == 41);
 }
 
+TEST_CASE("adversarial: adaptive runs doubles cannot advance end in seconds with one line", "[cli][adversarial][adaptive]") {
+  // docs/schemes.md, "Adaptive": each once wrote rows at t = 0 without end,
+  // or shrank the step until a vague message.
+  const Case cases[] = {
+      // A tolerance below what doubles resolve, refused before the run (3).
+      {"solve undamped --set scheme=dopri5 --set rtol=1e-15 -o OUT.csv", "rtol=1e-15 is out of range"},
+      {"solve undamped --set scheme=rkf45 --set rtol=5e-15 -o OUT.csv", "in [1e-14, 1) (doubles resolve no finer)"},
+      {"render spring --set scheme=dopri5 --set rtol=1e-16 --at 1 -o OUT.png", "rtol=1e-16 is out of range"},
+      // u'' = u^3 from u = 1 blows up at t = 1.854: the step underflows there (3).
+      {"solve vibration --set scheme=dopri5 --set 's=-u^3' --set dt=0.01 --set T=3 -o OUT.csv",
+       "dopri5: the step size fell below what doubles resolve at t = 1.85"},
+      {"solve vibration --set scheme=rkf45 --set 's=-u^3' --set dt=0.01 --set T=3 -o OUT.csv",
+       "rkf45: the step size fell below what doubles resolve at t = 1.85"},
+      {"render spring --set scheme=dopri5 --set 's=-u^3' --set dt=0.01 --set T=3 -o OUT.mp4", "raise rtol/atol"},
+      // F is undefined after t = 0.5: no step size gives a finite error (2).
+      {"solve vibration --set scheme=dopri5 --set 'F=sqrt(0.5-t)' --set T=1 -o OUT.csv",
+       "the error estimate is not finite for any step size at t = 0.5"},
+      {"solve vibration --set scheme=rkf45 --set 'F=sqrt(0.5-t)' --set T=1 -o OUT.csv", "check the --set values"},
+  };
+  for (const auto& c : cases) {
+    const auto start = std::chrono::steady_clock::now();
+    check_refused(c.args, c.expected);
+    CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 5);
+  }
+}
+
+TEST_CASE("adversarial: the adaptive runs that once never advanced now reach T", "[cli][adversarial][adaptive]") {
+  // atol = 1e-300 with v(0) = 0 overflowed the starting rule's norms, and
+  // F = 1e200 t its second one: every step had h = 0.
+  const std::pair<std::string, double> runs[] = {{"undamped --set atol=1e-300 --set dt=0.001 --set T=0.01", 0.01},
+                                                 {"vibration --set 'F=1e200*t' --set dt=0.5 --set T=10", 10}};
+  for (const auto& [run, T] : runs)
+    for (const std::string scheme : {"dopri5", "rkf45"}) {
+      const auto r = run_vibra("solve " + run + " --set scheme=" + scheme);
+      INFO(run << " " << scheme << ": " << r.err);
+      REQUIRE(r.exit_code == 0);
+      const auto table = vibra::test::csv_rows(r.out);
+      CHECK(table.size() < 5000);
+      for (std::size_t i = 2; i < table.size(); ++i) REQUIRE(std::stod(table[i][0]) > std::stod(table[i - 1][0]));
+      CHECK(std::stod(table.back()[0]) == Approx(T).epsilon(1e-12));
+    }
+}
+
 TEST_CASE("adversarial: long values and newlines are quoted shortened, on one line", "[cli][adversarial]") {
   ScratchDirectory dir;
   const std::string huge(100000, '1');

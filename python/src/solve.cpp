@@ -2,6 +2,7 @@
 // into memory that numpy then views, with the GIL released while it runs.
 #include <algorithm>
 #include <limits>
+#include <vector>
 
 #include "bindings.hpp"
 #include "core/error.hpp"
@@ -72,6 +73,24 @@ size_t row_count(long long steps, long long every) {
   return static_cast<size_t>(steps / every + 1 + (steps % every != 0));
 }
 
+/// An adaptive run takes as many steps as its tolerances need, not the
+/// mesh's count (docs/schemes.md): its rows are gathered chunk by chunk
+/// until the run ends, then laid out once.
+py::array_t<double> adaptive_table(Trajectory& trajectory, long long every, size_t chunk) {
+  const size_t width = trajectory.width();
+  std::vector<std::vector<double>> columns(width);
+  TableMemory buffer = allocate_table(chunk, width);
+  for (bool finished = false; !finished;) {
+    const size_t written = fill_rows(trajectory, every, buffer.get(), chunk, finished);
+    for (size_t c = 0; c < width; ++c)
+      columns[c].insert(columns[c].end(), buffer.get() + c * chunk, buffer.get() + c * chunk + written);
+  }
+  const size_t rows = columns[0].size();
+  TableMemory data = allocate_table(rows, width);
+  for (size_t c = 0; c < width; ++c) std::copy(columns[c].begin(), columns[c].end(), data.get() + c * rows);
+  return owning_array(std::move(data), rows, width);
+}
+
 py::tuple solve(const std::string& model, const std::vector<std::string>& settings, long long every) {
   std::unique_ptr<Trajectory> trajectory = build(model, settings, every);
   const long long steps = trajectory->info().mesh.steps;
@@ -80,6 +99,9 @@ py::tuple solve(const std::string& model, const std::vector<std::string>& settin
   const size_t rows = row_count(steps, every), width = trajectory->width();
   if (rows > std::numeric_limits<size_t>::max() / sizeof(double) / width)
     throw UsageError("that is too many rows: raise every or dt, or lower T");
+  if (trajectory->info().mesh.adaptive())
+    return py::make_tuple(trajectory->info().columns, adaptive_table(*trajectory, every, std::min<size_t>(rows, 1 << 16)),
+                          run_info(model, *trajectory));
   TableMemory data = allocate_table(rows, width);  // uninitialised: each element is written once
   bool finished = false;
   fill_rows(*trajectory, every, data.get(), rows, finished);

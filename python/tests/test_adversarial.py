@@ -48,6 +48,14 @@ BAD_VALUES = [
     (lambda: vibra.render(window="1e-300x", out="x.mp4"), ValueError, "window"),
     (lambda: vibra.render(scene=None), TypeError, ""),
     (lambda: vibra.render(out=""), OSError, "the output path is empty"),  # paths: OSError, as open() raises
+    # Adaptive runs doubles cannot advance (docs/schemes.md): refused, not a hang.
+    (lambda: vibra.solve("undamped", scheme="dopri5", rtol=1e-15), ValueError, "rtol=1e-15 is out of range"),
+    (lambda: vibra.solve("vibration", scheme="dopri5", s="-u^3", dt=0.01, T=3), ValueError,
+     "dopri5: the step size fell below what doubles resolve at t = 1.85"),
+    (lambda: next(vibra.stream("vibration", scheme="rkf45", s="-u^3", dt=0.01, T=3)), ValueError,
+     "rkf45: the step size fell below what doubles resolve"),
+    (lambda: vibra.solve("vibration", scheme="rkf45", F="sqrt(0.5-t)", T=1), ValueError,
+     "the error estimate is not finite for any step size at t = 0.5"),
 ]
 
 
@@ -60,3 +68,17 @@ def test_bad_argument_raises(call, exception, message, tmp_path, monkeypatch):
     if exception is ValueError:  # vibra's own messages; pybind11's TypeErrors list the signatures
         assert "\n" not in str(error.value)
     assert list(tmp_path.iterdir()) == []  # nothing written
+
+
+@pytest.mark.parametrize("scheme", ["dopri5", "rkf45"])
+@pytest.mark.parametrize("keys, T", [(dict(model="undamped", atol=1e-300, dt=0.001, T=0.01), 0.01),
+                                     (dict(model="vibration", F="1e200*t", dt=0.5, T=10), 10),
+                                     (dict(model="undamped", dt=0.1), 10)])
+def test_adaptive_run_reaches_its_end(scheme, keys, T):
+    """Once every step had h = 0 (41 rows at t = 0), and a run was cut at the
+    mesh's row count: an adaptive run's rows advance and end at T."""
+    keys = dict(keys)
+    run = vibra.solve(keys.pop("model"), scheme=scheme, **keys)
+    assert all(b > a for a, b in zip(run.t, run.t[1:]))
+    assert run.t[-1] == pytest.approx(T, rel=1e-12)
+    assert len(run) < 5000

@@ -13,6 +13,7 @@ namespace vibra {
 /// that the global error follows the tolerance as dopri5's does; their
 /// difference, the 4th-order solution's error, controls the step.
 struct Fehlberg45 {
+  static constexpr const char* name = "rkf45";
   static constexpr int stages = 6;
   static constexpr int order = 4;
   static constexpr bool first_same_as_last = false;
@@ -37,6 +38,7 @@ struct Fehlberg45 {
 /// the 5th-order solution is kept; its last stage is the next step's first
 /// (FSAL), and a 4th-order continuous extension gives the dense output.
 struct DormandPrince54 {
+  static constexpr const char* name = "dopri5";
   static constexpr int stages = 7;
   static constexpr int order = 4;
   static constexpr bool first_same_as_last = true;
