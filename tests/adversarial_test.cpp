@@ -131,16 +131,16 @@ TEST_CASE("adversarial: adaptive runs doubles cannot advance end in seconds with
       {"solve undamped --set scheme=dopri5 --set rtol=1e-15 -o OUT.csv", "rtol=1e-15 is out of range"},
       {"solve undamped --set scheme=rkf45 --set rtol=5e-15 -o OUT.csv", "in [1e-14, 1) (doubles resolve no finer)"},
       {"render spring --set scheme=dopri5 --set rtol=1e-16 --at 1 -o OUT.png", "rtol=1e-16 is out of range"},
-      // u'' = u^3 from u = 1 blows up at t = 1.854: the step underflows there (3).
+      // u'' = u^3 from u = 1 blows up at t = 1.854: the step underflows there (2).
       {"solve vibration --set scheme=dopri5 --set 's=-u^3' --set dt=0.01 --set T=3 -o OUT.csv",
        "dopri5: the step size fell below what doubles resolve at t = 1.85"},
       {"solve vibration --set scheme=rkf45 --set 's=-u^3' --set dt=0.01 --set T=3 -o OUT.csv",
        "rkf45: the step size fell below what doubles resolve at t = 1.85"},
-      {"render spring --set scheme=dopri5 --set 's=-u^3' --set dt=0.01 --set T=3 -o OUT.mp4", "raise rtol/atol"},
-      // F is undefined after t = 0.5: no step size gives a finite error (2).
+      // F is undefined after t = 0.5: no step size gives a finite error (3).
       {"solve vibration --set scheme=dopri5 --set 'F=sqrt(0.5-t)' --set T=1 -o OUT.csv",
        "the error estimate is not finite for any step size at t = 0.5"},
       {"solve vibration --set scheme=rkf45 --set 'F=sqrt(0.5-t)' --set T=1 -o OUT.csv", "check the --set values"},
+      {"render spring --set scheme=dopri5 --set 'F=sqrt(0.5-t)' --set T=1 -o OUT.mp4", "check the --set values"},
   };
   for (const auto& c : cases) {
     const auto start = std::chrono::steady_clock::now();
