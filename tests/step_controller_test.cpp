@@ -114,7 +114,7 @@ double error_inside(double h, double s) {
 }
 }  // namespace
 
-TEST_CASE("step controller: accepted at err = 1 exactly, rejected just above; the factor's clamps",
+TEST_CASE("step controller: accepted at err = 1 exactly, rejected just above, the factor's clamps",
           "[schemes][adaptive][controller]") {
   CHECK(judge_step<4>(1.0, false).accepted);
   CHECK(judge_step<4>(1.0, false).factor == Approx(0.9));
