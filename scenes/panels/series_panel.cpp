@@ -31,6 +31,13 @@ SeriesPanel::SeriesPanel(const render::PixelRect& outer, double scale, std::stri
       recent_.emplace_back(window_ / columns, 2 * columns + 2);
   }
   panel_.set_x_range(0, window_);
+  marks_.resize(series_.size());
+  // The runs' curves, the first (measured) last so that it is on top; then
+  // the dashed references over them.
+  for (size_t i = series_.size(); i-- > 0;)
+    if (!series_[i].dashed) order_.push_back(i);
+  for (size_t i = 0; i < series_.size(); ++i)
+    if (series_[i].dashed) order_.push_back(i);
 }
 
 void SeriesPanel::record(std::span<const double> row) { add_row(row, true); }
@@ -39,7 +46,6 @@ void SeriesPanel::observe(std::span<const double> row) { add_recent(row, true); 
 void SeriesPanel::observe_between(std::span<const double> row) { add_recent(row, false); }
 
 void SeriesPanel::add_row(std::span<const double> row, bool mesh_row) {
-  marks_.resize(series_.size());
   for (size_t i = 0; i < series_.size(); ++i) {
     const double v = series_[i].value(row);
     if (!std::isfinite(v)) continue;
@@ -53,7 +59,6 @@ void SeriesPanel::add_row(std::span<const double> row, bool mesh_row) {
 }
 
 void SeriesPanel::add_recent(std::span<const double> row, bool mesh_row) {
-  marks_.resize(series_.size());
   for (size_t i = 0; i < recent_.size(); ++i) {
     if (series_[i].of_time) continue;  // drawn from its function of t
     const double v = series_[i].value(row);
@@ -131,15 +136,6 @@ double SeriesPanel::marker_radius(size_t i) const {
   return spacing >= kMarkedSpacing * scale ? std::min(3.4 * scale, spacing / 3) : 0;
 }
 
-std::vector<size_t> SeriesPanel::drawing_order() const {
-  std::vector<size_t> order;
-  for (size_t i = series_.size(); i-- > 0;)
-    if (!series_[i].dashed) order.push_back(i);
-  for (size_t i = 0; i < series_.size(); ++i)
-    if (series_[i].dashed) order.push_back(i);
-  return order;
-}
-
 const std::vector<render::GrowingPolyline>& SeriesPanel::whole_curves() const {
   if (!whole_curves_.empty() || mode_ != WindowMode::whole_run) return whole_curves_;
   const int columns = whole_.empty() ? panel_.columns() : whole_[0].columns();
@@ -191,7 +187,7 @@ void SeriesPanel::draw_progress(LayerGrowth& growth, std::span<const double> row
   render::clip_to_pixels(layer.cr(), area);
   if (growth.from_start) {
     settled_x_ = std::floor(area.x);
-    for (size_t i : drawing_order()) {
+    for (size_t i : order_) {
       whole_curves()[i].draw_until(layer, until_x, now(i), {series_[i].color, 2.4, series_[i].dashed});
       draw_marks(layer, i, settled_x_, until_x);  // from the panel's first whole pixel, as every strip after
     }
@@ -200,7 +196,7 @@ void SeriesPanel::draw_progress(LayerGrowth& growth, std::span<const double> row
     // is drawn again, as the still would draw it.
     const double right = std::ceil(until_x + reach);
     growth.reset({settled_x_, std::floor(area.y), right - settled_x_, std::ceil(area.y + area.h) - std::floor(area.y)});
-    for (size_t i : drawing_order()) {
+    for (size_t i : order_) {
       whole_curves()[i].draw_piece_until(layer, settled_x_, until_x, now(i), {series_[i].color, 2.4, series_[i].dashed});
       draw_marks(layer, i, settled_x_, until_x);  // clipped to the strip
     }
@@ -213,7 +209,7 @@ void SeriesPanel::draw_progress(LayerGrowth& growth, std::span<const double> row
 void SeriesPanel::draw_cursors(render::Canvas& canvas, double t, std::span<const double> row) const {
   // Every run's own cursor, the first (measured) one last, on top: curves
   // that coincide still show each run where it is.
-  for (size_t i : drawing_order()) {
+  for (size_t i : order_) {
     if (series_[i].dashed) continue;
     const double value = series_[i].value(row);
     if (!std::isfinite(value)) continue;
@@ -234,7 +230,7 @@ void SeriesPanel::draw(render::Canvas& canvas, double t, std::span<const double>
   // jumps shows only completed windows; the others draw up to t.
   const double last_x = mode_ == WindowMode::jumps ? x1 : t;
   cairo_set_line_join(canvas.cr(), CAIRO_LINE_JOIN_ROUND);  // no mitre spikes past a coarse run's mesh values
-  for (size_t i : drawing_order()) {
+  for (size_t i : order_) {
     const render::Stroke stroke{series_[i].color, 2.4, series_[i].dashed};
     if (series_[i].of_time) {
       panel_.draw_function(canvas, series_[i].of_time, x0, last_x, stroke);

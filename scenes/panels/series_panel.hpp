@@ -99,10 +99,7 @@ class SeriesPanel final : public ScenePanel {
 
  private:
   std::pair<double, double> window_at(double t) const;
-  /// Series indices in drawing order: the runs' curves, the first (measured)
-  /// last of them so that it is on top; then the dashed references (exact
-  /// solutions) over them, where their gaps let what is under them show.
-  std::vector<size_t> drawing_order() const;
+
   void draw_axes(render::Canvas&, bool time_labels) const;
   void draw_cursors(render::Canvas&, double t, std::span<const double> row) const;
   /// Adds row's values to the curves (and, for a mesh row, to the marks).
@@ -128,6 +125,10 @@ class SeriesPanel final : public ScenePanel {
   mutable std::vector<render::GrowingPolyline> whole_curves_;
   double mesh_dt_ = 0;
   std::vector<std::vector<std::pair<double, double>>> marks_;  ///< per series: (t, value) of mesh rows
+  /// Series indices in drawing order: the runs' curves, the first (measured)
+  /// last of them so that it is on top; then the dashed references (exact
+  /// solutions) over them, where their gaps let what is under them show.
+  std::vector<size_t> order_;
   double progress_x_ = -1;  ///< whole_run: curves are drawn on the layer up to this pixel x
   double settled_x_ = 0;     ///< whole_run: left of this pixel, the layer's curves are final
 };
