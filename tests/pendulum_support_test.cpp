@@ -81,7 +81,8 @@ TEST_CASE("a rigid pendulum whose link pushes (S < 0) is drawn and named as a st
   // degrees, and at every later moment of that swing, it pulls.
   auto key_names = [](const Diagram& d) {
     std::string names;
-    for (const auto& n : d.force_key()->names) names += n.name + "; ";
+    const auto key = d.force_key();  // held: a range-for over key->names of a temporary dangles
+    for (const auto& n : key->names) names += n.name + "; ";
     return names;
   };
   const Run pushed = recorded("pendulum", {{"Theta", "170"}});
