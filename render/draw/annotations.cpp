@@ -1,7 +1,9 @@
 #include "render/draw/annotations.hpp"
 
 #include <cmath>
+#include <utility>
 
+#include "render/draw/contrast.hpp"
 #include "render/draw/reach_clip.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "render/labels/label_placer.hpp"
@@ -17,23 +19,30 @@ bool draw_force_arrow(Canvas& canvas, const WorldView& view, const ForceArrow& f
   const double scale = canvas.scale();
   const Point from = view.to_pixel(f.from), tip = view.to_pixel(f.to);
   const bool visible = (tip - from).norm() >= kShortestArrow * scale;
+  // A force sits on its casing of the background, whatever body it
+  // crosses, in a colour that reads on that background.
+  const Color color = legible_on(f.color, background);
+  const Casing casing{background, 2.5, f.from_rim};
   {
     OutlineKindScope kind(canvas, OutlineKind::arrow);
     if (visible) {
-      draw_arrow(canvas, view, f.from, f.to, {f.color, 4.2}, 22);
+      draw_arrow(canvas, view, f.from, f.to, {color, 4.2}, 22, casing);
     } else {
       // Shorter than its head: a small ring where the force acts, still
       // labelled (a ring, so the body under it keeps its colour).
-      cairo_new_path(canvas.cr());
-      add_arc(canvas.cr(), from, 5 * scale, 0, 2 * M_PI);
-      cairo_set_source_rgba(canvas.cr(), f.color.r, f.color.g, f.color.b, f.color.a);
-      cairo_set_line_width(canvas.cr(), 2.2 * scale);
-      cairo_set_dash(canvas.cr(), nullptr, 0, 0);
-      canvas.stroke();
+      for (const auto& [ink, width] :
+           {std::pair{background, 2.2 + 2 * casing.device_reach(scale) / scale}, std::pair{color, 2.2}}) {
+        cairo_new_path(canvas.cr());
+        add_arc(canvas.cr(), from, 5 * scale, 0, 2 * M_PI);
+        cairo_set_source_rgba(canvas.cr(), ink.r, ink.g, ink.b, ink.a);
+        cairo_set_line_width(canvas.cr(), width * scale);
+        cairo_set_dash(canvas.cr(), nullptr, 0, 0);
+        canvas.stroke();
+      }
     }
   }
   if (f.label.empty()) return visible;
-  TextStyle style{24, f.color};
+  TextStyle style{24, color};
   style.halo = true, style.halo_color = background;
   if (!visible)
     request_label(canvas, {f.label, style, from, f.place == LabelPlace::beside ? f.side : Point(1, -1), 6 * scale});

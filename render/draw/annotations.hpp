@@ -23,6 +23,7 @@ struct ForceArrow {
   std::string label;
   LabelPlace place = LabelPlace::beyond_tip;
   Point side = Point(1, 0);  ///< pixel direction for LabelPlace::beside
+  bool from_rim = false;     ///< starts at a body's rim (its casing keeps off the body)
 };
 
 /// Draws the arrow (or its ring) and asks for its haloed label (see

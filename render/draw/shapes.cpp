@@ -80,23 +80,59 @@ void draw_line(Canvas& canvas, const WorldView& view, const Point& a, const Poin
 }
 
 void draw_arrow(Canvas& canvas, const WorldView& view, const Point& from, const Point& to, const Stroke& s,
-                double head) {
-  draw_pixel_arrow(canvas, view.to_pixel(from), view.to_pixel(to), s, head);
+                double head, const std::optional<Casing>& casing) {
+  draw_pixel_arrow(canvas, view.to_pixel(from), view.to_pixel(to), s, head, casing);
 }
 
-void draw_pixel_arrow(Canvas& canvas, const Point& a, const Point& b, const Stroke& s, double head) {
+namespace {
+/// An arrow's pieces in pixels: the shaft, which stops inside the head so
+/// its round cap does not poke out of the tip, and the head's outline.
+struct ArrowShape {
+  Point shaft_from, shaft_to;
+  Point head[4];
+};
+
+ArrowShape arrow_shape(const Point& a, const Point& b, double length, double head_length) {
+  const Point along = (b - a) / length, across(-along.y(), along.x());
+  const double half_width = 0.45 * head_length;
+  const Point base = b - head_length * along;
+  return {a, b - 0.8 * head_length * along,
+          {b, base + half_width * across, base + 0.25 * head_length * along, base - half_width * across}};
+}
+
+/// The casing under an arrow: its shaft and head widened by the casing's reach.
+void draw_casing(Canvas& canvas, const ArrowShape& shape, double shaft_width, const Casing& casing) {
+  const double reach = casing.device_reach(canvas.scale());
+  const Color& color = casing.color;
+  cairo_t* cr = canvas.cr();
+  cairo_save(cr);
+  apply(canvas, {color, shaft_width + 2 * reach / canvas.scale()});
+  if (casing.square_tail) cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  const Point ends[] = {shape.shaft_from, shape.shaft_to};
+  add_polyline(cr, ends);
+  canvas.stroke();
+  cairo_restore(cr);
+  cairo_new_path(cr);
+  add_polygon(cr, shape.head);
+  cairo_set_source_rgba(cr, color.r, color.g, color.b, color.a);
+  cairo_set_line_width(cr, 2 * reach);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_dash(cr, nullptr, 0, 0);
+  canvas.fill_preserve();
+  canvas.stroke();
+}
+}  // namespace
+
+void draw_pixel_arrow(Canvas& canvas, const Point& a, const Point& b, const Stroke& s, double head,
+                      const std::optional<Casing>& casing) {
   OutlineKindScope outline_kind(canvas, OutlineKind::arrow);
   const double length = (b - a).norm();
   if (length < 1e-9) return;
-  const Point along = (b - a) / length, across(-along.y(), along.x());
-  const double head_length = std::min(head * canvas.scale(), 0.6 * length);
-  const double half_width = 0.45 * head_length;
-  const Point base = b - head_length * along;
-  // The shaft stops inside the head so its round cap does not poke out of the tip.
-  draw_pixel_line(canvas, a, b - 0.8 * head_length * along, {s.color, s.width, s.dashed});
+  const ArrowShape shape = arrow_shape(a, b, length, std::min(head * canvas.scale(), 0.6 * length));
+  if (casing) draw_casing(canvas, shape, s.width, *casing);
+  draw_pixel_line(canvas, shape.shaft_from, shape.shaft_to, {s.color, s.width, s.dashed});
   cairo_t* cr = canvas.cr();
-  const Point head_outline[] = {b, base + half_width * across, base + 0.25 * head_length * along, base - half_width * across};
-  add_polygon(cr, head_outline);
+  add_polygon(cr, shape.head);
   cairo_set_source_rgba(cr, s.color.r, s.color.g, s.color.b, s.color.a);
   canvas.fill();
 }

@@ -1,4 +1,6 @@
 #pragma once
+#include <algorithm>
+#include <optional>
 #include <utility>
 #include <span>
 
@@ -20,9 +22,23 @@ struct Stroke {
 void draw_line(Canvas&, const WorldView&, const Point& a, const Point& b, const Stroke&);
 /// An arrow from `from` to `to` with a filled head of `head` 720p pixels
 /// (shrunk for short arrows so the head never overshoots the tip).
-void draw_arrow(Canvas&, const WorldView&, const Point& from, const Point& to, const Stroke&, double head = 20);
+/// A band of another colour under a mark, `reach` 720p pixels wide on each
+/// side: the mark then sits on it, whatever it crosses (a force on a body).
+struct Casing {
+  Color color;
+  double reach = 2.5;
+  /// Square at the tail, reaching no further back than the shaft: for an
+  /// arrow that starts at a body's rim, whose outline it must not bite.
+  bool square_tail = false;
+  /// In device pixels: never under 3, so past the mark's 1-pixel fringe
+  /// of antialiasing a whole pixel of casing remains at any size.
+  double device_reach(double scale) const { return std::max(reach * scale, 3.0); }
+};
+void draw_arrow(Canvas&, const WorldView&, const Point& from, const Point& to, const Stroke&, double head = 20,
+                const std::optional<Casing>& = std::nullopt);
 /// The same in pixels.
-void draw_pixel_arrow(Canvas&, const Point& from, const Point& to, const Stroke&, double head = 20);
+void draw_pixel_arrow(Canvas&, const Point& from, const Point& to, const Stroke&, double head = 20,
+                      const std::optional<Casing>& = std::nullopt);
 void draw_circle(Canvas&, const WorldView&, const Point& center, double radius, const Color& fill, const Stroke& outline);
 /// An arc from angle a0 to a1 (radians, counter-clockwise from +x in the world).
 void draw_arc(Canvas&, const WorldView&, const Point& center, double radius, double a0, double a1, const Stroke&);

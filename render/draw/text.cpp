@@ -8,6 +8,7 @@
 #include <string_view>
 #include <utility>
 
+#include "render/draw/contrast.hpp"
 #include "render/draw/label_cache.hpp"
 #include "render/labels/drawing_record.hpp"
 
@@ -43,7 +44,9 @@ void show_layout(cairo_t* cr, PangoLayout* layout, const TextStyle& style, doubl
     cairo_restore(cr);
   }
   cairo_move_to(cr, x, y);
-  cairo_set_source_rgba(cr, style.color.r, style.color.g, style.color.b, style.color.a);
+  // On its halo a label reads whatever it is asked in: never fainter than 3:1 against it.
+  const Color ink = style.halo ? legible_on(style.color, style.halo_color) : style.color;
+  cairo_set_source_rgba(cr, ink.r, ink.g, ink.b, ink.a);
   pango_cairo_show_layout(cr, layout);
   cairo_new_path(cr);
 }

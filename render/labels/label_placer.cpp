@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/draw/contrast.hpp"
 #include "render/draw/shapes.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "render/labels/occupancy_grid.hpp"
@@ -197,10 +198,16 @@ void draw_placed_labels(Canvas& canvas, const std::vector<PlacedLabel>& labels) 
     const Point end = nearest_on_box(label.box, label.request.anchor);
     const Point d = end - label.request.anchor;
     const double length = d.norm();
-    if (length < 6 * scale) continue;
+    if (length < 10 * scale) continue;
     const Point along = d / length;
-    draw_pixel_line(canvas, label.request.anchor + 3 * scale * along, end - 2 * scale * along,
-                    {label.request.style.color.with_alpha(0.7), 1.2});
+    // Clear of the arrow's tip it labels by more than the tip's casing.
+    const Point from = label.request.anchor + 6 * scale * along, to = end - 2 * scale * along;
+    const TextStyle& style = label.request.style;
+    // A haloed label's leader is a thin line of ink on a casing of its halo,
+    // as in a technical drawing: it reads across a body, and is not taken
+    // for a force's shaft in the force's colour.
+    if (style.halo) draw_pixel_line(canvas, from, to, {style.halo_color, 1.2 + 2 * 1.5});
+    draw_pixel_line(canvas, from, to, {style.halo ? legible_on(palette::ink, style.halo_color) : style.color.with_alpha(0.7), 1.2});
   }
   for (const PlacedLabel& label : labels) {
     if (label.request.typeset) draw_card(canvas, label);

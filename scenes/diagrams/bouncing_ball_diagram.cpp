@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "render/draw/annotations.hpp"
+#include "render/draw/contrast.hpp"
 #include "render/draw/machine_elements.hpp"
 #include "render/draw/text.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
@@ -105,7 +106,8 @@ void BouncingBallDiagram::draw(render::Canvas& canvas, const render::WorldView& 
   if (count > 0) {
     const double age = (t - impacts_[count - 1]) / (0.2 * (period_ > 0 ? period_ : 1));
     if (age < 1) {
-      const render::Stroke burst{colors_.gravity.with_alpha(1 - age), 2.4};
+      // The ground's impulse, in N's colour: thinning as it fades, never faint.
+      const render::Stroke burst{render::legible_on(colors_.wire_force, colors_.background), 1 + 1.6 * (1 - age)};
       for (int i = 0; i < 7; ++i) {
         const double a = M_PI * (i + 0.5) / 7;
         const Point d(std::cos(a), std::sin(a));
@@ -113,12 +115,13 @@ void BouncingBallDiagram::draw(render::Canvas& canvas, const render::WorldView& 
       }
     }
   }
-  // The tally: a dot per impact on the ground at the right, rows upward.
+  // The tally: a dot per impact on the ground at the right, rows upward, in
+  // ink (a count, not a force).
   for (size_t i = 0; i < std::min<size_t>(count, kTallyMost); ++i)
     render::draw_circle(canvas, view,
                         Point((kTallyLeft + (i % kTallyRow) * kTallySpacing) * H,
                               (kTallyDot + 0.004 + (i / kTallyRow) * kTallySpacing) * H),
-                        kTallyDot * H, colors_.gravity, {colors_.gravity, 1});
+                        kTallyDot * H, colors_.wire, {colors_.wire, 1});
   char tally[48];
   std::snprintf(tally, sizeof tally, "%zu impact%s", count, count == 1 ? "" : "s");
   render::TextStyle label{18, colors_.wire};

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "scenes/diagrams/diagram.hpp"
+#include "render/draw/shapes.hpp"
 #include "scenes/diagrams/force_key.hpp"
 
 namespace vibra::scenes {
@@ -20,6 +21,24 @@ struct DrawnForce {
   render::Color color;
   std::string label;
 };
+
+/// A force on a small round body drawn from its rim: the arrow `centre` to
+/// `tip` moved out along itself by `radius`, its length (the force's) kept,
+/// so the body stays whole beside the arrows' casings.
+inline Arrow from_rim(const Point& centre, double radius, const Point& tip) {
+  const Point d = tip - centre;
+  const double length = d.norm();
+  if (!(length > 0)) return {centre, tip};
+  const Point out = radius / length * d;
+  return {centre + out, tip + out};
+}
+
+/// The gap (world units) between a body's rim and the tail of a force drawn
+/// from it: the shaft's round cap and its casing, so neither covers the body.
+inline double rim_gap(const render::Canvas& canvas, const render::WorldView& view) {
+  const double scale = canvas.scale();
+  return (render::Casing{}.device_reach(scale) + 2.1 * scale) / view.zoom();
+}
 
 /// What a spring's force label adds about the spring (section 1.12.1): a
 /// spring from a wall to a body whose displacement u from its natural length

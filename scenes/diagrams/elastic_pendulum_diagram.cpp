@@ -5,6 +5,7 @@
 #include "render/draw/annotations.hpp"
 #include "render/draw/machine_elements.hpp"
 #include "scenes/diagrams/broken_force.hpp"
+#include "scenes/diagrams/drawn_force.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 
 namespace vibra::scenes {
@@ -77,13 +78,16 @@ void ElasticPendulumDiagram::draw(render::Canvas& canvas, const render::WorldVie
   render::draw_spring(canvas, view, kPivot, p + kBob * (kPivot - p).normalized(), spring, {colors_.wire, 1.8});
   render::draw_circle(canvas, view, p, kBob, colors_.bob, {colors_.wire, 1.6});
   if (ghost()) return;
-  const auto arrows = force_arrows(row);
-  const render::ForceArrow forces[] = {{arrows[0].from, arrows[0].to, colors_.gravity, "<i>mg</i>"},
+  auto arrows = force_arrows(row);
+  for (Arrow& a : arrows) a = from_rim(a.from, kBob + rim_gap(canvas, view), a.to);
+  render::ForceArrow forces[] = {{arrows[0].from, arrows[0].to, colors_.gravity, "<i>mg</i>"},
                                        {arrows[1].from, arrows[1].to, colors_.wire_force, "<i>S</i>"},
                                        {arrows[2].from, arrows[2].to, colors_.drag, "<i>D</i>"}};
   // Without drag (gamma = 0) a ring labelled D would claim a force the model does not have.
-  for (const auto& f : forces)
+  for (auto& f : forces) {
+    f.from_rim = true;
     if (&f != &forces[2] || gamma_ > 0) draw_broken_force(canvas, view, scale_.longest(), f, colors_.background);
+  }
 }
 
 std::optional<ForceKey> ElasticPendulumDiagram::force_key() const {

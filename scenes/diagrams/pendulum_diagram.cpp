@@ -10,6 +10,7 @@
 #include "render/draw/text.hpp"
 #include "render/labels/label_placer.hpp"
 #include "scenes/diagrams/broken_force.hpp"
+#include "scenes/diagrams/drawn_force.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 
 namespace vibra::scenes {
@@ -36,8 +37,10 @@ std::vector<PanelSpec> PendulumDiagram::panels() const {
   auto column = [](int i, double factor) { return [i, factor](std::span<const double> row) { return factor * row[i]; }; };
   // theta is shown in degrees, the forces in units of m g.
   return {{quantity_markup("theta"), {{"", colors_.bob, column(1, display_factor("theta"))}}},
-          // Built before the pre-pass has seen S's sign: the title names both.
-          {"<i>S</i> / <i>mg</i>  wire force (&lt; 0: a rod, pushing)", {{"", colors_.wire_force, column(3, 1)}}},
+          // Built before the pre-pass has seen S's sign: from the swing's bound.
+          {options_.link_may_push ? "<i>S</i> / <i>mg</i>  wire force (&lt; 0: a rod, pushing)"
+                                  : "<i>S</i> / <i>mg</i>  wire force",
+           {{"", colors_.wire_force, column(3, 1)}}},
           {"<i>D</i> / <i>mg</i>  air drag", {{"", colors_.drag, column(4, 1)}}}};
 }
 
@@ -97,17 +100,22 @@ void PendulumDiagram::draw(Canvas& canvas, const render::WorldView& view, std::s
   // away from the vertical and the arc.
   const Point outward(std::cos(state.theta), -std::sin(state.theta));  // i_theta in pixels (y down)
   const double side = state.theta >= 0 ? 1 : -1;
-  const render::ForceArrow forces[] = {
-      {g.bob, g.gravity_tip, c.gravity, "<i>mg</i>"},
-      {g.bob, g.wire_force_tip, c.wire_force, state.S < 0 ? "<i>S</i> push" : "<i>S</i>", render::LabelPlace::beside,
+  const double rim = o.bob_radius + rim_gap(canvas, view);
+  const Arrow mg = from_rim(g.bob, rim, g.gravity_tip), S = from_rim(g.bob, rim, g.wire_force_tip),
+              D = from_rim(g.bob, rim, g.drag_tip);
+  render::ForceArrow forces[] = {
+      {mg.from, mg.to, c.gravity, "<i>mg</i>"},
+      {S.from, S.to, c.wire_force, state.S < 0 ? "<i>S</i> push" : "<i>S</i>", render::LabelPlace::beside,
        side * outward},
-      {g.bob, g.drag_tip, c.drag, magnification_label(o.drag_magnification)}};
+      {D.from, D.to, c.drag, magnification_label(o.drag_magnification)}};
   // Without drag (alpha = 0) there is no D to draw: a ring labelled D would
   // claim a force the model does not have.
   // Each arrow is clipped at its room: S toward the pivot has the wire's.
   const double rooms[] = {kArrowRoom, state.S > 0 ? kInwardRoom : kArrowRoom, kArrowRoom};
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < 3; ++i) {
+    forces[i].from_rim = true;
     if (i != 2 || has_drag_) draw_broken_force(canvas, view, rooms[i], forces[i], c.background);
+  }
 
   // The angle's label beyond the middle of its arc, placed like the arrows' labels.
   if (std::abs(state.theta) > 0.02) {
@@ -169,6 +177,10 @@ DiagramKind pendulum_diagram_kind() {
           {"pendulum", "physical-pendulum"}, [](const DiagramInput& in) {
             PendulumDiagramOptions options;
             options.drag_magnification = in.config.drag_magnification;
+            // Energy bounds the swing (drag only lowers it): within 90 degrees
+            // S = omega^2 + cos(theta) > 0 throughout. A bound of 0 is over the top.
+            const double bound = in.info.amplitude_bound;
+            options.link_may_push = !(bound > 0 && bound <= M_PI / 2);
             options.geometry = std::find(in.config.annotate.begin(), in.config.annotate.end(), "geometry") !=
                                in.config.annotate.end();
             return std::make_unique<PendulumDiagram>(options, in.config.colors);

@@ -15,13 +15,16 @@ struct PendulumState {
 struct PendulumDiagramOptions {
   double force_unit = 0.6;          ///< arrow length per unit of scaled force (1.2 L/2)
   double drag_magnification = 5;    ///< D is drawn this many times longer, and labelled so
-  double bob_radius = 1.0 / 20;     ///< L/20
+  double bob_radius = 1.0 / 12;     ///< L/12: a body a hall sees, with room for its forces' casings
   double arc_radius = 1.0 / 6;      ///< L/6
   double vertical_length = 1.0 / 3; ///< dashed reference line, L/3
   double unit_vector_length = 0.25; ///< i_r and i_theta as drawn by `--annotate geometry`
   /// `--annotate geometry` (Fig 1.21): the unit vectors i_r and i_theta, the
   /// pivot (x0, y0) and the wire's length L.
   bool geometry = false;
+  /// Whether the swing can rise above the horizontal, where S < 0 and the
+  /// link pushes: the S panel's title names a rod only then.
+  bool link_may_push = true;
 };
 
 /// Every point of the diagram in world units, pivot at the origin, y up.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "render/draw/contrast.hpp"
 #include "render/typeset/formula_draw.hpp"
 #include "render/typeset/formula_layout.hpp"
 #include "render/typeset/formula_parser.hpp"
@@ -43,7 +44,7 @@ void draw_title_card(render::Canvas& canvas, const TitleCard& card) {
   const double w = canvas.width(), h = canvas.height(), s = canvas.scale();
   if (!card.lecture_title.empty() && card.lecture_title != card.text) {
     const render::MathBox title = fitted_text(canvas, card.lecture_title, kLectureTitleSize, false, 0.9 * w, 0.12 * h);
-    render::draw_math(canvas, title, centred(canvas, title, 0.1 * h), {render::palette::faint}, card.lecture_title);
+    render::draw_math(canvas, title, centred(canvas, title, 0.1 * h), {render::legible_on(render::palette::faint, render::palette::paper)}, card.lecture_title);
   }
   const bool both = !card.text.empty() && !card.equation.empty();
   std::optional<render::MathBox> text, equation;
