@@ -92,4 +92,8 @@ TEST_CASE("a rigid pendulum whose link pushes (S < 0) is drawn and named as a st
   CHECK_FALSE(dynamic_cast<const PendulumDiagram&>(*pulled.diagram).strut());
   CHECK_THAT(key_names(*pushed.diagram), Catch::Contains("strut"));
   CHECK_THAT(key_names(*pulled.diagram), !Catch::Contains("strut") && Catch::Contains("wire"));
+  // The S panel's title names a pushing rod only for a swing that rises
+  // above the horizontal (released within 90 degrees, S = cos(theta) + omega^2 > 0).
+  CHECK_THAT(pushed.diagram->panels()[1].label, Catch::Contains("a rod, pushing"));
+  CHECK_THAT(pulled.diagram->panels()[1].label, !Catch::Contains("rod") && Catch::Contains("wire force"));
 }
