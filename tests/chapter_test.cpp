@@ -21,7 +21,6 @@
 #include "core/error.hpp"
 
 namespace fs = std::filesystem;
-using vibra::cli::ItemKind;
 using vibra::test::read_file;
 using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;

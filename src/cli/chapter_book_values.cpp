@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/quoted_value.hpp"
+#include "core/stop_flag.hpp"
 
 namespace vibra::cli {
 
@@ -85,6 +86,7 @@ std::vector<BookNumber> book_numbers_with(const std::string& file) {
   constexpr int kMaxLines = 10000;  // a book value file is a few lines; a larger one is the wrong file
   for (int number = 1; std::getline(in, line); ++number) {
     if (number > kMaxLines) throw UsageError("--book-values '" + quoted_value(file) + "' is longer than 10000 lines");
+    throw_if_stop_requested();
     if (line.empty() || line[0] == '#') continue;
     const std::string where = "--book-values " + quoted_value(file) + " line " + std::to_string(number);
     if (!split_line(line, item, quantity, value))

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "core/stop_flag.hpp"
 
 namespace vibra::cli {
 
@@ -306,6 +307,7 @@ std::vector<const ChapterItem*> select_items(const std::string& only) {
   std::vector<bool> wanted(kItems.size(), false);
   size_t start = 0;
   for (size_t words = 0; start <= only.size() && words < kItems.size() * 4; ++words) {
+    throw_if_stop_requested();
     const size_t comma = std::min(only.find(',', start), only.size());
     for (const ChapterItem* item : items_named(only.substr(start, comma - start))) wanted[item - kItems.data()] = true;
     start = comma + 1;

@@ -18,6 +18,7 @@
 #include "cli/wrote_message.hpp"
 #include "core/error.hpp"
 #include "core/quoted_value.hpp"
+#include "core/stop_flag.hpp"
 #include "render/output/output_error.hpp"
 #include "render/output/standard_output.hpp"
 #include "render/output/temporary_file.hpp"
@@ -57,7 +58,10 @@ std::optional<std::vector<std::string>> manifest_names(const fs::path& folder) {
   std::string line;
   if (!in || !std::getline(in, line) || line != kManifestFirstLine) return std::nullopt;
   std::vector<std::string> names;
-  for (size_t count = 0; count < 100000 && std::getline(in, line); ++count) names.push_back(line);
+  for (size_t count = 0; count < 100000 && std::getline(in, line); ++count) {
+    throw_if_stop_requested();
+    names.push_back(line);
+  }
   return names;
 }
 
@@ -172,6 +176,8 @@ fs::path site_path(std::string site) {
 }  // namespace
 
 int run_chapter(const ChapterOptions& o) {
+  if (o.site == "-")
+    throw UsageError("-o - would send the site to standard output: the site is a folder, give e.g. -o site/");
   if (o.site.empty() && !o.check)
     throw UsageError("vibra chapter needs a folder for the site: add -o SITE/ (or --check alone to compare only)");
   if (o.jobs < 1 || o.jobs > 64)

@@ -62,7 +62,9 @@ std::vector<Block> blocks_of(const std::vector<std::string>& lines) {
     const std::vector<Word> header = words_of(lines[i], csv);
     size_t end = i + 1;
     while (end < lines.size() && fits(csv, header, lines[end])) ++end;
-    if (end > i + 1) blocks.push_back({csv, header, i + 1, end});
+    if (end == i + 1) continue;
+    blocks.push_back({csv, header, i + 1, end});
+    if (csv) i = end - 1;  // a CSV row is no header: one pass over a long CSV, not one per row
   }
   return blocks;
 }
