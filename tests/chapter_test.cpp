@@ -16,6 +16,7 @@
 
 #include "cli/chapter_book_values.hpp"
 #include "cli/chapter_items.hpp"
+#include "cli/chapter_jobs.hpp"
 #include "cli/chapter_tables.hpp"
 #include "cli_support.hpp"
 #include "core/error.hpp"
@@ -301,4 +302,27 @@ TEST_CASE("Ctrl-C stops vibra chapter and its running commands, leaving no site 
   CHECK(WEXITSTATUS(status) == 130);
   CHECK_THAT(read_file(dir / "err"), Catch::EndsWith("vibra: interrupted by signal 2; no site was written\n"));
   CHECK(files_in(dir.path) == std::set<std::string>{"out", "err"});
+}
+
+TEST_CASE("run_chapter_jobs runs each command from the folder, keeps its output, and names one that fails",
+          "[chapter]") {
+  ScratchDirectory dir;
+  using vibra::cli::ChapterJob;
+  const std::vector<ChapterJob> jobs = {
+      {{"solve", "undamped", "--set", "dt=0.1", "--set", "T=0.1"}, "a.txt", "first"},
+      {{"solve", "undamped", "--set", "dt=0.1", "--set", "T=0.2", "-o", "run.csv"}, "b.txt", "second"}};
+  vibra::cli::run_chapter_jobs(jobs, dir.path, 2, true);
+  CHECK(read_file(dir.path / "a.txt") == "t,u,v\n0,1,0\n0.1,0.8026079119782128,-3.558205396299734\n");
+  CHECK(read_file(dir.path / "b.txt").empty());  // "wrote" went to its messages, which are gone
+  CHECK_THAT(read_file(dir.path / "run.csv"), Catch::StartsWith("t,u,v\n0,1,0\n0.1,"));
+  CHECK(files_in(dir.path) == std::set<std::string>{"a.txt", "b.txt", "run.csv"});
+  const std::vector<ChapterJob> failing = {{{"solve", "no-such-model"}, "c.txt", "third"}};
+  try {
+    vibra::cli::run_chapter_jobs(failing, dir.path, 1, true);
+    FAIL("a failing command must throw");
+  } catch (const std::exception& e) {
+    CHECK_THAT(
+        std::string(e.what()),
+        Catch::StartsWith("chapter: 'vibra solve no-such-model' failed (exit 2): unknown model 'no-such-model'"));
+  }
 }

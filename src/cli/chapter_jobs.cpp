@@ -57,7 +57,8 @@ std::string last_message(const fs::path& file) {
   std::string line, last = "no message";
   for (int lines = 0; lines < 10000 && std::getline(in, line); ++lines)
     if (!line.empty()) last = line;
-  return last;
+  const std::string prefix = "vibra: error: ";  // the command's own line, without a second "vibra: error:"
+  return last.rfind(prefix, 0) == 0 ? last.substr(prefix.size()) : last;
 }
 
 struct Running {
@@ -89,7 +90,7 @@ int exit_code(int status) { return WIFEXITED(status) ? WEXITSTATUS(status) : 128
 void check_finished(const ChapterJob& job, int status, const fs::path& messages, std::vector<Running>& others) {
   if (exit_code(status) != 0) {
     end_jobs(others, SIGTERM);
-    throw render::OutputError("chapter: " + quoted_value(shown_command(job.args), 120) + " failed (exit " +
+    throw render::OutputError("chapter: '" + quoted_value(shown_command(job.args), 120) + "' failed (exit " +
                               std::to_string(exit_code(status)) + "): " + last_message(messages));
   }
   fs::remove(messages);
