@@ -134,7 +134,7 @@ TEST_CASE("two commands of the chapter never write the same file unless they are
     }
 }
 
-TEST_CASE("--only picks a number's figure and exercise, or one by key, and refuses what the chapter lacks",
+TEST_CASE("vibra chapter --only picks a number's figure and exercise, or one by key, and refuses what the chapter lacks",
           "[chapter]") {
   using vibra::cli::select_items;
   auto keys = [](const std::string& only) {
@@ -241,7 +241,7 @@ TEST_CASE(
   CHECK(files_in(dir.path) == std::set<std::string>{"site"});  // no staging folder left beside it
 }
 
-TEST_CASE("--check exits 1 naming a book value that differs from vibra's, and 0 when all agree", "[chapter]") {
+TEST_CASE("vibra chapter --check exits 1 naming a book value that differs from vibra's, and 0 when all agree", "[chapter]") {
   ScratchDirectory dir;
   const auto agree = run_vibra("chapter --only ex1.12,ex1.6 --check");
   INFO(agree.err);
