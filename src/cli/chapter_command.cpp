@@ -17,7 +17,7 @@ void add_chapter_command(CLI::App& app) {
   cmd->add_option(
       "--only", o->only,
       "Items to make: numbers (1.12: the figure and the exercise) or keys (fig1.21, ex1.9), comma-separated");
-  cmd->add_option("-j,--jobs", o->jobs, "Commands run at once (default 1; one per core is fastest)")
+  cmd->add_option("-j,--jobs", o->jobs, "Commands run at once (default: one per core)")
       ->check(ranged("--jobs"));
   cmd->add_flag("--check", o->check,
                 "Compare vibra's numbers with the book's; exit 1 naming each that differs (without -o: no site)");

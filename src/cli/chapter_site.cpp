@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <thread>
 
 #include "cli/chapter_index.hpp"
 #include "cli/chapter_jobs.hpp"
@@ -180,7 +181,7 @@ int run_chapter(const ChapterOptions& o) {
     throw UsageError("-o - would send the site to standard output: the site is a folder, give e.g. -o site/");
   if (o.site.empty() && !o.check)
     throw UsageError("vibra chapter needs a folder for the site: add -o SITE/ (or --check alone to compare only)");
-  if (o.jobs < 1 || o.jobs > 64)
+  if (o.jobs < 0 || o.jobs > 64)  // the option's check says this first; 0 is the default, one per core
     throw UsageError("--jobs " + std::to_string(o.jobs) + " is out of range: give 1 to 64");
   const std::vector<const ChapterItem*> items = select_items(o.only);
   const std::vector<BookNumber> numbers = book_numbers_with(o.book_values);
@@ -190,7 +191,8 @@ int run_chapter(const ChapterOptions& o) {
                                     o.site.empty() ? "vibra-chapter" : site.filename().string());
   std::map<std::string, std::vector<size_t>> job_of;
   const std::vector<ChapterJob> jobs = plan_jobs(items, job_of);
-  run_chapter_jobs(jobs, fs::absolute(folder.path()), o.jobs, o.quiet);
+  const int cores = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
+  run_chapter_jobs(jobs, fs::absolute(folder.path()), o.jobs > 0 ? o.jobs : cores, o.quiet);
   const std::vector<ItemResult> results = collect_results(items, jobs, job_of, numbers, folder.path());
   if (!o.site.empty()) {
     write_index(results, o.only, folder.path());

@@ -8,7 +8,7 @@ namespace vibra::cli {
 struct ChapterOptions {
   std::string site;         ///< -o SITE: the folder to make; "" with --check alone
   std::string only;         ///< --only 1.12,fig1.21; "" for all
-  int jobs = 1;             ///< commands run at once
+  int jobs = 0;             ///< commands run at once; 0: one per core
   bool check = false;       ///< compare vibra's numbers with the book's; a difference is exit 1
   std::string book_values;  ///< --book-values FILE: replacements for the stored book values
   bool quiet = false;
