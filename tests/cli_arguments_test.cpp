@@ -31,6 +31,7 @@ const Command kCommands[] = {
     {"analyze period", "analyze period undamped -o OUT.png", "--set"},
     {"analyze resonance", "analyze resonance -o OUT.png", "--beta"},
     // concat takes any number of parts: an extra one is a file that is no segment of the render.
+    {"chapter", "chapter --only ex1.19 -o OUT", "--only"},
     {"concat", "concat SEGS/p.seg-0-of-2.mp4 SEGS/p.seg-1-of-2.mp4 -o OUT.mp4", "--output"},
 };
 

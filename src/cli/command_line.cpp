@@ -7,6 +7,7 @@ std::string& stored() {
   static std::string line;
   return line;
 }
+}  // namespace
 
 std::string shell_quoted(const std::string& argument) {
   const bool plain = !argument.empty() && argument.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
@@ -16,7 +17,6 @@ std::string shell_quoted(const std::string& argument) {
   for (char c : argument) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
 }
-}  // namespace
 
 void remember_command_line(int argc, char** argv) {
   std::string& line = stored();

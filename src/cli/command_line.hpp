@@ -10,4 +10,7 @@ void remember_command_line(int argc, char** argv);
 /// it, so it can be pasted to run again ("" before remember_command_line).
 const std::string& command_line();
 
+/// One argument as a POSIX shell reads it back: as it is when plain, else in single quotes.
+std::string shell_quoted(const std::string& argument);
+
 }  // namespace vibra::cli

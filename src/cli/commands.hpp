@@ -12,6 +12,13 @@ void add_plot_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
 void add_concat_command(CLI::App& app);
 void add_lecture_command(CLI::App& app);
+void add_chapter_command(CLI::App& app);
+
+/// Thrown by a command that has said why it ends with `code` (not 0 or 2):
+/// `vibra chapter --check` exits 1 when a number differs from the book's.
+struct ReportedExit {
+  int code;
+};
 
 /// Adds -o/--output to a command: every command's output path is given the
 /// same way, and an empty one (-o '') names no file, so it is refused.

@@ -37,6 +37,8 @@ int print_exit_text(const CLI::App& app, const CLI::Error& e) {
   const int code = app.exit(e, text);
   try {
     render::print_standard_output(text.str());
+  } catch (const ReportedExit& e) {
+    return e.code;
   } catch (const render::StandardOutputFailed&) {
   }
   return code;
@@ -61,6 +63,7 @@ int run_command_line(int argc, char** argv) {
   add_analyze_command(app);
   add_concat_command(app);
   add_lecture_command(app);
+  add_chapter_command(app);
   refuse_empty_values(app);
   try {
     if (argc > 1 && argv[1][0] != '-') {
@@ -75,6 +78,8 @@ int run_command_line(int argc, char** argv) {
     }
     app.parse(argc, argv);
     return 0;
+  } catch (const ReportedExit& e) {
+    return e.code;
   } catch (const render::StandardOutputFailed&) {
     return 0;  // recorded: main's check at exit reports it, or not for EPIPE
   } catch (const CLI::ParseError& e) {

@@ -32,6 +32,7 @@ const std::vector<ValueRange>& value_ranges() {
       {"--at", -1e15, 1e15, false, false, false, "a time of the run, e.g. --at 3.2 or --at pi/2"},
       {"--every", 1, 1e15, false, true, false, "e.g. --every 10"},
       {"--threads", 1, 64, false, true, false, "e.g. --threads 4"},
+      {"--jobs", 1, 64, false, true, false, "commands at once, e.g. --jobs 2"},
       {"--crf", 0, 63, false, true, false, "e.g. --crf 23 (lower is better)"},
       {"--orbits", 1, 1e9, false, true, false, "e.g. --orbits 1000"},
       {"--levels", 1, 30, false, true, false, "e.g. --levels 5"},
