@@ -5,9 +5,11 @@
 #include <sstream>
 #include <string>
 
+#include "cli/command_arguments.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
+#include "cli/program_options.hpp"
 #include "core/error.hpp"
 #include "core/quoted_value.hpp"
 #include "core/time_mesh.hpp"
@@ -52,7 +54,8 @@ int report_error(const std::string& message, int code = 2) {
 
 int run_command_line(int argc, char** argv) {
   allow_unstable_steps(false);  // only this command line's --allow-unstable counts
-  CLI::App app{"vibra: vibration ODEs from Linge & Langtangen chapter 1, solved, drawn, animated"};
+  // Named: usage lines say "vibra", not the path the binary was run by.
+  CLI::App app{"vibra: vibration ODEs from Linge & Langtangen chapter 1, solved, drawn, animated", "vibra"};
   app.require_subcommand(1);
   add_solve_command(app);
   add_render_command(app);
@@ -61,19 +64,23 @@ int run_command_line(int argc, char** argv) {
   add_analyze_command(app);
   add_concat_command(app);
   add_lecture_command(app);
+  add_program_options(app);
   refuse_empty_values(app);
   try {
-    if (argc > 1 && argv[1][0] != '-') {
+    const std::vector<std::string> words = command_arguments(app, argc, argv);
+    if (!words.empty() && words.front()[0] != '-') {
       std::string names;
       bool known = false;
       for (const CLI::App* sub : app.get_subcommands({})) {
-        known |= sub->get_name() == argv[1];
+        known |= sub->get_name() == words.front();
         names += (names.empty() ? "" : ", ") + sub->get_name();
       }
       if (!known)
-        return report_error("unknown command '" + quoted_value(argv[1]) + "': choose one of " + names + " (see vibra --help)");
+        return report_error("unknown command '" + quoted_value(words.front()) + "': choose one of " + names + " (see vibra --help)");
     }
-    app.parse(argc, argv);
+    std::vector<const char*> parsed = {"vibra"};
+    for (const std::string& word : words) parsed.push_back(word.c_str());
+    app.parse(static_cast<int>(parsed.size()), parsed.data());
     return 0;
   } catch (const render::StandardOutputFailed&) {
     return 0;  // recorded: main's check at exit reports it, or not for EPIPE
