@@ -25,7 +25,9 @@ void command_lines(const CommandEntry& command, const CommandEntry& root, std::s
     std::string names;
     for (const auto& name : option.names)
       names += name.starts_with("--") ? " -l " + name.substr(2) : " -s " + name.substr(1);
-    out += when + names + (option.value.empty() ? "" : " -r" + value_arguments(option, root)) + description(option.description) + "\n";
+    // -r: takes a value; -x: a value from the list only, not a file name as well.
+    const std::string takes = option.words == Words::files ? " -r" : " -x";
+    out += when + names + (option.value.empty() ? "" : takes + value_arguments(option, root)) + description(option.description) + "\n";
   }
   for (const auto& sub : command.subcommands) out += when + " -a " + sub.name + description(sub.description) + "\n";
   if (!command.positionals.empty() && command.subcommands.empty())
