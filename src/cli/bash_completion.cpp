@@ -16,8 +16,7 @@ void command_arms(const CommandEntry& command, std::string& commands, std::strin
   for (const auto& option : command.options) {
     for (const auto& name : option.names) {
       options += (options.empty() ? "" : " ") + name;
-      if (!option.value.empty())
-        values += "    " + single_quoted(command_key(command) + "|" + name) + ") REPLY=" + single_quoted(value_kind(option)) + ";;\n";
+      if (!option.value.empty()) values += value_arm(command, name, option);
     }
   }
   const std::string positional = command.positionals.empty() ? "none" : value_kind(command.positionals.front());

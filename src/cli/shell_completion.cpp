@@ -44,6 +44,10 @@ std::string value_kind(const OptionEntry& option) {
   return "choices:" + list;
 }
 
+std::string value_arm(const CommandEntry& command, const std::string& name, const OptionEntry& option) {
+  return "    " + single_quoted(command_key(command) + "|" + name) + ") REPLY=" + single_quoted(value_kind(option)) + ";;\n";
+}
+
 std::string command_key(const CommandEntry& command) {
   return command.path == "vibra" ? "" : command.path.substr(std::string("vibra ").size());
 }

@@ -32,4 +32,7 @@ std::string value_kind(const OptionEntry& option);
 /// A command's path as the scripts key it: "" for vibra itself, "analyze convergence".
 std::string command_key(const CommandEntry& command);
 
+/// One arm of the bash and zsh scripts' _vibra_value: `'analyze energy|--schemes') REPLY='schemes';;`.
+std::string value_arm(const CommandEntry& command, const std::string& name, const OptionEntry& option);
+
 }  // namespace vibra::cli

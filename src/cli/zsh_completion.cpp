@@ -16,11 +16,14 @@ void command_arms(const CommandEntry& command, std::string& commands, std::strin
   std::string options, subcommands;
   for (const auto& option : command.options)
     for (const auto& name : option.names) {
-      options += " " + described(name, option.description);
-      if (!option.value.empty())
-        values += "    " + single_quoted(command_key(command) + "|" + name) + ") REPLY=" + single_quoted(value_kind(option)) + ";;\n";
+      options += ' ';
+      options += described(name, option.description);
+      if (!option.value.empty()) values += value_arm(command, name, option);
     }
-  for (const auto& sub : command.subcommands) subcommands += " " + described(sub.name, sub.description);
+  for (const auto& sub : command.subcommands) {
+    subcommands += ' ';
+    subcommands += described(sub.name, sub.description);
+  }
   const std::string positional = command.positionals.empty() ? "none" : value_kind(command.positionals.front());
   commands += "    " + single_quoted(command_key(command)) + ") opts=(" + options + " ) subs=(" + subcommands +
               " ) positional=" + single_quoted(positional) + ";;\n";

@@ -1,4 +1,3 @@
-#!/usr/bin/env bash
 # The installed completion script of SHELL completes a scene name (and a model's, a scheme's, a command's):
 # bash through `complete -p vibra` and the function it names (COMP_LINE and COMP_POINT set as bash sets them),
 # zsh through the tables its script defines (its _vibra needs zsh's completion system),

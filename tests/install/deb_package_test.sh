@@ -1,4 +1,3 @@
-#!/usr/bin/env bash
 # `cpack -G DEB` makes a package that dpkg installs, whose vibra --version and man vibra work from /usr, and that
 # dpkg removes leaving none of its files. Needs root and dpkg (CI runs as root); one run at a time per machine.
 # Never leaves the package installed, even when a check fails or the run is interrupted, and refuses to start

@@ -1,4 +1,3 @@
-#!/usr/bin/env bash
 # `cmake --install BUILD --prefix P`: the binary runs from P and says its version, each command has a man page that
 # man reads without a warning and that lists the command's options, the completions, docs and examples are there.
 #   install_test.sh BUILD VERSION
