@@ -64,8 +64,8 @@ int run_command_line(int argc, char** argv) {
   add_analyze_command(app);
   add_concat_command(app);
   add_lecture_command(app);
-  add_program_options(app);
   refuse_empty_values(app);
+  add_program_options(app);  // after every command: `help` is listed last, the generators walk them all
   try {
     const std::vector<std::string> words = command_arguments(app, argc, argv);
     if (!words.empty() && words.front()[0] != '-') {
