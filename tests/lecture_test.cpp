@@ -269,11 +269,11 @@ scene = "spring_notes.toml"
 seconds = 2.1
 notes = ["0.2-0.4: also drawn", "1.02-1.08: a subtitle"]
 )");
-  const auto r = run_vibra("lecture " + (dir / "story.toml") + " -q -o " + (dir / "n.mp4"));
+  const auto r = run_vibra("lecture story.toml -q -o n.mp4", "cd " + dir.path.string() + " && ");
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   // 1.02 s for 2 s, cut where the next starts (1.73 s); 1.73 s to the shot's end, 2.1 s.
-  CHECK(read_file(dir / "n.vtt") == "WEBVTT\n\nNOTE written by vibra lecture\n\n"
+  CHECK(read_file(dir / "n.vtt") == "WEBVTT\n\nNOTE written by vibra lecture story.toml\n\n"
                                     "1\n00:00:01.020 --> 00:00:01.730\na subtitle\n\n"
                                     "2\n00:00:01.730 --> 00:00:02.100\nin between\n");
 }

@@ -148,7 +148,11 @@ std::string root_page(const CommandEntry& root) {
   if (summary.starts_with("vibra: ")) summary.erase(0, 7);
   std::string out = header("vibra", summary);
   out += ".SH SYNOPSIS\n.B vibra\n\\fICOMMAND\\fR [\\fIOPTIONS\\fR]\n.br\n.B vibra help\n\\fICOMMAND\\fR\n.br\n"
-         ".B vibra \\-\\-version\n.SH DESCRIPTION\n" + roff(summary) + ".\n";
+         ".B vibra \\-\\-version\n.SH DESCRIPTION\n" +
+         roff("vibra solves the vibration ODEs of chapter 1 of Linge & Langtangen, Finite Difference Computing "
+              "with PDEs, with the chapter's schemes, and turns the runs into CSV, videos, stills, pages and the "
+              "chapter's experiments. Each command has a page of its own, vibra-COMMAND(1), and its own --help; "
+              "the documentation is installed in share/doc/vibra.") + "\n";
   std::vector<std::pair<std::string, std::string>> commands;
   for (const auto& command : root.subcommands)
     commands.emplace_back(command.name, command.description + (has_own_page(command) ? " (vibra-" + command.name + "(1))" : ""));
