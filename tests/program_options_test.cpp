@@ -84,6 +84,7 @@ TEST_CASE("vibra help COMMAND is vibra COMMAND --help, and usage lines say vibra
   CHECK(run_vibra("help").out == run_vibra("--help").out);
   CHECK_THAT(run_vibra("--help").out, Catch::Contains("Usage: vibra [OPTIONS] SUBCOMMAND"));
   check_refused("help nosuch", "unknown command 'nosuch'");
+  check_refused("", "no command given: choose one of solve, render");  // not CLI11's "A subcommand is required"
 }
 
 TEST_CASE("a man page per command lists every option that command's --help does", "[cli][man]") {

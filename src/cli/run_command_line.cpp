@@ -44,6 +44,20 @@ int print_exit_text(const CLI::App& app, const CLI::Error& e) {
   return code;
 }
 
+/// What is wrong with the command `words` name, for its one line: none
+/// given, or not one of vibra's; "" when they name one (or start with an option).
+std::string command_word_problem(const CLI::App& app, const std::vector<std::string>& words) {
+  std::string names;
+  bool known = false;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    known |= !words.empty() && sub->get_name() == words.front();
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  if (words.empty()) return "no command given: choose one of " + names + " (see vibra --help; vibra --version says which vibra)";
+  if (known || words.front()[0] == '-') return "";
+  return "unknown command '" + quoted_value(words.front()) + "': choose one of " + names + " (see vibra --help)";
+}
+
 /// The one line of an error: "vibra: error: ...", at most about 240
 /// characters whatever the message quotes (docs/reliability.md, "Messages").
 int report_error(const std::string& message, int code = 2) {
@@ -68,16 +82,7 @@ int run_command_line(int argc, char** argv) {
   add_program_options(app);  // after every command: `help` is listed last, the generators walk them all
   try {
     const std::vector<std::string> words = command_arguments(app, argc, argv);
-    if (!words.empty() && words.front()[0] != '-') {
-      std::string names;
-      bool known = false;
-      for (const CLI::App* sub : app.get_subcommands({})) {
-        known |= sub->get_name() == words.front();
-        names += (names.empty() ? "" : ", ") + sub->get_name();
-      }
-      if (!known)
-        return report_error("unknown command '" + quoted_value(words.front()) + "': choose one of " + names + " (see vibra --help)");
-    }
+    if (const std::string problem = command_word_problem(app, words); !problem.empty()) return report_error(problem);
     std::vector<const char*> parsed = {"vibra"};
     for (const std::string& word : words) parsed.push_back(word.c_str());
     app.parse(static_cast<int>(parsed.size()), parsed.data());
