@@ -1,7 +1,7 @@
 # `cpack -G DEB` makes a package that dpkg installs, whose vibra --version and man vibra work from /usr, and that
 # dpkg removes leaving none of its files. Needs root and dpkg (CI runs as root); one run at a time per machine.
 # Never leaves the package installed, even when a check fails or the run is interrupted, and refuses to start
-# when a vibra package or /usr/bin/vibra is already there: those are not this test's to replace or remove.
+# when a vibra package, or any file the package holds, is already there: those are not this test's to replace.
 #   deb_package_test.sh BUILD VERSION
 set -uo pipefail
 build=$1 version=$2
@@ -17,7 +17,6 @@ case $(dpkg-query -W -f='${db:Status-Abbrev}' vibra 2>/dev/null) in
   "" | "un ") ;;
   *) fail "a package named vibra is on this machine already: not this test's to replace; remove it (dpkg --purge vibra) and run again" ;;
 esac
-[ ! -e /usr/bin/vibra ] || fail "/usr/bin/vibra exists and is no package's: the package would replace it; move it away and run again"
 
 work=$(mktemp -d)
 installed=false
@@ -34,6 +33,11 @@ cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work" >"$work/cpack.log" 2
   fail "cpack -G DEB failed: $(tail -3 "$work/cpack.log")"
 deb=$work/vibra_${version}_$(dpkg --print-architecture).deb
 [ -s "$deb" ] || fail "cpack made no $(basename "$deb"): $(ls "$work")"
+# dpkg -i would silently replace a file that no package owns: refuse, as none of them is this test's.
+dpkg-deb --fsys-tarfile "$deb" | tar -t | grep -v '/$' | sed 's|^\.||' >"$work/contents" || fail "cannot list $deb"
+while read -r file; do
+  [ ! -e "$file" ] || fail "$file exists and is no package's: the package would replace it; move it away and run again"
+done <"$work/contents"
 installed=true  # from here on: dpkg -i may stop half-way, and the package must still go
 dpkg -i "$deb" >"$work/dpkg.log" 2>&1 || fail "dpkg -i failed: $(tail -3 "$work/dpkg.log")"
 [ "$(dpkg-query -W -f='${db:Status-Abbrev}' vibra)" = "ii " ] || fail "dpkg does not list vibra as installed"
@@ -52,6 +56,6 @@ case $(dpkg-query -W -f='${db:Status-Abbrev}' vibra 2>/dev/null) in
   *) fail "after dpkg -r, dpkg lists vibra as $(dpkg-query -W -f='${db:Status-Abbrev}' vibra)" ;;
 esac
 while read -r file; do
-  [ -d "$file" ] || [ ! -e "$file" ] || fail "dpkg -r left $file behind"
-done <"$work/files"
+  [ ! -e "$file" ] || fail "dpkg -r left $file behind"
+done <"$work/contents"
 echo "ok: $(basename "$deb") installed, ran vibra --version and man vibra, and was removed with all its files"
