@@ -7,6 +7,7 @@
 #include "core/expression.hpp"
 #include "core/comparison.hpp"
 #include "core/models/model.hpp"
+#include "core/name_spelling.hpp"
 #include "render/draw/caption.hpp"
 
 namespace vibra::scenes {
@@ -86,7 +87,7 @@ std::string setting_facts(const Parameters& p, const std::string& except) {
 std::string dt_fact(const std::string& model, double dt) {
   std::string time_unit;
   for (const auto& m : all_models())
-    if (m.name == model && !m.time_unit.empty()) time_unit = " " + m.time_unit;
+    if (same_name(m.name, model) && !m.time_unit.empty()) time_unit = " " + m.time_unit;
   char text[64];
   std::snprintf(text, sizeof text, "Δ<i>t</i> = %.4g%s", dt, time_unit.c_str());
   return text;

@@ -18,6 +18,7 @@
 #include "core/error.hpp"
 #include "core/input_files.hpp"
 #include "core/models/model.hpp"
+#include "core/name_spelling.hpp"
 #include "core/quoted_value.hpp"
 #include "core/value_ranges.hpp"
 #include "core/word_list.hpp"
@@ -32,7 +33,7 @@ namespace vibra::scenes {
 namespace {
 bool model_has_key(const std::string& model, const std::string& key) {
   for (const auto& spec : find_model(model).keys)
-    if (spec.name == key) return true;
+    if (same_name(spec.name, key)) return true;
   return false;
 }
 
@@ -135,8 +136,8 @@ void collect(const toml::table& table, const std::string& prefix, const std::str
 bool sets_same_thing(const std::string& a, const std::string& b) {
   static const std::map<std::string, std::string> rivals = {
       {"dt", "steps_per_period"}, {"steps_per_period", "dt"}, {"T", "periods"}, {"periods", "T"}};
-  const auto rival = rivals.find(a);
-  return a == b || (rival != rivals.end() && rival->second == b);
+  const auto rival = rivals.find(name_key(a));
+  return same_name(a, b) || (rival != rivals.end() && same_name(rival->second, b));
 }
 }  // namespace
 
@@ -208,27 +209,46 @@ void parse_size(const std::string& text, int& width, int& height) {
   width = w, height = h;
 }
 
-void apply_setting(SceneConfig& c, const Setting& s) {
+namespace {
+/// `s` with its key spelled as the scene's or its model's keys are listed, so
+/// that every comparison after it, and what is stored, sees one spelling.
+Setting with_listed_key(const SceneConfig& c, const Setting& s) {
+  std::vector<std::string> names = {"note"};  // --note's own name for notes
+  for (const auto& spec : scene_keys()) names.push_back(spec.name);
+  const Parameters model_keys = model_parameters(find_model(c.model));  // held: the loop reads its member
+  for (const auto& spec : model_keys.specs()) names.push_back(spec.name);
+  return {listed_spelling(s.key, names), s.value, s.origin};
+}
+
+/// The model `s` names, in its listed spelling.
+std::string model_named(const Setting& s) {
+  try {
+    return find_model(s.value).name;
+  } catch (const UsageError& e) {
+    throw UsageError(s.origin + ": " + e.what());
+  }
+}
+}  // namespace
+
+void apply_setting(SceneConfig& c, const Setting& given) {
+  const Setting s = with_listed_key(c, given);
   const std::string& k = s.key;
   if (k == "model") {
-    try {
-      find_model(s.value);
-    } catch (const UsageError& e) {
-      throw UsageError(s.origin + ": " + e.what());
-    }
-    if (s.value != c.model) c.model_settings.clear(), c.diagram.clear();  // the old model's keys do not apply
-    c.model = s.value;
+    const std::string model = model_named(s);
+    if (model != c.model) c.model_settings.clear(), c.diagram.clear();  // the old model's keys do not apply
+    c.model = model;
   } else if (k == "diagram") {
     std::vector<std::string> names;
     for (const auto& kind : all_diagrams()) names.push_back(kind.name);
-    if (std::find(names.begin(), names.end(), s.value) == names.end()) {
+    const std::string diagram = listed_spelling(s.value, names);
+    if (std::find(names.begin(), names.end(), diagram) == names.end()) {
       const std::string near = closest_match(s.value, names);
       std::string list;
       for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
       throw UsageError(s.origin + ": unknown diagram '" + s.value + "'" +
                        (near.empty() ? "" : " (did you mean '" + near + "'?)") + ": choose one of " + list);
     }
-    c.diagram = s.value;
+    c.diagram = diagram;
   } else if (k == "size") {
     try {
       parse_size(s.value, c.width, c.height);
@@ -376,7 +396,7 @@ std::vector<std::string> builtin_scene_names() {
 
 std::string builtin_scene_summary(const std::string& name) {
   for (const auto& [preset, text] : builtin_scenes()) {
-    if (preset != name) continue;
+    if (!same_name(preset, name)) continue;
     std::istringstream lines(text);
     std::string line;
     while (std::getline(lines, line))
@@ -388,11 +408,11 @@ std::string builtin_scene_summary(const std::string& name) {
 SceneConfig load_scene(const std::string& name_or_path) {
   std::string text, file;
   for (const auto& [name, preset] : builtin_scenes())
-    if (name == name_or_path) text = preset, file = name + ".toml";
+    if (same_name(name, name_or_path)) text = preset, file = name + ".toml";
   // A model's name is a scene too (after the presets, so `pendulum` is the
   // preset): the pendulums' diagram, any model's moving plot.
   for (const auto& model : all_models()) {
-    if (!file.empty() || model.name != name_or_path) continue;
+    if (!file.empty() || !same_name(model.name, name_or_path)) continue;
     SceneConfig config;
     config.name = config.model = model.name;
     config.layout = default_diagram(model.name) ? Layout::fbd_plot : Layout::plot;

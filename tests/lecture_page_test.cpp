@@ -34,7 +34,10 @@ TEST_CASE("a lecture page: video sources, plots' data, each fact once, the comma
   ScratchDirectory dir;
   fs::create_directory(dir.path / "my lectures ø");
   const fs::path page = dir.path / "my lectures ø" / "Pendel #1 ø.html";
-  REQUIRE(run_vibra("render" + kShort + "--set scheme=rk4 --set alpha=0.3 --every 4 -o '" + page.string() + "'").exit_code == 0);
+  // From the scratch folder, as given: the page's "Made by" shows it so (an absolute path would be shown relative).
+  REQUIRE(run_vibra("render" + kShort + "--set scheme=rk4 --set alpha=0.3 --every 4 -o 'my lectures ø/Pendel #1 ø.html'",
+                    "cd '" + dir.path.string() + "' && ")
+              .exit_code == 0);
   const std::string html = read_file(page);
   const fs::path files = page.parent_path() / "Pendel #1 ø_files";  // the companions' own folder
   for (const char* file : {"Pendel #1 ø.mp4", "Pendel #1 ø.webm", "Pendel #1 ø.csv"}) CHECK(fs::exists(files / file));
@@ -54,8 +57,8 @@ TEST_CASE("a lecture page: video sources, plots' data, each fact once, the comma
   }
   CHECK_THAT(html, Catch::Contains("<tr><td>scheme</td><td>rk4</td></tr>") &&
                        Catch::Contains("<tr><td>frames</td><td>31 at 30 fps"));
-  CHECK_THAT(html, Catch::Contains("render --size 320x180 --set periods=0.5 -q --set scheme=rk4 --set alpha=0.3 --every 4 -o "
-                                   "&#39;" + page.string() + "&#39;"));  // shell-quoted, then HTML-escaped
+  CHECK_THAT(html, Catch::Contains("<code id=\"command\">vibra render --size 320x180 --set periods=0.5 -q --set scheme=rk4 "
+                                   "--set alpha=0.3 --every 4 -o &#39;my lectures ø/Pendel #1 ø.html&#39;"));  // shell-quoted, then HTML-escaped
 
   // The plots: the scene's three panels, uPlot and the page script inline, nothing from the network.
   CHECK_THAT(html, Catch::Contains("\"label\":\"θ (°)\"") && Catch::Contains("\"label\":\"S / mg, wire force\"") &&

@@ -55,7 +55,8 @@ card = "The end"
 seconds = 0.5
 )";
 
-const std::string kCues = "WEBVTT\n\nNOTE written by vibra lecture\n\n"
+// Run from the storyboard's folder, the note names it as given: story.toml.
+const std::string kCues = "WEBVTT\n\nNOTE written by vibra lecture story.toml\n\n"
                           "1\n00:00:00.000 --> 00:00:01.000\nSprings\nu\u2033 + \u03c9\u00b2u = 0\n\n"
                           "2\n00:00:03.020 --> 00:00:04.100\nbetween frames\n\n"
                           "3\n00:00:04.100 --> 00:00:04.600\nThe end\n";
@@ -80,7 +81,7 @@ TEST_CASE("a lecture: a chapter per shot, subtitles from cards and notes, the fr
   for (const char* ext : {".mp4", ".webm"}) {
     SECTION(ext) {
       const std::string out = dir / (std::string("lecture") + ext);
-      const auto r = run_vibra("lecture " + (dir / "story.toml") + " -q -o " + out);
+      const auto r = run_vibra("lecture story.toml -q -o " + out, "cd " + dir.path.string() + " && ");
       INFO(r.err);
       REQUIRE(r.exit_code == 0);
       const std::string chapters = probe(out, kChapters);
@@ -131,7 +132,7 @@ TEST_CASE("lecture --segment renders whole shots into shot files that the join r
     CHECK(fs::is_regular_file(dir / name));
   CHECK_FALSE(fs::exists(out));
   const std::string shot2 = read_file(dir / "lecture.shot-2.mp4");
-  const auto joined = run_vibra("lecture " + (dir / "story.toml") + " -o " + out);
+  const auto joined = run_vibra("lecture story.toml -o " + out, "cd " + dir.path.string() + " && ");
   INFO(joined.err);
   REQUIRE(joined.exit_code == 0);
   CHECK(joined.err.find("shot 2/3") == std::string::npos);  // not rendered again: no progress of it
@@ -150,7 +151,7 @@ TEST_CASE("lecture --segment renders whole shots into shot files that the join r
 TEST_CASE("a lecture page: the video, its chapters as links, the subtitles as a track", "[lecture][page]") {
   ScratchDirectory dir;
   write(dir / "story.toml", kStory);
-  REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " -q -o " + (dir / "talk.html")).exit_code == 0);
+  REQUIRE(run_vibra("lecture story.toml -q -o talk.html", "cd " + dir.path.string() + " && ").exit_code == 0);
   const std::string html = read_file(dir / "talk.html");
   CHECK_THAT(html, Catch::Contains("<track kind=\"subtitles\" label=\"Notes\" srclang=\"en\" src=\"talk_files/talk.vtt\""));
   CHECK_THAT(html, Catch::Contains("<ol id=\"chapters\">"));
@@ -268,11 +269,11 @@ scene = "spring_notes.toml"
 seconds = 2.1
 notes = ["0.2-0.4: also drawn", "1.02-1.08: a subtitle"]
 )");
-  const auto r = run_vibra("lecture " + (dir / "story.toml") + " -q -o " + (dir / "n.mp4"));
+  const auto r = run_vibra("lecture story.toml -q -o n.mp4", "cd " + dir.path.string() + " && ");
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   // 1.02 s for 2 s, cut where the next starts (1.73 s); 1.73 s to the shot's end, 2.1 s.
-  CHECK(read_file(dir / "n.vtt") == "WEBVTT\n\nNOTE written by vibra lecture\n\n"
+  CHECK(read_file(dir / "n.vtt") == "WEBVTT\n\nNOTE written by vibra lecture story.toml\n\n"
                                     "1\n00:00:01.020 --> 00:00:01.730\na subtitle\n\n"
                                     "2\n00:00:01.730 --> 00:00:02.100\nin between\n");
 }

@@ -57,6 +57,13 @@ def test_a_still_is_an_image(in_tmp):
     assert svg._repr_mimebundle_()["image/svg+xml"].lstrip().startswith("<?xml")
 
 
+def test_a_scene_named_with_a_hyphen_or_an_underscore_is_one_scene(in_tmp):
+    # The one spelling rule (docs/install.md): spring-dashpot is the preset spring_dashpot.
+    vibra.render("spring_dashpot", at=1, size=(160, 90), out="listed.png")
+    vibra.render("spring-dashpot", at=1, size=(160, 90), out="hyphen.png")
+    assert (in_tmp / "listed.png").read_bytes() == (in_tmp / "hyphen.png").read_bytes()
+
+
 def test_a_transparent_still_has_alpha_where_nothing_is_drawn(in_tmp):
     image = vibra.render(at=0.5, size=(320, 180), layout="fbd", out="overlay.png", transparent=True)
     assert probe(image)["pix_fmt"] == "rgba"

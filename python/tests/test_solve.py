@@ -67,6 +67,14 @@ def test_keys_as_numbers_or_strings():
     np.testing.assert_allclose(formula.u, pendulum.theta, rtol=0, atol=1e-12)
 
 
+def test_a_hyphen_and_an_underscore_are_one_letter_in_names():
+    # The one spelling rule (docs/install.md): model, key and scheme names alike.
+    listed = vibra.solve("elastic-pendulum", steps_per_period=20, T=1, scheme="euler-cromer")
+    other = vibra.solve("elastic_pendulum", **{"steps-per-period": 20}, T=1, scheme="euler_cromer")
+    assert np.array_equal(np.asarray(listed), np.asarray(other))
+    assert other.info["scheme"] == "euler-cromer"
+
+
 def test_bad_input_raises_the_command_lines_message(cli):
     with pytest.raises(ValueError) as error:
         vibra.solve("pendulum", Thetaa=40)

@@ -1,5 +1,6 @@
 #include "render/encode/subtitle_cue.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -28,11 +29,19 @@ std::string cue_text(const std::string& text) {
   while (!out.empty() && out.back() == '\n') out.pop_back();
   return out;
 }
+/// A file name inside the NOTE: on its line, and never "-->", which would start a cue.
+std::string note_text(std::string text) {
+  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  for (std::size_t at; (at = text.find("-->")) != std::string::npos;) text.replace(at, 3, "->");  // shorter each time
+  return text;
+}
 }  // namespace
 
-std::string web_vtt(const std::vector<SubtitleCue>& cues) {
+std::string web_vtt(const std::vector<SubtitleCue>& cues, const std::string& storyboard) {
   std::string out = "WEBVTT\n\n";
   out += kWebVttMark;
+  out += ' ';
+  out += note_text(storyboard);
   out += "\n";
   for (std::size_t i = 0; i < cues.size(); ++i) {  // in steps: GCC 12 warns falsely about "\n" + string (bug 105329)
     out += '\n';

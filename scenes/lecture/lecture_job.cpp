@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/input_files.hpp"
 #include "core/quoted_value.hpp"
+#include "core/shown_path.hpp"
 #include "render/draw/canvas.hpp"
 #include "render/draw/text.hpp"
 #include "render/encode/clip_join.hpp"
@@ -402,7 +403,7 @@ void run_lecture(const LectureRequest& r) {
   end_row();
 
   const std::map<std::string, std::string> metadata = {{"title", render::rich_text_plain(board.title)},
-                                                       {"comment", "vibra lecture " + r.storyboard}};
+                                                       {"comment", "vibra lecture " + shown_path(r.storyboard)}};
   long long frames = 0;
   for (const auto& c : chapters) frames = c.end_frame;
   const double seconds = double(frames) / board.fps;
@@ -410,7 +411,7 @@ void run_lecture(const LectureRequest& r) {
   if (!page) {
     // Both finished before either is placed, then placed together or not at all.
     render::TemporaryFile subtitles(vtt);
-    render::write_text(subtitles, render::web_vtt(cues));
+    render::write_text(subtitles, render::web_vtt(cues, shown_path(r.storyboard)));
     const fs::path joined = clips.path() / final_video.filename();
     render::join_clips(clip_files[0], joined, fps, chapters, cues, metadata);
     render::place_together({{joined, final_video}, {subtitles.path(), subtitles.final_path()}});
@@ -423,7 +424,7 @@ void run_lecture(const LectureRequest& r) {
   render::TemporaryDirectory staged(companions.parent_path(), companions.filename().string());
   render::TemporaryFile page_file(final_video);
   const std::string folder = companions.filename().string() + "/";
-  render::write_text_file(staged.path() / (stem + ".vtt"), render::web_vtt(cues));
+  render::write_text_file(staged.path() / (stem + ".vtt"), render::web_vtt(cues, shown_path(r.storyboard)));
   for (std::size_t i = 0; i < kinds.size(); ++i)
     render::join_clips(clip_files[i], staged.path() / (stem + kinds[i]), fps, chapters, cues, metadata);
   render::LecturePage lecture;
@@ -439,7 +440,7 @@ void run_lecture(const LectureRequest& r) {
   for (const auto& c : chapters) lecture.chapters.push_back({c.title, double(c.first_frame) / board.fps});
   lecture.downloads = {{"MP4 video", folder + stem + ".mp4"}, {"WebM video", folder + stem + ".webm"},
                        {"Subtitles (WebVTT)", folder + stem + ".vtt"}};
-  lecture.facts = {{"storyboard", r.storyboard},
+  lecture.facts = {{"storyboard", shown_path(r.storyboard)},
                    {"shots", std::to_string(chosen.size())},
                    {"frames", std::to_string(frames) + " at " + std::to_string(fps) + " fps (" +
                                   std::to_string(int(std::lround(seconds))) + " s of video)"},

@@ -1,5 +1,7 @@
 #include "cli/command_line.hpp"
 
+#include "core/shown_path.hpp"
+
 namespace vibra::cli {
 
 namespace {
@@ -19,12 +21,10 @@ std::string shell_quoted(const std::string& argument) {
 }
 
 void remember_command_line(int argc, char** argv) {
+  // "vibra", not the path it was run by; paths relative to here, not the folders above (core/shown_path.hpp).
   std::string& line = stored();
-  line.clear();
-  for (int i = 0; i < argc; ++i) {
-    if (i) line += ' ';
-    line += shell_quoted(argv[i]);
-  }
+  line = "vibra";
+  for (int i = 1; i < argc; ++i) line += ' ' + shell_quoted(shown_argument(argv[i]));
 }
 
 const std::string& command_line() { return stored(); }

@@ -3,7 +3,8 @@
 
 namespace vibra::cli {
 
-/// Keeps the command line vibra was started with, for pages to show.
+/// Keeps the command line vibra was started with, for pages to show: as
+/// "vibra ..." whatever path ran it, absolute paths shown by shown_argument.
 void remember_command_line(int argc, char** argv);
 
 /// The command line, each argument quoted for a POSIX shell where it needs

@@ -5,9 +5,11 @@
 #include <sstream>
 #include <string>
 
+#include "cli/command_arguments.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
+#include "cli/program_options.hpp"
 #include "core/error.hpp"
 #include "core/quoted_value.hpp"
 #include "core/time_mesh.hpp"
@@ -44,6 +46,20 @@ int print_exit_text(const CLI::App& app, const CLI::Error& e) {
   return code;
 }
 
+/// What is wrong with the command `words` name, for its one line: none
+/// given, or not one of vibra's; "" when they name one (or start with an option).
+std::string command_word_problem(const CLI::App& app, const std::vector<std::string>& words) {
+  std::string names;
+  bool known = false;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    known |= !words.empty() && sub->get_name() == words.front();
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  if (words.empty()) return "no command given: choose one of " + names + " (see vibra --help; vibra --version says which vibra)";
+  if (known || words.front()[0] == '-') return "";
+  return "unknown command '" + quoted_value(words.front()) + "': choose one of " + names + " (see vibra --help)";
+}
+
 /// The one line of an error: "vibra: error: ...", at most about 240
 /// characters whatever the message quotes (docs/reliability.md, "Messages").
 int report_error(const std::string& message, int code = 2) {
@@ -54,7 +70,8 @@ int report_error(const std::string& message, int code = 2) {
 
 int run_command_line(int argc, char** argv) {
   allow_unstable_steps(false);  // only this command line's --allow-unstable counts
-  CLI::App app{"vibra: vibration ODEs from Linge & Langtangen chapter 1, solved, drawn, animated"};
+  // Named: usage lines say "vibra", not the path the binary was run by.
+  CLI::App app{"vibra: vibration ODEs from Linge & Langtangen chapter 1, solved, drawn, animated", "vibra"};
   app.require_subcommand(1);
   add_solve_command(app);
   add_render_command(app);
@@ -65,18 +82,13 @@ int run_command_line(int argc, char** argv) {
   add_lecture_command(app);
   add_chapter_command(app);
   refuse_empty_values(app);
+  add_program_options(app);  // after every command: `help` is listed last, the generators walk them all
   try {
-    if (argc > 1 && argv[1][0] != '-') {
-      std::string names;
-      bool known = false;
-      for (const CLI::App* sub : app.get_subcommands({})) {
-        known |= sub->get_name() == argv[1];
-        names += (names.empty() ? "" : ", ") + sub->get_name();
-      }
-      if (!known)
-        return report_error("unknown command '" + quoted_value(argv[1]) + "': choose one of " + names + " (see vibra --help)");
-    }
-    app.parse(argc, argv);
+    const std::vector<std::string> words = command_arguments(app, argc, argv);
+    if (const std::string problem = command_word_problem(app, words); !problem.empty()) return report_error(problem);
+    std::vector<const char*> parsed = {"vibra"};
+    for (const std::string& word : words) parsed.push_back(word.c_str());
+    app.parse(static_cast<int>(parsed.size()), parsed.data());
     return 0;
   } catch (const ReportedExit& e) {
     return e.code;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/name_spelling.hpp"
 
 namespace vibra {
 
@@ -16,7 +17,9 @@ std::string trimmed(std::string_view s) {
 }  // namespace
 
 bool is_time_key(const std::string& key) {
-  return key == "scheme" || key == "dt" || key == "steps_per_period" || key == "T" || key == "periods";
+  for (const char* time_key : {"scheme", "dt", "steps_per_period", "T", "periods"})
+    if (same_name(key, time_key)) return true;
+  return false;
 }
 
 ComparisonRequest parse_comparison(std::string_view text) {
@@ -58,6 +61,9 @@ std::vector<Parameters> comparison_members(const Parameters& base, const Compari
 
 Comparison::Comparison(const ModelDefinition& model, const Parameters& base, ComparisonRequest request)
     : model_(&model), request_(std::move(request)) {
+  std::vector<std::string> keys;
+  for (const KeySpec& spec : base.specs()) keys.push_back(spec.name);
+  request_.key = listed_spelling(request_.key, keys);  // labels spell the key as --help does
   for (Parameters& p : comparison_members(base, request_)) {
     auto trajectory = model.build(p);
     row_.resize(std::max(row_.size(), trajectory->width()));

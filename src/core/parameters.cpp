@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/name_spelling.hpp"
 #include "core/quoted_value.hpp"
 #include "core/value_ranges.hpp"
 
@@ -49,7 +50,7 @@ Parameters::Parameters(std::string owner, std::vector<KeySpec> specs)
 
 const KeySpec& Parameters::spec(const std::string& key) const {
   for (const auto& s : specs_)
-    if (s.name == key) return s;
+    if (same_name(s.name, key)) return s;
   std::vector<std::string> names;
   for (const auto& s : specs_) names.push_back(s.name);
   std::string near = closest_match(key, names);
@@ -64,9 +65,11 @@ void Parameters::assign(std::string_view assignment) {
   set(trim(assignment.substr(0, eq)), trim(assignment.substr(eq + 1)));
 }
 
-void Parameters::set(const std::string& key, const std::string& value) {
-  const KeySpec& s = spec(key);
-  if (value.empty()) throw UsageError("empty value for " + key + ": write " + key + "=VALUE");
+void Parameters::set(const std::string& given_key, const std::string& given_value) {
+  const KeySpec& s = spec(given_key);
+  const std::string& key = s.name;  // stored and reported as --help spells it
+  if (given_value.empty()) throw UsageError("empty value for " + key + ": write " + key + "=VALUE");
+  const std::string value = s.kind == ValueKind::choice ? listed_spelling(given_value, s.choices) : given_value;
   if (s.kind == ValueKind::choice && std::find(s.choices.begin(), s.choices.end(), value) == s.choices.end()) {
     std::string list;
     for (const auto& c : s.choices) list += (list.empty() ? "" : ", ") + c;
@@ -85,16 +88,13 @@ void Parameters::set(const std::string& key, const std::string& value) {
   values_[key] = value;
 }
 
-bool Parameters::given(const std::string& key) const {
-  spec(key);
-  return values_.count(key) != 0;
-}
+bool Parameters::given(const std::string& key) const { return values_.count(spec(key).name) != 0; }
 
 bool Parameters::has_value(const std::string& key) const { return given(key) || !spec(key).default_value.empty(); }
 
 std::string Parameters::text(const std::string& key) const {
   const KeySpec& s = spec(key);
-  auto it = values_.find(key);
+  auto it = values_.find(s.name);
   if (it != values_.end()) return it->second;
   if (s.default_value.empty()) throw UsageError(owner_ + " needs a value for " + key + ": add --set " + key + "=VALUE");
   return s.default_value;

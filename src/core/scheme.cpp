@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/name_spelling.hpp"
 
 namespace vibra {
 
@@ -59,7 +60,7 @@ const SchemeInfo& scheme_info(Scheme scheme) {
 Scheme parse_scheme(std::string_view name) {
   std::string names;
   for (const auto& info : all_schemes()) {
-    if (info.name == name) return info.scheme;
+    if (same_name(info.name, name)) return info.scheme;
     names += (names.empty() ? "" : ", ") + std::string(info.name);
   }
   throw UsageError("unknown scheme '" + std::string(name) + "': choose one of " + names);

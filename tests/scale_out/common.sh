@@ -3,15 +3,8 @@
 # after setting VIBRA; set WORK (a fresh mktemp -d) before check_same_frames.
 RENDER_ARGS=(--set periods=1 --size 320x180 --fps 10 --quality lossless)
 
-fail() { echo "FAIL: $*" >&2; exit 1; }
-
-# A missing requirement: skipped (exit 77) on a developer's machine, but a
-# failure in CI (CI=true), where scripts/setup has installed everything.
-missing() {
-  if [ "${CI:-}" = true ]; then echo "FAIL: $* (CI=true: this test must run, not skip)" >&2; exit 1; fi
-  echo "SKIP: $*"
-  exit 77
-}
+# fail and missing: what a failed check and a missing tool mean.
+source "$(dirname "${BASH_SOURCE[0]}")/../test_requirements.sh"
 
 # Per-frame MD5s of the decoded pictures with their timestamps (ffmpeg's framemd5).
 frame_hashes() { ffmpeg -v error -i "$1" -f framemd5 - | grep -v '^#'; }

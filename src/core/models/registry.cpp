@@ -1,4 +1,5 @@
 #include "core/error.hpp"
+#include "core/name_spelling.hpp"
 #include "core/models/model.hpp"
 
 namespace vibra {
@@ -16,7 +17,7 @@ const std::vector<ModelDefinition>& all_models() {
 const ModelDefinition& find_model(const std::string& name) {
   std::vector<std::string> names;
   for (const auto& model : all_models()) {
-    if (model.name == name) return model;
+    if (same_name(model.name, name)) return model;
     names.push_back(model.name);
   }
   std::string list;

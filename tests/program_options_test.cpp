@@ -1,0 +1,129 @@
+// vibra's own options: --version (the version and the build's git describe, "unknown" outside a checkout), `vibra help COMMAND`, usage lines that say vibra, and the hidden generators of the man pages and shell completions, held against the CLI's own --help and the registries.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <regex>
+#include <sstream>
+
+#include "cli_support.hpp"
+#include "core/models/model.hpp"
+#include "core/scheme.hpp"
+#include "scenes/scene_config.hpp"
+
+using vibra::test::check_refused;
+using vibra::test::read_file;
+using vibra::test::run_vibra;
+using vibra::test::ScratchDirectory;
+using vibra::test::shell;
+namespace fs = std::filesystem;
+
+namespace {
+const char* const kCommands[] = {"solve", "render", "ascii", "plot", "analyze", "concat", "lecture"};
+
+/// The long options `vibra ARGS --help` lists ("--set", "--output", ...).
+std::vector<std::string> long_options_in_help(const std::string& args) {
+  const auto r = run_vibra(args + " --help");
+  REQUIRE(r.exit_code == 0);
+  std::vector<std::string> names;
+  const std::regex option(R"(^  (?:-[A-Za-z],)?(--[A-Za-z][A-Za-z-]*))");
+  std::istringstream lines(r.out);
+  std::smatch match;
+  for (std::string line; std::getline(lines, line);)
+    if (std::regex_search(line, match, option)) names.push_back(match[1]);
+  return names;
+}
+
+/// `text` as a man page writes it: each hyphen "\-".
+std::string roff_hyphens(const std::string& text) {
+  std::string escaped;
+  for (char c : text) escaped += c == '-' ? std::string("\\-") : std::string(1, c);
+  return escaped;
+}
+
+/// The text of `build_version.cmake`'s output for SOURCE_DIR `source`.
+std::string build_version_source(const fs::path& source, const fs::path& out) {
+  const std::string command = "cmake -DSOURCE_DIR='" + source.string() + "' -DVERSION=1.2.3 -DOUTPUT='" + out.string() +
+                              "' -P '" VIBRA_SOURCE_DIR "/src/cli/build_version.cmake' 2>&1";
+  REQUIRE(std::system(command.c_str()) == 0);
+  return read_file(out);
+}
+}  // namespace
+
+TEST_CASE("vibra --version prints the project's version and the git describe of the build", "[cli][version]") {
+  const auto r = run_vibra("--version");
+  CHECK(r.exit_code == 0);
+  CHECK(r.err.empty());
+  CHECK(std::regex_match(r.out, std::regex("vibra " VIBRA_VERSION R"( \(git ([0-9A-Za-z._+-]+)\)\n)")));
+}
+
+TEST_CASE("the build's describe is git's of the source tree, and unknown outside a checkout", "[cli][version]") {
+  ScratchDirectory dir;
+  const std::string describe = shell("git -C '" VIBRA_SOURCE_DIR "' describe --tags --always --dirty 2>/dev/null");
+  if (!describe.empty())  // a checkout (not a tarball): what git says now
+    CHECK_THAT(build_version_source(VIBRA_SOURCE_DIR, dir / "a.cpp"),
+               Catch::Contains("kGitDescribe = \"" + describe.substr(0, describe.size() - 1) + "\""));
+  fs::create_directories(dir.path / "tarball");
+  CHECK_THAT(build_version_source(dir.path / "tarball", dir / "b.cpp"), Catch::Contains("kGitDescribe = \"unknown\""));
+  CHECK_THAT(read_file(dir / "b.cpp"), Catch::Contains("kVersion = \"1.2.3\""));
+  // Unpacked inside another repository: that repository's describe is not vibra's.
+  REQUIRE(std::system(("git init -q '" + dir.path.string() + "' && git -C '" + dir.path.string() +
+                       "' -c user.name=t -c user.email=t@t commit -q --allow-empty -m x").c_str()) == 0);
+  CHECK_THAT(build_version_source(dir.path / "tarball", dir / "c.cpp"), Catch::Contains("kGitDescribe = \"unknown\""));
+}
+
+TEST_CASE("vibra help COMMAND is vibra COMMAND --help, and usage lines say vibra", "[cli][help]") {
+  for (const char* command : kCommands) {
+    INFO(command);
+    const auto help = run_vibra(std::string("help ") + command);
+    CHECK(help.exit_code == 0);
+    CHECK(help.out == run_vibra(std::string(command) + " --help").out);
+    CHECK_THAT(help.out, Catch::Contains(std::string("Usage: vibra ") + command));
+    CHECK(help.out.find(VIBRA_EXE) == std::string::npos);
+  }
+  CHECK(run_vibra("help analyze convergence").out == run_vibra("analyze convergence --help").out);
+  CHECK(run_vibra("help solve pendulum").out == run_vibra("solve pendulum --help").out);
+  CHECK(run_vibra("help").out == run_vibra("--help").out);
+  CHECK_THAT(run_vibra("--help").out, Catch::Contains("Usage: vibra [OPTIONS] SUBCOMMAND"));
+  check_refused("help nosuch", "unknown command 'nosuch'");
+  check_refused("", "no command given: choose one of solve, render");  // not CLI11's "A subcommand is required"
+}
+
+TEST_CASE("a man page per command lists every option that command's --help does", "[cli][man]") {
+  const std::string top = run_vibra("--man vibra").out;
+  for (const char* command : kCommands) {
+    INFO(command);
+    CHECK_THAT(top, Catch::Contains(std::string(".BR vibra\\-") + command + " (1)"));
+    const auto page = run_vibra(std::string("--man ") + command);
+    REQUIRE(page.exit_code == 0);
+    CHECK_THAT(page.out, Catch::StartsWith(".\\\" Generated by vibra --man"));
+    for (const auto& option : long_options_in_help(command)) {
+      INFO(option);
+      CHECK_THAT(page.out, Catch::Contains("\\fB" + roff_hyphens(option) + "\\fR"));
+    }
+  }
+  // The experiments of analyze, each with its options.
+  const std::string analyze = run_vibra("--man analyze").out;
+  for (const auto& option : long_options_in_help("analyze orbit"))
+    CHECK_THAT(analyze, Catch::Contains("\\fB" + roff_hyphens(option) + "\\fR"));
+  check_refused("--man nosuch", "no man page 'nosuch'");
+}
+
+TEST_CASE("vibra(1) lists every scene, model and scheme from the registries", "[cli][man]") {
+  const std::string top = run_vibra("--man vibra").out;
+  auto roff = [](const std::string& name) { return ".B " + roff_hyphens(name) + "\n"; };
+  for (const auto& scene : vibra::scenes::builtin_scene_names()) CHECK_THAT(top, Catch::Contains(roff(scene)));
+  for (const auto& model : vibra::all_models()) CHECK_THAT(top, Catch::Contains(roff(model.name)));
+  for (const auto& scheme : vibra::all_schemes()) CHECK_THAT(top, Catch::Contains(roff(std::string(scheme.name))));
+}
+
+TEST_CASE("the completion scripts hold every command, scene, model and scheme", "[cli][completion]") {
+  for (const char* shell_name : {"bash", "zsh", "fish"}) {
+    INFO(shell_name);
+    const auto script = run_vibra(std::string("--completion ") + shell_name);
+    REQUIRE(script.exit_code == 0);
+    for (const char* command : kCommands) CHECK_THAT(script.out, Catch::Contains(command));
+    for (const auto& scene : vibra::scenes::builtin_scene_names()) CHECK_THAT(script.out, Catch::Contains(scene));
+    for (const auto& model : vibra::all_models()) CHECK_THAT(script.out, Catch::Contains(model.name));
+    for (const auto& scheme : vibra::all_schemes()) CHECK_THAT(script.out, Catch::Contains("scheme=" + std::string(scheme.name)));
+  }
+  check_refused("--completion tcsh", "choose bash, zsh or fish");
+}
