@@ -215,7 +215,8 @@ TEST_CASE("in a comparison the first run's forces are charcoal: a hue names a ru
         drawn_at_start("pendulum", {{"Theta", "10"}, {"compare", compare}, {"layout", "fbd"}, {"size", "640x360"}});
     const render::Point bob =
         d.view().to_pixel(scenes::pendulum_geometry({0, 10 * M_PI / 180, 0, 1, 0}, {}).bob);
-    const auto on_weight = d.pixel(bob + render::Point(0, 14));
+    // Below the bob's rim, where mg's shaft runs (forces start at the rim).
+    const auto on_weight = d.pixel(bob + render::Point(0, 24));
     INFO(compare << ": " << on_weight[0] << "," << on_weight[1] << "," << on_weight[2]);
     const render::Color c = render::palette::charcoal;
     CHECK(std::abs(on_weight[0] - int(255 * c.r)) <= 12);
@@ -226,7 +227,7 @@ TEST_CASE("in a comparison the first run's forces are charcoal: a hue names a ru
   const DrawnScene own = drawn_at_start("pendulum", {{"compare", "Theta=10,60"}, {"layout", "fbd"}, {"size", "640x360"},
                                                       {"colors.gravity", "#00ff00"}});
   const render::Point bob = own.view().to_pixel(scenes::pendulum_geometry({0, 10 * M_PI / 180, 0, 1, 0}, {}).bob);
-  const auto on_weight = own.pixel(bob + render::Point(0, 14));
+  const auto on_weight = own.pixel(bob + render::Point(0, 24));
   CHECK(on_weight[1] > on_weight[0] + 150);
 }
 

@@ -169,7 +169,7 @@ TEST_CASE("damage: redrawing only what changed gives the full redraw, pixel for 
           "[heavy][damage]") {
   SECTION("the diagram alone: little of the picture changes") {
     const Run run = compare_redraws({{"layout", "fbd"}}, 80);
-    CHECK(run.mean_covered < 0.35);
+    CHECK(run.mean_covered < 0.4);  // the bob (L/12) and the forces' casings move with it
   }
   SECTION("the diagram beside its growing plots") {
     const Run run = compare_redraws({{"layout", "fbd+plot"}}, 80);

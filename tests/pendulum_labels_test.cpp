@@ -254,15 +254,21 @@ TEST_CASE("the pendulum's diagram's labels: S, mg and D each read so, at their o
         }
     }
 
-    // The forces' directions: all from the bob; mg straight down; S along the
-    // wire toward the pivot; D across the wire.
-    CHECK(distance(S.from, mg.from) < 0.01);
-    CHECK(distance(D.from, mg.from) < 0.01);
+    // The forces' directions: all from the bob's rim, one distance from its
+    // centre (the wire's end) and pointing away from it; mg straight down; S
+    // along the wire toward the pivot; D across the wire.
     CHECK(std::abs(mg.tip.x - mg.from.x) < 0.01);
     CHECK(mg.tip.y > mg.from.y + 20);
-    const auto wire = std::find_if(svg.lines.begin(), svg.lines.end(),
-                                   [&](const auto& l) { return distance(l.second, mg.from) < 0.01; });
-    REQUIRE(wire != svg.lines.end());  // from the pivot to the bob
+    const auto wire = std::find_if(svg.lines.begin(), svg.lines.end(), [&](const auto& l) {
+      const double rim = distance(l.second, mg.from);
+      return rim > 1 && std::abs(distance(l.second, S.from) - rim) < 0.01 &&
+             std::abs(distance(l.second, D.from) - rim) < 0.01 && std::abs(l.second.x - mg.from.x) < 0.01;
+    });
+    REQUIRE(wire != svg.lines.end());  // from the pivot to the bob's centre
+    for (const DrawnArrow* a : {&S, &mg, &D}) {
+      const Point2 out{a->from.x - wire->second.x, a->from.y - wire->second.y}, f{a->tip.x - a->from.x, a->tip.y - a->from.y};
+      CHECK((out.x * f.x + out.y * f.y) / std::hypot(out.x, out.y) / std::hypot(f.x, f.y) == Approx(1).margin(1e-4));
+    }
     const Point2 up{wire->first.x - wire->second.x, wire->first.y - wire->second.y};
     auto cosine = [&](const DrawnArrow& a) {
       const Point2 f{a.tip.x - a.from.x, a.tip.y - a.from.y};

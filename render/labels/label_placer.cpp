@@ -206,7 +206,7 @@ void draw_placed_labels(Canvas& canvas, const std::vector<PlacedLabel>& labels) 
     // A haloed label's leader is a thin line of ink on a casing of its halo,
     // as in a technical drawing: it reads across a body, and is not taken
     // for a force's shaft in the force's colour.
-    if (style.halo) draw_pixel_line(canvas, from, to, {style.halo_color, 1.2 + 2 * 1.5});
+    if (style.halo) draw_pixel_line(canvas, from, to, {style.halo_color, 1.2 + 2 * 1.6});
     draw_pixel_line(canvas, from, to, {style.halo ? legible_on(palette::ink, style.halo_color) : style.color.with_alpha(0.7), 1.2});
   }
   for (const PlacedLabel& label : labels) {
