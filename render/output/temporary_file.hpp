@@ -15,7 +15,8 @@ namespace vibra::render {
 /// unless the file is committed.
 /// Temporary names look like `.NAME.vibra-tmp-HOST-PID` so a killed run's
 /// leftovers are recognisable; the first TemporaryFile in a directory removes
-/// (and reports on stderr) those of this host whose process is gone. Other
+/// (and reports on stderr) those of this host whose process is gone and that
+/// are provably vibra's own (temporary_claim.hpp): a name alone is no proof. Other
 /// hosts' temporaries are left alone: on a shared disk they may be live. The
 /// destructor removes an uncommitted temporary.
 class TemporaryFile {
@@ -60,7 +61,11 @@ class TemporaryDirectory {
   ~TemporaryDirectory();
 
   const std::filesystem::path& path() const { return path_; }
-  /// Puts the folder in place of `final_folder`, replacing what is there (an
+  /// Lists what the folder holds in its manifest, vibra's proof that it
+  /// wrote them (ownership_manifest.hpp), in place of the claim it had while
+  /// being filled (temporary_claim.hpp). Throws OutputError.
+  void seal();
+  /// Seals the folder and puts it in place of `final_folder`, replacing what is there (an
   /// atomic exchange where the file system has one), and removes the old.
   void replace(const std::filesystem::path& final_folder);
   /// Moves each file into `location`, over files of the same name, then
