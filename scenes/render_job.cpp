@@ -22,6 +22,7 @@
 #include "render/output/output_error.hpp"
 #include "render/output/output_path.hpp"
 #include "render/output/ownership_manifest.hpp"
+#include "render/output/place_together.hpp"
 #include "render/output/progress.hpp"
 #include "render/output/standard_output.hpp"
 #include "render/output/stop_signal.hpp"
@@ -547,15 +548,22 @@ void PreparedRender::play() {
                        page_html(r, s.outputs, clock, page_facts(r, clock.frames(), *s.parameters, s.mesh, s.speed),
                                  s.comparison_plots ? s.comparison_plots->take_panels() : s.page_plots->take_panels(),
                                  s.companions.filename().string() + "/" + s.csv_name));
+    s.staged->seal();
     check_companion_folder(s.companions, r.force);  // again: the user may have put a file there meanwhile
-    s.staged->replace(s.companions);  // the earlier companions go only now, with the page's
-    s.page_file->commit();
+    // The earlier companions and page go only now, together (the temporaries then hold them, and go).
+    render::place_together({{s.staged->path(), s.companions}, {s.page_file->path(), s.page_file->final_path()}});
   }
   if (!r.quiet && r.report_written)
     std::fprintf(stderr, "vibra: wrote %s\n",  // one line, a newline in a file name escaped
                  one_line_message(page ? page_written(r, s.target, clock.frames()) : sink->description(), 4096).c_str());
 }
 
-void run_render(const RenderRequest& r) { PreparedRender(r).play(); }
+void run_render(const RenderRequest& r) {
+  try {
+    PreparedRender(r).play();
+  } catch (const render::OutputError& e) {
+    throw render::OutputError(render::said_of_output(e.what(), r.output));  // a full disk names OUT, not a temporary
+  }
+}
 
 }  // namespace vibra::scenes

@@ -15,6 +15,7 @@
 
 #include "render/output/output_error.hpp"
 #include "render/output/output_path.hpp"
+#include "render/output/stop_signal.hpp"
 #include "render/output/ownership_manifest.hpp"
 #include "render/output/temporary_claim.hpp"
 
@@ -45,6 +46,16 @@ const std::string& host_name() {
   return name;
 }
 }  // namespace
+
+std::string said_of_output(std::string message, const std::string& output) {
+  for (size_t from = 0, at; (at = message.find(kTag, from)) != std::string::npos;) {
+    const size_t open = message.rfind('\'', at), close = message.find('\'', at);
+    if (open == std::string::npos || close == std::string::npos) break;
+    message.replace(open, close + 1 - open, "'" + output + "'");
+    from = open + output.size() + 2;  // past the name given, which may hold the tag itself
+  }
+  return message;
+}
 
 void require_writable_directory(const fs::path& dir) {
   std::error_code ec;
@@ -90,6 +101,7 @@ TemporaryFile::~TemporaryFile() {
 }
 
 void TemporaryFile::commit() {
+  throw_if_stop_requested();  // a run asked to stop keeps nothing, however far it got
   std::error_code ec;
   fs::rename(temp_, final_, ec);
   if (ec) {
@@ -131,6 +143,7 @@ TemporaryDirectory::~TemporaryDirectory() {
 }
 
 void TemporaryDirectory::replace(const fs::path& final_folder) {
+  throw_if_stop_requested();  // a run asked to stop keeps nothing, however far it got
   seal();
   std::error_code ec;
   const bool earlier = fs::exists(fs::symlink_status(final_folder, ec));
@@ -156,6 +169,7 @@ void TemporaryDirectory::replace(const fs::path& final_folder) {
 }
 
 void TemporaryDirectory::move_files_into_location() {
+  throw_if_stop_requested();  // before the first move: the set is replaced whole, or not at all
   std::error_code ec;
   fs::remove(path_ / kClaimName, ec);  // the folder's, not an output
   for (const auto& entry : fs::directory_iterator(path_, ec)) {

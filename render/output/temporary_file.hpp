@@ -1,5 +1,6 @@
 #pragma once
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "render/output/created_directory.hpp"
@@ -77,6 +78,11 @@ class TemporaryDirectory {
   std::filesystem::path location_, path_;
   bool done_ = false;
 };
+
+/// `message` with each quoted path of a temporary ('...vibra-tmp-...')
+/// replaced by `output`, the name the user gave: a failure while an output
+/// is made (a full disk) names what the user asked for, not vibra's inside.
+std::string said_of_output(std::string message, const std::string& output);
 
 /// Throws OutputError unless `dir` is an existing, writable directory.
 void require_writable_directory(const std::filesystem::path& dir);

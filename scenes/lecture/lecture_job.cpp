@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "core/input_files.hpp"
+#include "scenes/note_room.hpp"
 #include "core/quoted_value.hpp"
 #include "render/draw/canvas.hpp"
 #include "render/draw/text.hpp"
@@ -152,6 +153,7 @@ PlannedShot plan_scene(const Storyboard& board, const Shot& shot) {
       throw UsageError(text);
     }
   }
+  refuse_crowded_notes(notes, p.scene.width, p.scene.height);
   p.cues = note_cues(notes, clock, map, double(p.frames) / board.fps);
   return p;
 }
@@ -286,7 +288,8 @@ void lay_out(const std::vector<const PlannedShot*>& shots, double fps, std::vect
 }
 }  // namespace
 
-void run_lecture(const LectureRequest& r) {
+namespace {
+void make_lecture(const LectureRequest& r) {
   const std::string ext = lower_extension(r.output);
   if (ext != ".mp4" && ext != ".webm" && ext != ".html")
     throw UsageError("-o " + quoted_value(r.output, 80) + ": a lecture is written as .mp4, .webm or .html (a page)");
@@ -344,7 +347,7 @@ void run_lecture(const LectureRequest& r) {
   const std::string stem = fs::path(r.output).stem().string();
   const fs::path companions = page ? companion_folder(r.output) : fs::path();
   const fs::path vtt = page ? fs::path() : final_video.parent_path() / (stem + ".vtt");
-  if (page) check_companion_folder(companions, stem, r.force);
+  if (page) check_companion_folder(companions, r.force);
   else check_subtitles_file(vtt, r.force);
 
   std::vector<render::VideoChapter> chapters;
@@ -446,11 +449,23 @@ void run_lecture(const LectureRequest& r) {
                    {"size", std::to_string(board.width) + "x" + std::to_string(board.height)}};
   lecture.command_line = r.command_line;
   render::write_text(page_file, render::lecture_page_html(lecture));
+  staged.seal();
+  check_companion_folder(companions, r.force);  // again: the user may have put a file there meanwhile
   render::place_together({{staged.path(), companions}, {page_file.path(), page_file.final_path()}});
   if (!r.quiet)
     std::fprintf(stderr, "vibra: wrote %s and %s (%zu chapters, %lld frames, %.1f s)\n",
                  one_line_message(target.shown(), 4096).c_str(), one_line_message(companions.string(), 4096).c_str(),
                  chapters.size(), frames, seconds);
+}
+
+}  // namespace
+
+void run_lecture(const LectureRequest& r) {
+  try {
+    make_lecture(r);
+  } catch (const render::OutputError& e) {
+    throw render::OutputError(render::said_of_output(e.what(), r.output));  // a full disk names OUT, not a temporary
+  }
 }
 
 }  // namespace vibra::scenes
