@@ -32,11 +32,13 @@ void refuse_crowded_notes(const std::vector<Note>& notes, int width, int height)
   changes.reserve(2 * notes.size());
   for (const Note& note : notes) changes.push_back({note.from, -1}), changes.push_back({note.to, +1});
   std::sort(changes.begin(), changes.end());
-  long long shown = 0, steps = 0;
-  for (const auto& [t, change] : changes) {
-    if ((++steps & 0xffff) == 0) throw_if_stop_requested();
+  long long shown = 0;
+  for (std::size_t i = 0; i < changes.size(); ++i) {
+    if ((i & 0xffff) == 0xffff) throw_if_stop_requested();
+    const auto [t, change] = changes[i];
     shown -= change;
-    if (shown > limit)
+    const bool more_start_now = i + 1 < changes.size() && changes[i + 1] == std::pair{t, -1};
+    if (shown > limit && !more_start_now)  // all that start at t counted: the most shown then
       throw UsageError(std::to_string(shown) + " notes are shown at t = " + short_number(t) + ": a " +
                        std::to_string(width) + "x" + std::to_string(height) + " frame shows at most " +
                        std::to_string(limit) + " at once: give them shorter or later times, or fewer notes");
