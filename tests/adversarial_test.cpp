@@ -614,7 +614,7 @@ TEST_CASE("adversarial: more notes at once than a frame shows are refused with t
 }
 
 TEST_CASE("adversarial: SIGINT and SIGTERM stop before the first frame and inside crowded ones, within a second",
-          "[cli][adversarial][signals]") {
+          "[cli][adversarial][signals][heavy]") {
   struct StopCase {
     std::vector<std::string> args;  ///< OUT is the output in a scratch folder
     int signal;
