@@ -673,3 +673,24 @@ TEST_CASE("adversarial: the small ones: a fix that works, text that is text, a c
     CHECK(snapshot(at.path).size() == 1);  // the storyboard alone
   }
 }
+
+TEST_CASE("adversarial: a file put into a page's companions during the run stops it at the end, nothing placed",
+          "[cli][adversarial][ownership]") {
+  ScratchDirectory dir, logs;
+  const std::string in_dir = "cd '" + dir.path.string() + "' && ";
+  REQUIRE(run_vibra(kPage + "-o p.html", in_dir).exit_code == 0);  // vibra's page and companions
+  const pid_t run = vibra::test::spawn_vibra(
+      {"render", "--size", "160x90", "--set", "periods=40", "-q", "-o", (dir.path / "p.html").string()}, logs / "out",
+      logs / "err");
+  const fs::path staged = dir.path / temporary_name("p_files", run);
+  for (int i = 0; i < 500 && !fs::exists(staged); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  write_text(dir.path / "p_files/mine.txt", "written while vibra ran");
+  auto before = snapshot(dir.path);
+  std::erase_if(before, [](const auto& entry) { return entry.first.find(".vibra-tmp-") != std::string::npos; });
+  int status = 0;
+  ::waitpid(run, &status, 0);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 2);
+  CHECK_THAT(read_file(logs / "err"), Catch::Contains("'mine.txt', which vibra did not write"));
+  CHECK(snapshot(dir.path) == before);  // the earlier page, its companions and the user's file as they were
+}
