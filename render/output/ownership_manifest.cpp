@@ -28,6 +28,8 @@ constexpr const char* kHeader = "vibra manifest 1";
 /// More entries than this in a folder vibra wrote is not a folder vibra wrote
 /// (a page's frames player holds one file per frame: 1e6 frames at most).
 constexpr std::size_t kMostEntries = 2'000'000;
+/// A manifest of that many entries takes about 100 MiB; a longer file is none of vibra's.
+constexpr std::uintmax_t kLongestManifest = 256ull << 20;
 
 /// What vibra knows of a file it wrote.
 struct Fingerprint {
@@ -37,7 +39,7 @@ struct Fingerprint {
 };
 
 /// The size and FNV-1a hash of the plain file at `path` (not followed if a
-/// link); none when it cannot be read. Polls the stop flag per chunk.
+/// link); none when it cannot be read. Polls the stop flag every 16 MiB.
 std::optional<Fingerprint> fingerprint(const fs::path& path) {
   struct Descriptor {
     int fd;
@@ -77,12 +79,16 @@ std::string escaped(const std::string& name) {
 using Manifest = std::map<std::string, Fingerprint>;  // by escaped name
 
 std::optional<Manifest> read_manifest(const fs::path& file) {
-  if (!why_unreadable(file).empty() || !fs::is_regular_file(fs::symlink_status(file))) return std::nullopt;
+  std::error_code ec;
+  if (!why_unreadable(file).empty() || !fs::is_regular_file(fs::symlink_status(file, ec)) ||
+      fs::file_size(file, ec) > kLongestManifest)
+    return std::nullopt;
   std::ifstream in(file, std::ios::binary);
   std::string line;
   if (!std::getline(in, line) || line != kHeader) return std::nullopt;
   Manifest m;
-  while (std::getline(in, line) && m.size() < kMostEntries) {
+  for (std::size_t lines = 0; std::getline(in, line) && lines < kMostEntries; ++lines) {  // lines, not names: a name may repeat
+    if ((lines & 0xffff) == 0xffff) throw_if_stop_requested();
     std::istringstream fields(line);
     Fingerprint f;
     std::string name;
