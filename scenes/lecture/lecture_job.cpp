@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -381,6 +382,10 @@ void make_lecture(const LectureRequest& r) {
   std::future<std::unique_ptr<PreparedRender>> next_scene;
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     const PlannedShot* p = chosen[i];
+    // Waiting for the helper, this thread still looks at the stop flag: only it
+    // sees a stop the Python module polls for (render/output/stop_signal.hpp).
+    while (next_scene.valid() && next_scene.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready)
+      render::throw_if_stop_requested();
     std::unique_ptr<PreparedRender> prepared = next_scene.valid() ? next_scene.get() : nullptr;
     if (kept[i]) {
       end_row();
