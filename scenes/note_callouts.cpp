@@ -5,15 +5,16 @@
 
 #include "core/error.hpp"
 #include "core/quoted_value.hpp"
+#include "core/stop_flag.hpp"
 #include "render/draw/text.hpp"
 #include "render/labels/label_placer.hpp"
 #include "render/typeset/formula_layout.hpp"
 #include "render/typeset/formula_parser.hpp"
+#include "scenes/note_room.hpp"
 
 namespace vibra::scenes {
 
 namespace {
-constexpr double kNoteSize = 17;  // 720p pixels
 
 /// Greek letters as their names, so a panel labelled θ answers to theta.
 std::string latin(const std::string& text) {
@@ -40,20 +41,26 @@ std::vector<std::string> panel_names(size_t index, const std::string& given, con
 
 NoteCallouts::NoteCallouts(const std::vector<Note>& notes, const std::vector<NoteTarget>& targets, int width,
                            int height, double t_end, render::Color ink, render::Color card)
-    : targets_(targets), courses_(targets.size()), next_sample_(targets.size(), -INFINITY), ink_(ink), card_(card) {
+    : targets_(targets),
+      courses_(targets.size()),
+      next_sample_(targets.size(), -INFINITY),
+      pointed_at_(targets.size(), false),
+      ink_(ink),
+      card_(card) {
   render::Canvas measure = render::Canvas::image(1, height);
   // Longer notes break between words. A card in a panel takes at most a
   // third of the frame's width; one near the diagram's body a fifth, so that
   // it fits beside the body's arrows and wire rather than across them (a
   // third-wide card could only be placed over the pendulum's mg arrow).
-  const double panel_room = std::max(120 * measure.scale(), width / 3.0);
-  const double body_room = std::max(120 * measure.scale(), width / 5.0);
+  const double panel_room = std::max(kNoteCard.least_room * measure.scale(), width / 3.0);
+  const double body_room = std::max(kNoteCard.least_room * measure.scale(), width / 5.0);
   sample_every_ = std::isfinite(t_end) && t_end > 0 ? t_end / 600 : 0;
   for (const Note& note : notes) {
+    throw_if_stop_requested();  // each note is typeset: their number is the input's
     Callout c;
     c.note = note;
     c.box = std::make_shared<const render::MathBox>(
-        render::layout_rich_text(measure, render::parse_rich_text(note.text), {kNoteSize},
+        render::layout_rich_text(measure, render::parse_rich_text(note.text), {kNoteCard.text},
                                  note.panel.empty() ? body_room : panel_room));
     if (!note.panel.empty()) {
       std::string known;
@@ -76,6 +83,7 @@ NoteCallouts::NoteCallouts(const std::vector<Note>& notes, const std::vector<Not
         throw UsageError("note @" + quoted_value(note.panel, 20) +
                          " points at a phase plot: notes point at a curve against time; choose another panel");
     }
+    if (c.target >= 0) pointed_at_[size_t(c.target)] = true;
     notes_.push_back(std::move(c));
   }
 }
@@ -91,9 +99,7 @@ void NoteCallouts::record(std::span<const double> row) {
     }
   }
   for (size_t i = 0; i < targets_.size(); ++i) {
-    if (t < next_sample_[i] || !targets_[i].against_time) continue;
-    const bool wanted = std::any_of(notes_.begin(), notes_.end(), [&](const Callout& c) { return c.target == int(i); });
-    if (!wanted) continue;
+    if (t < next_sample_[i] || !targets_[i].against_time || !pointed_at_[i]) continue;
     const double v = targets_[i].value(row);
     if (std::isfinite(v)) courses_[i].emplace_back(t, v);
     next_sample_[i] = t + sample_every_;
@@ -127,6 +133,7 @@ void NoteCallouts::draw_panel_notes(render::Canvas& canvas, double t,
                                     const std::function<const render::PlotPanel*(size_t)>& panel) const {
   for (const Callout& c : notes_) {
     if (c.target < 0 || !c.note.shown_at(t)) continue;
+    throw_if_stop_requested();  // each placed in its panel: as many as the input shows at once
     const render::PlotPanel* plot = panel(size_t(c.target));
     if (!plot) continue;
     const render::PixelRect& area = plot->area();

@@ -65,6 +65,7 @@ class NoteCallouts {
   std::vector<std::vector<render::Point>> courses_;
   double sample_every_ = 0;
   std::vector<double> next_sample_;
+  std::vector<bool> pointed_at_;  ///< per panel: whether a note points at it (its course is kept)
   render::Color ink_, card_;
 };
 

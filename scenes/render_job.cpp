@@ -21,6 +21,8 @@
 #include "render/encode/video_concat.hpp"
 #include "render/output/output_error.hpp"
 #include "render/output/output_path.hpp"
+#include "render/output/ownership_manifest.hpp"
+#include "render/output/place_together.hpp"
 #include "render/output/progress.hpp"
 #include "render/output/standard_output.hpp"
 #include "render/output/stop_signal.hpp"
@@ -28,6 +30,7 @@
 #include "render/page/html_page.hpp"
 #include "scenes/diagrams/comparison_labels.hpp"
 #include "scenes/frame_clock.hpp"
+#include "scenes/note_room.hpp"
 #include "scenes/panels/comparison_page_plots.hpp"
 #include "scenes/panels/history_feed.hpp"
 #include "scenes/panels/page_plot_collector.hpp"
@@ -93,10 +96,19 @@ void check_segment_file(const RenderRequest& r, const fs::path& file, const rend
                               ": move it away, or add --force to overwrite it");
 }
 
-/// Each frame's name is a file that may be written (not a folder, not an input).
+/// Each frame's name is a file that may be written (not a folder, not an
+/// input). Only a name that exists can be either, so the folder's entries
+/// are checked, not every name: a render of 1e9 frames (a tiny --speed)
+/// checks as fast as one of ten, and stops at Ctrl-C.
 void check_frame_names(const std::string& target, const render::FrameSegment& segment) {
   const render::FramePattern pattern = render::parse_frame_pattern(target, segment.total);
-  for (long long k = segment.first(); k < segment.end(); ++k) render::resolve_output_file(pattern.name(k));
+  std::error_code ec;
+  long long seen = 0;
+  for (const auto& entry : fs::directory_iterator(pattern.directory, ec)) {
+    if ((++seen & 0xff) == 0) render::throw_if_stop_requested();
+    const std::optional<long long> k = pattern.index_of(entry.path().filename().string());
+    if (k && *k >= segment.first() && *k < segment.end()) render::resolve_output_file(entry.path());
+  }
 }
 
 Outputs plan_outputs(const RenderRequest& r, const render::FrameSegment& segment, bool stream, const fs::path& staged) {
@@ -116,8 +128,10 @@ Outputs plan_outputs(const RenderRequest& r, const render::FrameSegment& segment
 bool frames_complete(const std::string& pattern, const render::FrameSegment& segment) {
   const render::FramePattern names = render::parse_frame_pattern(pattern, segment.total);
   std::error_code ec;
-  for (long long k = segment.first(); k < segment.end(); ++k)
+  for (long long k = segment.first(); k < segment.end(); ++k) {
+    if ((k & 0xff) == 0) render::throw_if_stop_requested();
     if (!fs::is_regular_file(names.name(k), ec)) return false;
+  }
   return true;
 }
 
@@ -275,30 +289,27 @@ fs::path companion_folder(const std::string& page) {
   return p.parent_path() / (p.stem().string() + "_files");
 }
 
-/// Whether `name` is one that vibra writes in the companion folder of a page `stem`.html.
-static bool is_companion_name(const std::string& name, const std::string& stem) {
-  if (name == stem + ".mp4" || name == stem + ".webm" || name == stem + ".csv" || name == stem + ".vtt") return true;
-  if (!name.starts_with("frame_") || !name.ends_with(".png") || name.size() <= 10) return false;
-  return std::all_of(name.begin() + 6, name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
-}
-
-/// A page's companion folder may be replaced when vibra wrote it for a page
-/// of that name (it holds only such companions), or with --force; it never
-/// holds a file the run reads.
-void check_companion_folder(const fs::path& folder, const std::string& stem, bool force) {
+/// A page's companion folder may be replaced when vibra can prove it wrote
+/// it (its manifest lists every file in it, each of the size and hash
+/// listed: render/output/ownership_manifest.hpp), or with --force; never
+/// when it holds a file the run reads, nor when vibra may not read it (another
+/// user's, or mode 000): such a folder is never moved, --force or not.
+void check_companion_folder(const fs::path& folder, bool force) {
   std::error_code ec;
-  const fs::file_status status = fs::symlink_status(folder, ec);
-  if (!fs::exists(status)) return;
-  bool ours = fs::is_directory(status);
+  if (!fs::exists(fs::symlink_status(folder, ec))) return;
   render::refuse_input_as_output(folder);
-  for (const auto& entry : fs::directory_iterator(ours ? folder : fs::path(), ec)) {
+  if (const std::string why = render::why_unreadable(folder); !why.empty())
+    throw render::OutputError("'" + folder.string() + "' " + why + ": vibra never moves what it may not read, nor another " +
+                              "user's: move it away yourself, or choose another output name");
+  long long seen = 0;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    if ((++seen & 0xff) == 0) render::throw_if_stop_requested();
     render::refuse_input_as_output(entry.path());
-    ours = ours && is_companion_name(entry.path().filename().string(), stem) && entry.is_regular_file(ec) &&
-           !entry.is_symlink(ec);
   }
-  if (!ours && !force)
-    throw render::OutputError("'" + folder.string() + "' exists and was not written by vibra for this page: move it "
-                              "away, or add --force to replace it");
+  if (force) return;
+  if (const std::string why = render::why_not_vibras(folder); !why.empty())
+    throw render::OutputError("'" + folder.string() + "' exists and was not written by vibra for this page: it " + why +
+                              ": move it away, or add --force to replace it");
 }
 
 double video_rate_of(const SceneConfig& scene, const TimeMesh& mesh) {
@@ -386,6 +397,9 @@ PreparedRender::PreparedRender(const RenderRequest& request) : state_(std::make_
                        "not " + ext);
   }
 
+  std::vector<Note> notes;  // more at once than a frame shows: refused before any work
+  for (const std::string& spec : r.scene.notes) notes.push_back(parse_note(spec));
+  refuse_crowded_notes(notes, r.scene.width, r.scene.height);
   render::start_loading_fonts();  // overlaps the solver's pre-pass and the encoder's start
   // A comparison's runs go through the render as one trajectory of wide rows.
   s.parameters.emplace(r.scene.compare.empty() ? model_parameters_of(r.scene)
@@ -416,7 +430,7 @@ PreparedRender::PreparedRender(const RenderRequest& request) : state_(std::make_
   // before any work: the inputs, companions and frame names.
   const fs::path companions = s.companions = page ? companion_folder(r.output) : fs::path();
   if (!target.file.empty()) render::refuse_input_as_output(target.file);
-  if (page) check_companion_folder(companions, fs::path(r.output).stem().string(), r.force);
+  if (page) check_companion_folder(companions, r.force);
   if (r.segment && render::is_video_path(r.output)) check_segment_file(r, segment.file_name(r.output), segment);
   if (frames) check_frame_names(r.output, segment);
   if (r.skip_existing && !stream && already_complete(r, still ? Outputs{} : plan_outputs(r, segment, false, {}), segment)) {
@@ -534,14 +548,22 @@ void PreparedRender::play() {
                        page_html(r, s.outputs, clock, page_facts(r, clock.frames(), *s.parameters, s.mesh, s.speed),
                                  s.comparison_plots ? s.comparison_plots->take_panels() : s.page_plots->take_panels(),
                                  s.companions.filename().string() + "/" + s.csv_name));
-    s.staged->replace(s.companions);  // the earlier companions go only now, with the page's
-    s.page_file->commit();
+    s.staged->seal();
+    check_companion_folder(s.companions, r.force);  // again: the user may have put a file there meanwhile
+    // The earlier companions and page go only now, together (the temporaries then hold them, and go).
+    render::place_together({{s.staged->path(), s.companions}, {s.page_file->path(), s.page_file->final_path()}});
   }
   if (!r.quiet && r.report_written)
     std::fprintf(stderr, "vibra: wrote %s\n",  // one line, a newline in a file name escaped
                  one_line_message(page ? page_written(r, s.target, clock.frames()) : sink->description(), 4096).c_str());
 }
 
-void run_render(const RenderRequest& r) { PreparedRender(r).play(); }
+void run_render(const RenderRequest& r) {
+  try {
+    PreparedRender(r).play();
+  } catch (const render::OutputError& e) {
+    throw render::OutputError(render::said_of_output(e.what(), r.output));  // a full disk names OUT, not a temporary
+  }
+}
 
 }  // namespace vibra::scenes

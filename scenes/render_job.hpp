@@ -88,10 +88,10 @@ FrameClock frame_clock_of(const SceneConfig& scene, const TimeMesh& mesh);
 /// the page never writes over a file the user did not name.
 std::filesystem::path companion_folder(const std::string& page);
 
-/// A page's companion folder may be replaced when vibra wrote it for a page
-/// of that name (it holds only such companions), or with `force`; it never
-/// holds a file the run reads. Throws OutputError otherwise.
-void check_companion_folder(const std::filesystem::path& folder, const std::string& stem, bool force);
+/// A page's companion folder may be replaced when vibra proves it wrote it
+/// (its manifest matches), or with `force`; never when it holds a file the
+/// run reads, or vibra may not read it. Throws OutputError otherwise.
+void check_companion_folder(const std::filesystem::path& folder, bool force);
 
 /// Simulated time per second of video outside slow motion: the scene's
 /// speed, one small-oscillation period in 2 s, or one step per frame.

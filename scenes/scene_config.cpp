@@ -127,6 +127,8 @@ void collect(const toml::table& table, const std::string& prefix, const std::str
       continue;
     }
     std::string text = scalar_text(node);
+    if (text.empty() && node.is_string())  // a string, but empty: no value, never the default
+      throw UsageError(origin + ": " + name + " = \"\" is empty: give it a value, or delete the line for the default");
     if (text.empty()) throw UsageError(origin + ": " + name + " must be a number, string or boolean");
     out.push_back({name, text, origin});
   }

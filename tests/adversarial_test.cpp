@@ -5,14 +5,23 @@
 // naming the problem, at most about 240 characters, nothing at the output.
 // The odd paths that are valid (spaces, unicode, a newline) must work, and
 // text that reaches a page must arrive escaped.
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <functional>
 #include <iterator>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include "app/ascii_plot.hpp"
 #include "cli_support.hpp"
 
 using vibra::test::check_refused;
@@ -366,4 +375,325 @@ TEST_CASE("adversarial: a lecture's inputs as its outputs, and huge keys, refuse
     CHECK(std::size_t(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator())) == c.files.size());
     for (const auto& [name, text] : c.files) CHECK(read_file(dir / name) == text);
   }
+}
+
+namespace {
+
+/// Every entry under `dir`: its mode, owner and bytes, by relative path; what a run must leave as it was.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> entries;
+  const auto options = fs::directory_options::skip_permission_denied;
+  for (auto it = fs::recursive_directory_iterator(dir, options); it != fs::recursive_directory_iterator(); ++it) {
+    struct stat st {};
+    ::lstat(it->path().c_str(), &st);
+    const std::string bytes = S_ISREG(st.st_mode) ? read_file(it->path()) : "";
+    entries[fs::relative(it->path(), dir).string()] =
+        std::to_string(st.st_mode) + " " + std::to_string(st.st_uid) + " " + bytes;
+  }
+  return entries;
+}
+
+/// The name vibra gives a temporary of `name` made by process `pid` on this machine.
+std::string temporary_name(const std::string& name, pid_t pid) {
+  char host[256] = {};
+  ::gethostname(host, sizeof host - 1);
+  std::string h = host[0] ? host : "host";
+  for (char& c : h)
+    if (c == '/' || c == '-') c = '_';
+  return "." + name + ".vibra-tmp-" + h + "-" + std::to_string(pid);
+}
+
+/// A process id that no process has: a child's, once it has ended.
+pid_t dead_pid() {
+  const pid_t pid = ::fork();
+  if (pid == 0) ::_exit(0);
+  ::waitpid(pid, nullptr, 0);
+  return pid;
+}
+
+void write_text(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+
+/// Another user's: as root, the file or folder is given to nobody (uid 65534). False when that is not possible.
+bool give_to_another_user(const fs::path& path) { return ::geteuid() == 0 && ::lchown(path.c_str(), 65534, 65534) == 0; }
+
+const std::string kPage = "render --size 160x90 --set periods=0.2 -q ";
+const std::string kTalk = "[[shot]]\ncard = \"A\"\nseconds = 1\n";
+
+}  // namespace
+
+TEST_CASE("adversarial: a companion folder vibra cannot prove it wrote is never replaced, moved or removed",
+          "[cli][adversarial][ownership]") {
+  // Each case: what the folder holds before, the command, what the one line
+  // names; refused in seconds, every entry as it was (mode, owner, bytes).
+  struct OwnerCase {
+    std::string what;
+    std::function<bool(const fs::path&)> setup;  ///< false: not possible here (not root)
+    std::string args, expected;
+  };
+  const auto folder_of_mode_000 = [](const fs::path& dir) {
+    fs::create_directory(dir / "x_files");
+    write_text(dir / "x_files/a.txt", "mine");
+    fs::permissions(dir / "x_files", fs::perms::none);
+    return true;
+  };
+  const auto users_file_under_a_companion_name = [](const fs::path& dir) {
+    fs::create_directory(dir / "p_files");
+    write_text(dir / "p_files/p.csv", "my table");
+    return true;
+  };
+  const auto vibras_then = [](const std::string& change) {
+    return [change](const fs::path& dir) {
+      REQUIRE(run_vibra(kPage + "-o p.html", "cd '" + dir.string() + "' && ").exit_code == 0);
+      write_text(dir / "p_files" / change, "mine");
+      return true;
+    };
+  };
+  const std::vector<OwnerCase> cases = {
+      {"mode 000", folder_of_mode_000, kPage + "-o x.html", "'x_files' has mode 000"},
+      {"mode 000, --force", folder_of_mode_000, kPage + "--force -o x.html", "vibra never moves what it may not read"},
+      {"a lecture page's, mode 000", [&](const fs::path& d) { write_text(d / "talk.toml", kTalk); return folder_of_mode_000(d); },
+       "lecture talk.toml --size 160x90 -q -o x.html", "'x_files' has mode 000"},
+      {"another user's, --force",
+       [](const fs::path& d) { fs::create_directory(d / "x_files"); return give_to_another_user(d / "x_files"); },
+       kPage + "--force -o x.html", "'x_files' belongs to another user (uid 65534)"},
+      {"the user's file under a companion's name", users_file_under_a_companion_name, kPage + "-o p.html",
+       "holds no manifest of what vibra wrote there"},
+      {"the user's file, a lecture page", [&](const fs::path& d) { write_text(d / "talk.toml", kTalk); return users_file_under_a_companion_name(d); },
+       "lecture talk.toml --size 160x90 -q -o p.html", "holds no manifest"},
+      {"vibra's companion, changed since", vibras_then("p.csv"), kPage + "-o p.html", "'p.csv', which changed since vibra wrote it"},
+      {"a file added to vibra's companions", vibras_then("notes.txt"), kPage + "-o p.html",
+       "'notes.txt', which vibra did not write (it is not in vibra's manifest)"},
+  };
+  for (const OwnerCase& c : cases) {
+    ScratchDirectory dir;
+    INFO(c.what << ": " << c.args);
+    if (!c.setup(dir.path)) {
+      WARN("skipped (" << c.what << "): giving a folder to another user needs root");
+      continue;
+    }
+    const auto before = snapshot(dir.path);
+    const auto start = std::chrono::steady_clock::now();
+    const auto r = run_vibra(c.args, "cd '" + dir.path.string() + "' && ");
+    INFO(r.err);
+    check_refusal(r, c.expected);
+    CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 5);
+    CHECK(snapshot(dir.path) == before);  // nothing moved, replaced, added or removed
+    std::error_code ignored;
+    fs::permissions(dir / "x_files", fs::perms::owner_all, ignored);  // for the scratch folder's removal
+  }
+}
+
+TEST_CASE("adversarial: vibra's own companions are replaced, proven by their manifest", "[cli][adversarial][ownership]") {
+  ScratchDirectory dir;
+  const std::string in_dir = "cd '" + dir.path.string() + "' && ";
+  REQUIRE(run_vibra(kPage + "-o p.html", in_dir).exit_code == 0);
+  const std::string manifest = read_file(dir / "p_files/.vibra-manifest");
+  // One line per companion: size, hash, name.
+  CHECK_THAT(manifest, Catch::StartsWith("vibra manifest 1\n"));
+  for (const char* name : {"p.mp4", "p.webm", "p.csv"}) {
+    const std::string size = std::to_string(fs::file_size(dir / ("p_files/" + std::string(name))));
+    CHECK_THAT(manifest, Catch::Contains("\n" + size + " ") && Catch::Contains(" " + std::string(name) + "\n"));
+  }
+  const auto r = run_vibra(kPage + "--frames-player -o p.html", in_dir);  // another kind of page: replaced without --force
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(fs::exists(dir / "p_files/frame_0000.png"));
+  CHECK_FALSE(fs::exists(dir / "p_files/p.mp4"));
+}
+
+TEST_CASE("adversarial: a temporary is removed only when it is provably vibra's own", "[cli][adversarial][ownership]") {
+  ScratchDirectory dir;
+  const pid_t gone = dead_pid();
+  const fs::path users_folder = dir.path / temporary_name("u_files", gone);    // named as vibra's, no claim
+  const fs::path unreadable = dir.path / temporary_name("m_files", gone);      // mode 000
+  const fs::path linked = dir.path / temporary_name("l.mp4", gone);            // a second name of the user's file
+  const fs::path others = dir.path / temporary_name("o.mp4", gone);            // another user's
+  const fs::path vibras_file = dir.path / temporary_name("v.mp4", gone);       // a killed run's partial file
+  fs::create_directory(users_folder);
+  write_text(users_folder / "thesis.tex", "mine");
+  fs::create_directory(unreadable);
+  write_text(unreadable / "a.txt", "mine");
+  fs::permissions(unreadable, fs::perms::none);
+  write_text(dir.path / "l.mp4", "my video");
+  fs::create_hard_link(dir.path / "l.mp4", linked);
+  write_text(others, "theirs");
+  const bool root = give_to_another_user(others);
+  write_text(vibras_file, "partial");
+  // A run killed while it filled its page's companions' folder (claimed).
+  ScratchDirectory logs;
+  const pid_t killed = vibra::test::spawn_vibra(
+      {"render", "--size", "160x90", "--set", "periods=400", "-q", "-o", (dir.path / "k.html").string()}, logs / "out",
+      logs / "err");
+  const fs::path claimed = dir.path / temporary_name("k_files", killed);
+  for (int i = 0; i < 500 && !fs::exists(claimed / ".vibra-claim"); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ::kill(killed, SIGKILL);
+  ::waitpid(killed, nullptr, 0);
+  REQUIRE(fs::exists(claimed));
+
+  // What must stay: all but the claimed folder and the partial file.
+  auto kept = snapshot(dir.path);
+  std::erase_if(kept, [&](const auto& entry) {
+    return entry.first.rfind(claimed.filename().string(), 0) == 0 || entry.first == vibras_file.filename().string();
+  });
+  const auto r = run_vibra(kPage + "-o out.mp4", "cd '" + dir.path.string() + "' && ");
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK_FALSE(fs::exists(claimed));      // vibra's, by its claim
+  CHECK_FALSE(fs::exists(vibras_file));  // the user's own plain file of one name
+  CHECK_THAT(r.err, Catch::Contains(claimed.filename().string() + ", a temporary left by a run that was killed"));
+  auto after = snapshot(dir.path);
+  after.erase("out.mp4");
+  CHECK(after == kept);  // the user's folder, the unreadable one, the linked file, another user's: as they were
+  if (!root) WARN("another user's temporary not tried: giving a file to another user needs root");
+  fs::permissions(unreadable, fs::perms::owner_all);
+}
+
+namespace {
+/// `count` notes shown together from t = 0 to 1, as --note options.
+std::string notes_at_once(int count) {
+  std::string options;
+  for (int i = 0; i < count; ++i) options += " --note '0-1: note " + std::to_string(i) + "'";
+  return options;
+}
+
+/// The same as a storyboard shot's notes.
+std::string storyboard_with_notes(int count) {
+  std::string notes;
+  for (int i = 0; i < count; ++i) notes += (i ? ", " : "") + std::string("\"0-1: note ") + std::to_string(i) + "\"";
+  return "size = \"640x360\"\n[[shot]]\nscene = \"pendulum\"\nseconds = 60\nnotes = [" + notes + "]\n";
+}
+
+/// Starts `vibra ARGS`, sends `signal` after `after` s, and returns its exit
+/// code and the seconds from the signal to its end (a run that goes on for
+/// 10 s is killed).
+std::pair<int, double> stopped_after(const std::vector<std::string>& args, const ScratchDirectory& logs, int signal,
+                                     double after) {
+  const pid_t pid = vibra::test::spawn_vibra(args, logs / "out", logs / "err");
+  std::this_thread::sleep_for(std::chrono::duration<double>(after));
+  ::kill(pid, signal);
+  const auto sent = std::chrono::steady_clock::now();
+  int status = 0;
+  for (int i = 0; i < 1000 && ::waitpid(pid, &status, WNOHANG) == 0; ++i)  // at most 10 s: a hang is killed
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+  if (seconds >= 10) ::kill(pid, SIGKILL), ::waitpid(pid, &status, 0);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status), seconds};
+}
+}  // namespace
+
+TEST_CASE("adversarial: more notes at once than a frame shows are refused with the limit, before any work",
+          "[cli][adversarial][notes]") {
+  // 3000 notes once cost 40 s inside one frame (each label tried every spot
+  // against all placed before it), deaf to Ctrl-C.
+  const Case cases[] = {
+      {"render --size 1280x720 --set periods=0.2" + notes_at_once(261) + " -o OUT.mp4",
+       "261 notes are shown at t = 0: a 1280x720 frame shows at most 260 at once"},
+      {"render --size 640x360 --set periods=0.2" + notes_at_once(3000) + " -o OUT.mp4",
+       "640x360 frame shows at most 133 at once"},
+      {"render --size 640x360 --set periods=0.2" + notes_at_once(134) + " --at 0.5 -o OUT.png", "at most 133 at once"},
+      {"render --size 480x270 --set periods=0.2" + notes_at_once(134) + " -o OUT.html", "480x270 frame shows at most 133"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.args.substr(0, 80));
+    const auto start = std::chrono::steady_clock::now();
+    check_refused(c.args, c.expected);
+    CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 5);
+  }
+  // A storyboard's shot: refused before any shot renders.
+  ScratchDirectory dir;
+  write_text(dir / "talk.toml", storyboard_with_notes(200));
+  const auto r = run_vibra("lecture talk.toml -o talk.mp4", "cd '" + dir.path.string() + "' && ");
+  check_refusal(r, "talk.toml: shot 1: 200 notes are shown at t = 0: a 640x360 frame shows at most 133 at once");
+  CHECK(snapshot(dir.path).size() == 1);
+  // As many as fit are drawn.
+  ScratchDirectory out;
+  const auto drawn = run_vibra("render --size 640x360 --set periods=0.2" + notes_at_once(133) + " --at 0.5 -q -o " +
+                               (out / "many.png"));
+  INFO(drawn.err);
+  CHECK(drawn.exit_code == 0);
+  CHECK(vibra::test::png_size(out / "many.png") == std::pair{640, 360});
+}
+
+TEST_CASE("adversarial: SIGINT and SIGTERM stop before the first frame and inside crowded ones, within a second",
+          "[cli][adversarial][signals][heavy]") {
+  struct StopCase {
+    std::vector<std::string> args;  ///< OUT is the output in a scratch folder
+    int signal;
+  };
+  std::vector<std::string> crowded = {"render", "--size", "1280x720", "--set", "periods=50", "-q", "-o", "OUT/n.mp4"};
+  for (int i = 0; i < 260; ++i) crowded.insert(crowded.begin() + 1, {"--note", "0-100: note " + std::to_string(i)});
+  const StopCase cases[] = {
+      // 5e7 frames: every frame's name was resolved before the first, for minutes.
+      {{"render", "--size", "64x36", "--speed", "1e-4", "-q", "-o", "OUT/f_%04d.png"}, SIGTERM},
+      {{"render", "--size", "64x36", "--speed", "1e-4", "-q", "-o", "OUT/frames/"}, SIGINT},
+      // The most notes a frame shows, each placed against all others.
+      {crowded, SIGINT},
+  };
+  for (const StopCase& c : cases) {
+    ScratchDirectory dir, logs;
+    std::vector<std::string> args = c.args;
+    for (std::string& a : args)
+      if (a.rfind("OUT/", 0) == 0) a = dir / a.substr(4);
+    INFO(args.back());
+    const auto [code, seconds] = stopped_after(args, logs, c.signal, 1.5);
+    CHECK(code == 128 + c.signal);
+    CHECK(seconds < 5);  // a bound for a hang, on a loaded machine (once minutes): the promise is under a second
+    CHECK(snapshot(dir.path).size() <= 1);  // nothing, or the frames folder made empty
+    for (const auto& [name, entry] : snapshot(dir.path)) CHECK(name == "frames");
+  }
+}
+
+TEST_CASE("adversarial: the small ones: a fix that works, text that is text, a clamp, the output's own name",
+          "[cli][adversarial]") {
+  // --segment auto/0 once suggested --segment K/0.
+  check_refused("render --set periods=0.2 --segment auto/0 -o OUT.mp4", "--segment auto/0: N must be 1..1000000");
+  check_refused("render --set periods=0.2 --segment auto/2000000 -o OUT.mp4", "N must be 1..1000000");
+  // A symbol is one byte of a line: 'é' once wrote half a character.
+  for (const char* symbols : {"ééé", "*\tx", "a\x7f"}) {
+    const auto r = run_vibra(std::string("ascii undamped --set T=1 --symbols '") + symbols + "'");
+    check_refusal(r, "holds a character that is not printable ASCII");
+    CHECK(r.out.empty());
+  }
+  // An empty string is a string, and empty.
+  ScratchDirectory dir;
+  write_text(dir / "s.toml", "model = \"\"\n");
+  check_refused("render " + (dir / "s.toml") + " --at 0.5 -o OUT.png", "s.toml:1: model = \"\" is empty: give it a value");
+  // --width auto on a terminal wider than any plot: the widest plot.
+  CHECK(vibra::app::auto_plot_width(65535) == vibra::app::kWidestAsciiPlot);
+  CHECK(vibra::app::auto_plot_width(80) == 72);
+  CHECK(vibra::app::auto_plot_width(0) == 10);
+  // A full disk while a lecture is made names the lecture, never a temporary inside it.
+  for (const char* output : {"talk.mp4", "talk.html"}) {
+    ScratchDirectory at;
+    write_text(at / "talk.toml", "size = \"640x360\"\n[[shot]]\ncard = \"A\"\nseconds = 5\n[[shot]]\nscene = \"pendulum\"\nseconds = 20\n");
+    const auto r = run_vibra(std::string("lecture talk.toml -q -o ") + output,
+                             "cd '" + at.path.string() + "' && trap '' XFSZ && ulimit -f 100 && ");
+    INFO(r.err);
+    check_refusal(r, std::string("cannot write video to '") + output + "'");
+    CHECK(r.err.find("vibra-tmp") == std::string::npos);
+    CHECK(snapshot(at.path).size() == 1);  // the storyboard alone
+  }
+}
+
+TEST_CASE("adversarial: a file put into a page's companions during the run stops it at the end, nothing placed",
+          "[cli][adversarial][ownership]") {
+  ScratchDirectory dir, logs;
+  const std::string in_dir = "cd '" + dir.path.string() + "' && ";
+  REQUIRE(run_vibra(kPage + "-o p.html", in_dir).exit_code == 0);  // vibra's page and companions
+  const pid_t run = vibra::test::spawn_vibra(
+      {"render", "--size", "160x90", "--set", "periods=40", "-q", "-o", (dir.path / "p.html").string()}, logs / "out",
+      logs / "err");
+  const fs::path staged = dir.path / temporary_name("p_files", run);
+  for (int i = 0; i < 500 && !fs::exists(staged); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  write_text(dir.path / "p_files/mine.txt", "written while vibra ran");
+  auto before = snapshot(dir.path);
+  std::erase_if(before, [](const auto& entry) { return entry.first.find(".vibra-tmp-") != std::string::npos; });
+  int status = 0;
+  ::waitpid(run, &status, 0);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 2);
+  CHECK_THAT(read_file(logs / "err"), Catch::Contains("'mine.txt', which vibra did not write"));
+  CHECK(snapshot(dir.path) == before);  // the earlier page, its companions and the user's file as they were
 }

@@ -38,7 +38,7 @@ TEST_CASE("fuzz inputs replay cleanly: scene files", "[fuzz]") {
 }
 
 TEST_CASE("fuzz inputs replay cleanly: storyboards", "[fuzz]") {
-  CHECK(replay("storyboard", vibra::fuzz::storyboard) >= 6);
+  CHECK(replay("storyboard", vibra::fuzz::storyboard) >= 8);  // with crowded notes (issue 42)
 }
 
 TEST_CASE("fuzz inputs replay cleanly: --set assignments", "[fuzz]") {
@@ -50,7 +50,7 @@ TEST_CASE("fuzz inputs replay cleanly: expressions", "[fuzz]") {
 }
 
 TEST_CASE("fuzz inputs replay cleanly: command lines", "[fuzz]") {
-  CHECK(replay("command_line", vibra::fuzz::command_line) >= 8);
+  CHECK(replay("command_line", vibra::fuzz::command_line) >= 17);  // with the classes of issue 42
 }
 
 TEST_CASE("fuzz inputs replay cleanly: formulas", "[fuzz]") {

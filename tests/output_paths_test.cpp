@@ -307,8 +307,8 @@ TEST_CASE("a page keeps its companions in PAGE_files/ and leaves the user's file
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   for (const char* name : {"lecture.mp4", "lecture.webm", "lecture.csv"}) CHECK(read_file(dir.path / name) == std::string("mine: ") + name);
-  CHECK(entries(dir.path / "lecture_files") ==
-        std::vector<std::string>{"lecture.csv", "lecture.mp4", "lecture.webm"});
+  CHECK(entries(dir.path / "lecture_files") ==  // and the manifest that proves them vibra's
+        std::vector<std::string>{".vibra-manifest", "lecture.csv", "lecture.mp4", "lecture.webm"});
   const std::string html = read_file(dir.path / "lecture.html");
   CHECK_THAT(html, Catch::Contains("<source src=\"lecture_files/lecture.mp4\"") &&
                        Catch::Contains("<a href=\"lecture_files/lecture.csv\" download>"));
@@ -320,7 +320,7 @@ TEST_CASE("a page keeps its companions in PAGE_files/ and leaves the user's file
   // Again, as a frames player: vibra's own folder is replaced whole, without --force.
   REQUIRE(run_vibra("render" + kShort + "--frames-player -o " + (dir / "lecture.html")).exit_code == 0);
   const auto files = entries(dir.path / "lecture_files");
-  CHECK(files.size() == 32);  // 31 frames and the CSV
+  CHECK(files.size() == 33);  // 31 frames, the CSV and the manifest
   CHECK(std::find(files.begin(), files.end(), "lecture.mp4") == files.end());
   CHECK_THAT(read_file(dir.path / "lecture.html"), Catch::Contains("\"prefix\":\"lecture_files/frame_\""));
 
@@ -333,7 +333,8 @@ TEST_CASE("a page keeps its companions in PAGE_files/ and leaves the user's file
   CHECK_FALSE(fs::exists(dir.path / "notes.html"));
   CHECK(read_file(dir.path / "notes_files/mine.txt") == "my notes");
   REQUIRE(run_vibra("render" + kShort + "--force -o " + (dir / "notes.html")).exit_code == 0);
-  CHECK(entries(dir.path / "notes_files") == std::vector<std::string>{"notes.csv", "notes.mp4", "notes.webm"});
+  CHECK(entries(dir.path / "notes_files") ==
+        std::vector<std::string>{".vibra-manifest", "notes.csv", "notes.mp4", "notes.webm"});
 }
 
 TEST_CASE("a segment's file is overwritten only when vibra wrote it for that segment", "[output][paths][segment]") {

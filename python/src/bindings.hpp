@@ -6,6 +6,8 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+
+#include "render/output/stop_signal.hpp"
 #include <string>
 #include <vector>
 
@@ -19,6 +21,26 @@ void bind_ascii(py::module_&);
 void bind_render(py::module_&);
 void bind_lecture(py::module_&);
 void bind_analyses(py::module_&);
+
+/// For the life of a call into vibra's long work (render, lecture), made
+/// with the GIL held before any work: vibra's SIGINT and SIGTERM handlers
+/// (render::ScopedStopHandlers) and a poll, at every look at the stop flag,
+/// of the signals Python has noted. Throws error_already_set when Python
+/// already holds a Ctrl-C: the call does nothing.
+class PythonStop {
+ public:
+  PythonStop();
+  ~PythonStop();
+  PythonStop(const PythonStop&) = delete;
+  PythonStop& operator=(const PythonStop&) = delete;
+
+ private:
+  render::ScopedStopHandlers handlers_;
+};
+
+/// Raises (sets) what Python's signal handler raised during a poll, if it
+/// did; the error translator calls it for vibra's Interrupted. GIL held.
+bool restore_python_interrupt();
 
 /// Uninitialised memory for a table of doubles, in huge pages when large
 /// (a 400 MB run then faults in 200 times instead of 100000).

@@ -28,8 +28,14 @@ void bind_errors(py::module_& m) {
     } catch (const render::OutputError& e) {
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const render::Interrupted&) {
-      // The signal was raised again for Python's handler; let it speak.
-      if (PyErr_CheckSignals() == 0) PyErr_SetNone(PyExc_KeyboardInterrupt);
+      // What Python's handler raised during a poll, or the signal raised
+      // again for Python's handler: let it speak.
+      if (!restore_python_interrupt() && PyErr_CheckSignals() == 0) PyErr_SetNone(PyExc_KeyboardInterrupt);
+    } catch (const std::bad_alloc&) {
+      // Never the bare "std::bad_alloc": say what to ask for instead, as the command line does.
+      PyErr_SetString(PyExc_MemoryError,
+                      "out of memory: this call needs more memory than this machine gives it: ask for less (a "
+                      "smaller size, T or periods, a larger dt or every, or vibra.stream for a long run)");
     }
   });
 }

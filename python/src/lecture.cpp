@@ -16,6 +16,7 @@ void bind_lecture(py::module_& m) {
       "lecture",
       [](const std::string& storyboard, const std::string& output, std::optional<int> shot, const std::string& codec,
          const std::string& quality, int crf, const std::string& preset, int threads, bool force, bool quiet) {
+        PythonStop stop;  // first: a Ctrl-C from here on stops the call, and leaves nothing
         forget_input_files();  // each call is a run of its own
         if (crf != -1) in_range("--crf", crf, std::to_string(crf));
         if (threads != 0) in_range("--threads", threads, std::to_string(threads));
@@ -27,7 +28,6 @@ void bind_lecture(py::module_& m) {
         request.force = force;
         request.quiet = quiet;
         py::gil_scoped_release release;
-        render::ScopedStopHandlers stop_handlers;
         scenes::run_lecture(request);
       },
       py::arg("storyboard"), py::arg("output"), py::arg("shot"), py::arg("codec"), py::arg("quality"), py::arg("crf"),

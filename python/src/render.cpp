@@ -16,10 +16,14 @@ namespace {
 void render(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& settings,
             const std::string& output, std::optional<double> at, bool frame_per_step, bool frames_player,
             const render::VideoSettings& video, bool quiet) {
+  PythonStop stop;  // first: a Ctrl-C from here on stops the call, and leaves nothing
   forget_input_files();  // each call is a run of its own
   scenes::RenderRequest request;
   request.scene = scenes::load_scene(scene);
-  for (const auto& [key, value] : settings) scenes::apply_setting(request.scene, {key, value, "vibra.render"});
+  for (const auto& [key, value] : settings) {
+    render::throw_if_stop_requested();  // thousands of notes are read one by one
+    scenes::apply_setting(request.scene, {key, value, "vibra.render"});
+  }
   if (frame_per_step) request.scene.frame_per_step = true;
   request.output = output;
   // The same table of ranges as the command line's options (-1 and 0: the defaults).
@@ -31,7 +35,6 @@ void render(const std::string& scene, const std::vector<std::pair<std::string, s
   request.quiet = quiet;
   request.video = video;
   py::gil_scoped_release release;
-  render::ScopedStopHandlers stop_handlers;
   scenes::run_render(request);
 }
 }  // namespace

@@ -6,7 +6,7 @@ import html
 
 import numpy as np
 
-from . import _vibra
+from ._native import native
 from ._keys import assignments, comma_list, size_text, value_text
 
 
@@ -85,33 +85,33 @@ def convergence(model="undamped", *, levels=None, out=None, size="1280x720", **k
     the last two rates agree, which `conclusion` says), against the exact
     solution (undamped, or two-body's circular orbit). Model keys as keywords;
     dt (or steps_per_period) is the first level's."""
-    return _tables(_vibra.convergence(model, assignments(keys), levels, _figure(out), size_text(size)))
+    return _tables(native("convergence")(model, assignments(keys), levels, _figure(out), size_text(size)))
 
 
 def energy(*, schemes=None, T=None, dt=None, out=None, size="1280x720"):
     """The chapter's energy-error table: max |e_E|/E(0) per scheme, T and dt
     for u'' + (2 pi)^2 u = 0. Lists as Python lists or "a,b" strings."""
-    return _tables(_vibra.energy(comma_list("schemes", schemes), comma_list("T", T), comma_list("dt", dt),
+    return _tables(native("energy")(comma_list("schemes", schemes), comma_list("T", T), comma_list("dt", dt),
                                  _figure(out), size_text(size)))
 
 
 def empirical(model="undamped", *, dt=None, mesh_extrema=False, out=None, size="1280x720", **keys):
     """Local periods, angular frequencies and amplitudes from the extrema of
     the main quantity, one run per dt (default: the model's dt)."""
-    return _tables(_vibra.empirical(model, assignments(keys), comma_list("dt", dt), mesh_extrema,
+    return _tables(native("empirical")(model, assignments(keys), comma_list("dt", dt), mesh_extrema,
                                     _figure(out), size_text(size)))
 
 
 def frequency(*, w=None, steps_per_period=None, out=None, size="1280x720"):
     """The centered scheme's numerical frequency (1.18) and its series (1.19)."""
-    return _tables(_vibra.frequency(None if w is None else value_text("w", w),
+    return _tables(native("frequency")(None if w is None else value_text("w", w),
                                     comma_list("steps_per_period", steps_per_period), _figure(out), size_text(size)))
 
 
 def amplitude(*, schemes=None, dt=None, periods=None, out=None, size="1280x720"):
     """Amplitude errors of first-order-system solvers on the undamped
     oscillator (Exercise 1.13)."""
-    return _tables(_vibra.amplitude(comma_list("schemes", schemes), None if dt is None else value_text("dt", dt),
+    return _tables(native("amplitude")(comma_list("schemes", schemes), None if dt is None else value_text("dt", dt),
                                     None if periods is None else value_text("periods", periods),
                                     _figure(out), size_text(size)))
 
@@ -120,5 +120,5 @@ def orbit(*, scheme=None, steps_per_orbit=None, orbits=None, long=False, out=Non
     """Position error and CPU time of two-body's circular orbit (Exercise 1.28).
     long=True adds PEFRL over 100000 orbits with the fitted error growth: a
     second Table (then a tuple of two is returned)."""
-    return _tables(_vibra.orbit(scheme, comma_list("steps_per_orbit", steps_per_orbit), orbits, long,
+    return _tables(native("orbit")(scheme, comma_list("steps_per_orbit", steps_per_orbit), orbits, long,
                                 _figure(out), size_text(size)))

@@ -1,6 +1,6 @@
 """vibra.ascii_lines: the classic line-by-line ASCII plot of a run."""
 
-from . import _vibra
+from ._native import native
 from ._keys import assignments
 
 
@@ -12,6 +12,6 @@ def ascii_lines(model, *, width=68, symbols="*o+x@", ymin=None, ymax=None, exact
     runs until you stop iterating). columns=("theta", "S") picks the series."""
     if isinstance(columns, str):
         columns = columns.split(",")
-    return _vibra.AsciiLines(model, assignments(keys), width, symbols,
+    return native("AsciiLines", shown="ascii_lines")(model, assignments(keys), width, symbols,
                              None if ymin is None else float(ymin), None if ymax is None else float(ymax),
                              exact, counter, list(columns), legend)

@@ -6,7 +6,7 @@ import html
 import os
 from pathlib import Path
 
-from . import _vibra
+from ._native import native, path_text
 from ._keys import assignments, comparison_text, pacing_texts, size_text, value_text
 
 # Videos up to this size are embedded in the notebook as a data URI; larger
@@ -101,6 +101,7 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
     legend); notes=["2-4: drag takes energy out @theta"] adds callouts, as
     --title, --equation and --note do. Returns a Video or an Image.
     """
+    scene = path_text("render", "scene", scene)
     settings = []
     for key, value in (("size", size), ("fps", fps), ("layout", layout), ("speed", speed),
                        ("window", window), ("window_mode", window_mode), ("compare", comparison_text(compare))):
@@ -119,9 +120,9 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
     settings += [tuple(a.split("=", 1)) for a in assignments(keys)]
     if out is None:
         out = Path(scene).stem + (".png" if at is not None else ".mp4")
-    out = os.fspath(out)
-    _vibra.render(scene, settings, out, None if at is None else float(at), frame_per_step, frames_player,
-                  codec, quality, crf, preset, threads, transparent, quiet)
+    out = path_text("render", "out", out)
+    native("render", output="out")(scene, settings, out, None if at is None else float(at), frame_per_step,
+                                   frames_player, codec, quality, crf, preset, threads, transparent, quiet)
     suffix = Path(out).suffix.lower()
     if at is not None:
         return Image(out)
@@ -138,11 +139,11 @@ def lecture(storyboard, output=None, *, shot=None, codec="", quality="medium", c
     or "page.html" (a page with a chapter list; returned as a Path). shot=N
     renders shot N alone. Returns a Video.
     """
-    storyboard = os.fspath(storyboard)
+    storyboard = path_text("lecture", "storyboard", storyboard)
     if output is None:
         output = Path(storyboard).stem + ".mp4"
-    output = os.fspath(output)
-    _vibra.lecture(storyboard, output, shot, codec, quality, crf, preset, threads, force, quiet)
+    output = path_text("lecture", "output", output)
+    native("lecture")(storyboard, output, shot, codec, quality, crf, preset, threads, force, quiet)
     if Path(output).suffix.lower() in VIDEO_TYPES:
         return Video(output)
     return Path(output)

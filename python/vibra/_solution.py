@@ -4,6 +4,7 @@ view the memory the C++ solver filled (no copy)."""
 import numpy as np
 
 from . import _vibra
+from ._native import native
 from ._keys import assignments
 
 
@@ -52,7 +53,7 @@ def solve(model, *, every=1, **keys):
     as keywords, as `vibra solve MODEL --set KEY=VALUE` does: numbers or
     strings (Theta=40, Theta="0.7rad", s="sin(u)", scheme="rk4", T=20).
     Keeps every `every`-th step and the last. Returns a Solution."""
-    columns, table, info = _vibra.solve(model, assignments(keys), every)
+    columns, table, info = native("solve")(model, assignments(keys), every)
     return Solution(columns, table, info)
 
 
@@ -60,9 +61,10 @@ def stream(model, *, chunk=65536, every=1, **keys):
     """Like solve, for runs of any length (T=inf too): yields Solutions of up
     to `chunk` rows in turn, in constant memory. Ctrl-C (a notebook's stop
     button) interrupts it between two looks at the signal, 65536 steps apart."""
-    run = _vibra.Stream(model, assignments(keys), every)
+    run = native("Stream", shown="stream")(model, assignments(keys), every)
     columns, info = run.columns, run.info
-    while (table := run.next_chunk(chunk)) is not None:
+    next_chunk = native("next_chunk", run, "stream", rows="chunk")
+    while (table := next_chunk(chunk)) is not None:
         yield Solution(columns, table, info)
 
 

@@ -11,6 +11,7 @@ extern "C" {
 #include <optional>
 
 #include "render/encode/av_error.hpp"
+#include "render/output/stop_signal.hpp"
 #include "render/encode/remux_files.hpp"
 #include "render/output/output_error.hpp"
 #include "render/output/output_path.hpp"
@@ -189,7 +190,7 @@ void join_clips(const std::vector<ClipFile>& files, const fs::path& output, int 
       packet->stream_index = video->index;
       packet->pos = -1;
       out.check(av_interleaved_write_frame(out.format, packet.get()), "writing a frame");
-      ++frames;
+      if ((++frames & 0xff) == 0) throw_if_stop_requested();
     }
     if (frames != expected)
       refuse(clip.path, "it holds " + std::to_string(frames) + " frames, not the " + std::to_string(expected) +

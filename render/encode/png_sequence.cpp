@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -10,6 +11,7 @@
 
 #include "render/output/created_directory.hpp"
 #include "render/output/output_error.hpp"
+#include "render/output/stop_signal.hpp"
 #include "render/output/temporary_file.hpp"
 
 namespace fs = std::filesystem;
@@ -60,6 +62,18 @@ fs::path FramePattern::name(long long index) const {
   return directory / (prefix + number + suffix);
 }
 
+std::optional<long long> FramePattern::index_of(const std::string& file_name, bool any_digits) const {
+  if (file_name.size() <= prefix.size() + suffix.size() || !file_name.starts_with(prefix) || !file_name.ends_with(suffix))
+    return std::nullopt;
+  const std::string number = file_name.substr(prefix.size(), file_name.size() - prefix.size() - suffix.size());
+  if (number.size() > kMaxDigits + 1 || !std::all_of(number.begin(), number.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return std::nullopt;
+  long long index = 0;
+  if (std::from_chars(number.data(), number.data() + number.size(), index).ec != std::errc()) return std::nullopt;
+  if (!any_digits && name(index).filename() != file_name) return std::nullopt;  // another number of digits
+  return index;
+}
+
 FramePattern parse_frame_pattern(const std::string& pattern, long long frame_count) {
   FramePattern p;
   const size_t percent = pattern.find('%');
@@ -94,14 +108,12 @@ FramePattern parse_frame_pattern(const std::string& pattern, long long frame_cou
 long long remove_earlier_frames(const FramePattern& p, long long count) {
   long long removed = 0;
   std::error_code ec;
+  long long seen = 0;
   for (const auto& entry : fs::directory_iterator(p.directory, ec)) {
-    const std::string name = entry.path().filename().string();
-    if (name.size() <= p.prefix.size() + p.suffix.size() || !name.starts_with(p.prefix) || !name.ends_with(p.suffix))
-      continue;
-    const std::string number = name.substr(p.prefix.size(), name.size() - p.prefix.size() - p.suffix.size());
-    if (number.size() > kMaxDigits + 1 || !std::all_of(number.begin(), number.end(), [](char c) { return c >= '0' && c <= '9'; }))
-      continue;
-    const bool ours = std::stoll(number) < count && entry.path().filename() == p.name(std::stoll(number)).filename();
+    if ((++seen & 0xff) == 0) throw_if_stop_requested();
+    const std::optional<long long> number = p.index_of(entry.path().filename().string(), true);
+    if (!number) continue;
+    const bool ours = *number < count && p.index_of(entry.path().filename().string(), false);
     std::error_code ignored;
     if (!ours && entry.is_regular_file(ignored) && fs::remove(entry.path(), ignored)) ++removed;
   }

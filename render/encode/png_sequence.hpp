@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -21,6 +22,9 @@ struct FramePattern {
   int digits = 4;
   /// E.g. "frames/tmp_0042.png"; an index wider than `digits` is written in full.
   std::filesystem::path name(long long index) const;
+  /// The frame number a file name in `directory` stands for, if the pattern
+  /// names it (with `any_digits`, also when its number has another width).
+  std::optional<long long> index_of(const std::string& file_name, bool any_digits = false) const;
 };
 
 /// After a whole render of `count` frames has replaced its set: removes the

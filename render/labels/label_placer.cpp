@@ -7,6 +7,7 @@
 #include "render/draw/shapes.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "render/labels/occupancy_grid.hpp"
+#include "render/output/stop_signal.hpp"
 #include "render/typeset/formula_draw.hpp"
 
 namespace vibra::render {
@@ -139,6 +140,7 @@ std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelReq
   LabelMemory spots;
   std::map<std::string, int> seen;  // occurrences of each text so far
   for (const LabelRequest& request : requests) {
+    throw_if_stop_requested();  // each label tries every spot against those placed: the count is the input's
     const std::string key = request.markup + "#" + std::to_string(seen[request.markup]++);
     const Point size = label_size(canvas, request);
     const double n = request.direction.norm();

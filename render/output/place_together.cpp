@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "render/output/output_error.hpp"
+#include "render/output/stop_signal.hpp"
 
 namespace fs = std::filesystem;
 
@@ -62,6 +63,7 @@ void undo(const Placement& p, Placed how) noexcept {
 }  // namespace
 
 void place_together(const std::vector<Placement>& outputs) {
+  throw_if_stop_requested();  // before the first: a run asked to stop places nothing
   std::vector<Placed> done;
   for (const Placement& p : outputs) {
     try {

@@ -15,6 +15,9 @@
 
 #include "render/output/output_error.hpp"
 #include "render/output/output_path.hpp"
+#include "render/output/stop_signal.hpp"
+#include "render/output/ownership_manifest.hpp"
+#include "render/output/temporary_claim.hpp"
 
 namespace fs = std::filesystem;
 
@@ -44,6 +47,16 @@ const std::string& host_name() {
 }
 }  // namespace
 
+std::string said_of_output(std::string message, const std::string& output) {
+  for (size_t from = 0, at; (at = message.find(kTag, from)) != std::string::npos;) {
+    const size_t open = message.rfind('\'', at), close = message.find('\'', at);
+    if (open == std::string::npos || close == std::string::npos) break;
+    message.replace(open, close + 1 - open, "'" + output + "'");
+    from = open + output.size() + 2;  // past the name given, which may hold the tag itself
+  }
+  return message;
+}
+
 void require_writable_directory(const fs::path& dir) {
   std::error_code ec;
   auto status = fs::status(dir, ec);
@@ -66,7 +79,8 @@ static void remove_stale_once(const fs::path& dir) {
     if (!seen.insert(ec ? dir : key).second) return;
   }
   for (const fs::path& stale : TemporaryFile::stale_in(dir)) {
-    if (fs::remove_all(stale, ec) > 0)
+    // Only what vibra can prove it wrote: a name is no proof (temporary_claim.hpp).
+    if (provably_vibras_temporary(stale) && fs::remove_all(stale, ec) > 0)
       std::fprintf(stderr, "vibra: removed %s, a temporary left by a run that was killed\n", stale.c_str());
   }
 }
@@ -87,6 +101,7 @@ TemporaryFile::~TemporaryFile() {
 }
 
 void TemporaryFile::commit() {
+  throw_if_stop_requested();  // a run asked to stop keeps nothing, however far it got
   std::error_code ec;
   fs::rename(temp_, final_, ec);
   if (ec) {
@@ -107,10 +122,18 @@ TemporaryDirectory::TemporaryDirectory(const fs::path& location, const std::stri
     : parents_(location), location_(location.empty() ? fs::path(".") : location) {
   path_ = temporary_name(location_, name);
   std::error_code ec;
-  fs::remove_all(path_, ec);  // this process's own, from an earlier output of the same name
+  // This process's own, from an earlier output of the same name; never anything it cannot prove its own.
+  if (fs::exists(fs::symlink_status(path_, ec)) && provably_vibras_temporary(path_)) fs::remove_all(path_, ec);
   if (!fs::create_directory(path_, ec))
-    throw OutputError("cannot create the folder '" + path_.string() + "': " + ec.message() +
+    throw OutputError("cannot create the folder '" + path_.string() + "': " + (ec ? ec.message() : "it exists") +
                       ": choose another output path");
+  write_claim(path_);
+}
+
+void TemporaryDirectory::seal() {
+  std::error_code ec;
+  fs::remove(path_ / kClaimName, ec);
+  write_manifest(path_);
 }
 
 TemporaryDirectory::~TemporaryDirectory() {
@@ -120,6 +143,8 @@ TemporaryDirectory::~TemporaryDirectory() {
 }
 
 void TemporaryDirectory::replace(const fs::path& final_folder) {
+  throw_if_stop_requested();  // a run asked to stop keeps nothing, however far it got
+  seal();
   std::error_code ec;
   const bool earlier = fs::exists(fs::symlink_status(final_folder, ec));
   // Exchanged, the temporary name holds the earlier output, removed below.
@@ -144,7 +169,9 @@ void TemporaryDirectory::replace(const fs::path& final_folder) {
 }
 
 void TemporaryDirectory::move_files_into_location() {
+  throw_if_stop_requested();  // before the first move: the set is replaced whole, or not at all
   std::error_code ec;
+  fs::remove(path_ / kClaimName, ec);  // the folder's, not an output
   for (const auto& entry : fs::directory_iterator(path_, ec)) {
     const fs::path to = location_ / entry.path().filename();
     fs::rename(entry.path(), to, ec);

@@ -1,5 +1,6 @@
 #pragma once
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "render/output/created_directory.hpp"
@@ -15,7 +16,8 @@ namespace vibra::render {
 /// unless the file is committed.
 /// Temporary names look like `.NAME.vibra-tmp-HOST-PID` so a killed run's
 /// leftovers are recognisable; the first TemporaryFile in a directory removes
-/// (and reports on stderr) those of this host whose process is gone. Other
+/// (and reports on stderr) those of this host whose process is gone and that
+/// are provably vibra's own (temporary_claim.hpp): a name alone is no proof. Other
 /// hosts' temporaries are left alone: on a shared disk they may be live. The
 /// destructor removes an uncommitted temporary.
 class TemporaryFile {
@@ -60,7 +62,11 @@ class TemporaryDirectory {
   ~TemporaryDirectory();
 
   const std::filesystem::path& path() const { return path_; }
-  /// Puts the folder in place of `final_folder`, replacing what is there (an
+  /// Lists what the folder holds in its manifest, vibra's proof that it
+  /// wrote them (ownership_manifest.hpp), in place of the claim it had while
+  /// being filled (temporary_claim.hpp). Throws OutputError.
+  void seal();
+  /// Seals the folder and puts it in place of `final_folder`, replacing what is there (an
   /// atomic exchange where the file system has one), and removes the old.
   void replace(const std::filesystem::path& final_folder);
   /// Moves each file into `location`, over files of the same name, then
@@ -72,6 +78,11 @@ class TemporaryDirectory {
   std::filesystem::path location_, path_;
   bool done_ = false;
 };
+
+/// `message` with each quoted path of a temporary ('...vibra-tmp-...')
+/// replaced by `output`, the name the user gave: a failure while an output
+/// is made (a full disk) names what the user asked for, not vibra's inside.
+std::string said_of_output(std::string message, const std::string& output);
 
 /// Throws OutputError unless `dir` is an existing, writable directory.
 void require_writable_directory(const std::filesystem::path& dir);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -12,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "core/input_files.hpp"
+#include "scenes/note_room.hpp"
 #include "core/quoted_value.hpp"
 #include "core/shown_path.hpp"
 #include "render/draw/canvas.hpp"
@@ -153,6 +155,7 @@ PlannedShot plan_scene(const Storyboard& board, const Shot& shot) {
       throw UsageError(text);
     }
   }
+  refuse_crowded_notes(notes, p.scene.width, p.scene.height);
   p.cues = note_cues(notes, clock, map, double(p.frames) / board.fps);
   return p;
 }
@@ -287,7 +290,8 @@ void lay_out(const std::vector<const PlannedShot*>& shots, double fps, std::vect
 }
 }  // namespace
 
-void run_lecture(const LectureRequest& r) {
+namespace {
+void make_lecture(const LectureRequest& r) {
   const std::string ext = lower_extension(r.output);
   if (ext != ".mp4" && ext != ".webm" && ext != ".html")
     throw UsageError("-o " + quoted_value(r.output, 80) + ": a lecture is written as .mp4, .webm or .html (a page)");
@@ -345,7 +349,7 @@ void run_lecture(const LectureRequest& r) {
   const std::string stem = fs::path(r.output).stem().string();
   const fs::path companions = page ? companion_folder(r.output) : fs::path();
   const fs::path vtt = page ? fs::path() : final_video.parent_path() / (stem + ".vtt");
-  if (page) check_companion_folder(companions, stem, r.force);
+  if (page) check_companion_folder(companions, r.force);
   else check_subtitles_file(vtt, r.force);
 
   std::vector<render::VideoChapter> chapters;
@@ -379,6 +383,10 @@ void run_lecture(const LectureRequest& r) {
   std::future<std::unique_ptr<PreparedRender>> next_scene;
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     const PlannedShot* p = chosen[i];
+    // Waiting for the helper, this thread still looks at the stop flag: only it
+    // sees a stop the Python module polls for (render/output/stop_signal.hpp).
+    while (next_scene.valid() && next_scene.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready)
+      render::throw_if_stop_requested();
     std::unique_ptr<PreparedRender> prepared = next_scene.valid() ? next_scene.get() : nullptr;
     if (kept[i]) {
       end_row();
@@ -447,11 +455,23 @@ void run_lecture(const LectureRequest& r) {
                    {"size", std::to_string(board.width) + "x" + std::to_string(board.height)}};
   lecture.command_line = r.command_line;
   render::write_text(page_file, render::lecture_page_html(lecture));
+  staged.seal();
+  check_companion_folder(companions, r.force);  // again: the user may have put a file there meanwhile
   render::place_together({{staged.path(), companions}, {page_file.path(), page_file.final_path()}});
   if (!r.quiet)
     std::fprintf(stderr, "vibra: wrote %s and %s (%zu chapters, %lld frames, %.1f s)\n",
                  one_line_message(target.shown(), 4096).c_str(), one_line_message(companions.string(), 4096).c_str(),
                  chapters.size(), frames, seconds);
+}
+
+}  // namespace
+
+void run_lecture(const LectureRequest& r) {
+  try {
+    make_lecture(r);
+  } catch (const render::OutputError& e) {
+    throw render::OutputError(render::said_of_output(e.what(), r.output));  // a full disk names OUT, not a temporary
+  }
 }
 
 }  // namespace vibra::scenes

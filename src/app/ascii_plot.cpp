@@ -6,11 +6,16 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/quoted_value.hpp"
 #include "core/models/model.hpp"
 #include "render/draw/decimal_format.hpp"
 #include "render/output/stop_signal.hpp"
 
 namespace vibra::app {
+
+int auto_plot_width(int terminal_columns) {
+  return std::clamp(terminal_columns - 8, kNarrowestAutoPlot, kWidestAsciiPlot);  // 8: room for the counter
+}
 
 namespace {
 /// The largest |value| of the given columns (and the exact solution, if
@@ -49,6 +54,10 @@ AsciiPlot::AsciiPlot(const AsciiPlotOptions& o) : exact_(o.exact) {
     throw UsageError("model " + o.model + " has no exact solution with these settings: drop --exact "
                      "(undamped has one; pendulum has the small-angle one when alpha=0)");
   const size_t series = columns_.size() + (o.exact ? 1 : 0);
+  // A symbol is one byte of a line: 'é' (two bytes of UTF-8) would be split into invalid text.
+  if (std::any_of(o.symbols.begin(), o.symbols.end(), [](unsigned char c) { return c < 0x20 || c > 0x7e; }))
+    throw UsageError("--symbols '" + quoted_value(o.symbols, 40) + "' holds a character that is not printable ASCII: "
+                     "each series is drawn with one, e.g. --symbols '*o+'");
   if (o.symbols.size() < series)
     throw UsageError("--symbols '" + o.symbols + "' has fewer symbols than the " + std::to_string(series) + " series");
   row_.resize(trajectory_->width());
@@ -74,7 +83,8 @@ AsciiPlot::AsciiPlot(const AsciiPlotOptions& o) : exact_(o.exact) {
     if (!(largest > 0) || !std::isfinite(largest)) largest = 1;
     ymax = 1.2 * largest, ymin = -ymax;
   }
-  if (o.width < 1 || o.width > 10000) throw UsageError("--width must be 1..10000 (or auto)");
+  if (o.width < 1 || o.width > kWidestAsciiPlot)
+    throw UsageError("--width must be 1.." + std::to_string(kWidestAsciiPlot) + " (or auto)");
   try {
     plotter_.emplace(render::AsciiPlotterOptions{ymin, ymax, o.width, o.symbols});
   } catch (const std::invalid_argument& e) {

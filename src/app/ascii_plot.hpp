@@ -10,11 +10,18 @@
 
 namespace vibra::app {
 
+/// The widest plot (columns - 1) and the narrowest --width auto gives.
+inline constexpr int kWidestAsciiPlot = 10000, kNarrowestAutoPlot = 10;
+
+/// --width auto: the terminal's columns less room for the counter, clamped to
+/// what a plot may be (a 65535-column terminal gets the widest plot).
+int auto_plot_width(int terminal_columns);
+
 struct AsciiPlotOptions {
   std::string model;
   std::vector<std::string> settings;  ///< KEY=VALUE for the model (T=inf runs until stopped)
   int width = 68;                     ///< plot columns - 1, 1..10000
-  std::string symbols = "*o+x@";
+  std::string symbols = "*o+x@";     ///< one printable ASCII character per series
   /// Both or neither; default: 1.2 times the known amplitude for one column,
   /// 1.2 times the largest value of every series shown for several.
   std::optional<double> ymin, ymax;

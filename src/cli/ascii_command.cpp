@@ -56,7 +56,7 @@ void run(const AsciiOptions& o) {
   plot_options.model = o.model;
   plot_options.settings = o.settings;
   if (o.width == "auto") {
-    plot_options.width = std::max(10, terminal_columns() - 8);  // room for the counter
+    plot_options.width = app::auto_plot_width(terminal_columns());
   } else {
     try {
       size_t used = 0;

@@ -63,6 +63,9 @@ render::FrameSegment parse_segment_option(const std::string& text, const Environ
   if (!count || (first != "auto" && !whole_number(first)))
     throw UsageError("--segment " + text + " is not K/N, auto or auto/N: e.g. --segment 0/4 renders the first quarter");
   if (first != "auto") return checked(text, *whole_number(first), *count);
+  if (*count < 1 || *count > kMostSegments)  // N first: the fixes below name K/N
+    throw UsageError("--segment " + text + ": N must be 1.." + std::to_string(kMostSegments) +
+                     " (e.g. --segment auto/4 for one of four)");
   auto index = variable(environment, "JOB_COMPLETION_INDEX");
   if (!index) index = variable(environment, "SLURM_ARRAY_TASK_ID");
   if (!index)

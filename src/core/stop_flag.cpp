@@ -11,6 +11,7 @@ namespace {
 std::atomic<int> g_stop_signal{0};
 static_assert(std::atomic<int>::is_always_lock_free, "stored from a signal handler");
 std::atomic<bool> g_quiet{false};
+std::atomic<StopPoll> g_poll{nullptr};
 }  // namespace
 
 void record_stop_signal(int signal) { g_stop_signal.store(signal, std::memory_order_relaxed); }
@@ -21,7 +22,14 @@ int take_stop_signal() { return g_stop_signal.exchange(0); }
 
 void throw_if_stop_requested() {
   if (const int sig = stop_signal()) throw Interrupted{sig};
+  if (const StopPoll poll = g_poll.load(std::memory_order_relaxed))
+    if (const int sig = poll()) {
+      record_stop_signal(sig);  // every other loop, on every thread, stops too
+      throw Interrupted{sig};
+    }
 }
+
+void set_stop_poll(StopPoll poll) { g_poll.store(poll); }
 
 void quiet_long_work(bool quiet) { g_quiet = quiet; }
 

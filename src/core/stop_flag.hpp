@@ -22,8 +22,16 @@ int stop_signal();
 /// The signal recorded, cleared in the same atomic step (0 if none).
 int take_stop_signal();
 
-/// Throws Interrupted if a stop was requested.
+/// Throws Interrupted if a stop was requested, or if the poll set by
+/// set_stop_poll reports a signal (which is then recorded).
 void throw_if_stop_requested();
+
+/// A host that handles signals itself (the Python module: a signal Python
+/// has noted but not yet acted on, or one `_thread.interrupt_main()` sends)
+/// is asked at every look at the flag; the poll returns the signal or 0, and
+/// must be cheap and safe on any thread. nullptr: none (the default).
+using StopPoll = int (*)();
+void set_stop_poll(StopPoll);
 
 /// For long runs of known length: after about 2 s of a run of `total` steps
 /// (1e8 or more; not an endless one), a line on stderr every 10 s or so,

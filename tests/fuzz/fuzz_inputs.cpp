@@ -16,6 +16,7 @@
 #include "scenes/frame_clock.hpp"
 #include "scenes/lecture/storyboard.hpp"
 #include "scenes/note.hpp"
+#include "scenes/note_room.hpp"
 #include "scenes/scene_config.hpp"
 
 namespace vibra::fuzz {
@@ -80,6 +81,10 @@ void storyboard(std::string_view text) {
         build_and_step(find_model(shot.scene.model), parameters);
         // The pacing against a short run, as the lecture plans it.
         if (!shot.scene.pacing.empty()) (void)scenes::FrameClock::paced(100, shot.scene.fps, 1, shot.scene.pacing);
+        // Its notes, and how many a frame shows at once.
+        std::vector<scenes::Note> notes;
+        for (const std::string& spec : shot.scene.notes) notes.push_back(scenes::parse_note(spec));
+        scenes::refuse_crowded_notes(notes, shot.scene.width, shot.scene.height);
       });
     }
   });
