@@ -236,7 +236,7 @@ TEST_CASE(
   CHECK_THAT(read_file(site / "ex1.21-1.txt"), Catch::StartsWith("t,u,v\n0,1,0\n"));
   CHECK(std::regex_search(index, std::regex("<td>r i=last</td><td>2</td><td>2[0-9.]*</td><td>agrees</td>")));
   CHECK_THAT(index, Catch::Contains("(1.124) has a sign error"));
-  CHECK(files_in(site) == std::set<std::string>{".vibra-chapter", "index.html", "figure_1_12.png", "figure_1_21.png",
+  CHECK(files_in(site) == std::set<std::string>{".vibra-manifest", "index.html", "figure_1_12.png", "figure_1_21.png",
                                                 "ex1.12-1.txt", "ex1.21-1.txt"});
   CHECK(files_in(dir.path) == std::set<std::string>{"site"});  // no staging folder left beside it
 }
@@ -281,7 +281,7 @@ TEST_CASE("vibra chapter replaces its own earlier site and refuses a folder hold
   const std::string site = dir / "site";
   REQUIRE(run_vibra("chapter --only ex1.19 -q -o " + site).exit_code == 0);
   REQUIRE(run_vibra("chapter --only fig1.17 -q -o " + site).exit_code == 0);
-  CHECK(files_in(site) == std::set<std::string>{".vibra-chapter", "index.html", "figure_1_17.png"});
+  CHECK(files_in(site) == std::set<std::string>{".vibra-manifest", "index.html", "figure_1_17.png"});
   write_text(site + "/notes.txt", "mine");
   const auto refused = run_vibra("chapter --only ex1.19 -q -o " + site);
   vibra::test::check_refusal(refused, "notes.txt");

@@ -165,7 +165,6 @@ TEST_CASE("every force arrow and its label keep 3:1 against what they sit on, in
   runs.push_back({"spring", {{"colors.background", "#101014", "test"}}});    // a dark hall's background
   for (const Run& run : runs) {
     const vibra::scenes::SceneConfig config = configured(run.scene, run.settings);
-    const auto& c = config.colors;
     long forces_seen = 0;
     for (double moment : {0.0, 0.25, 0.5, 0.75, 1.0}) {
       const vibra::render::Canvas canvas = frame(config, moment);

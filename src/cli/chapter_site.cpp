@@ -21,6 +21,7 @@
 #include "core/quoted_value.hpp"
 #include "core/stop_flag.hpp"
 #include "render/output/output_error.hpp"
+#include "render/output/ownership_manifest.hpp"
 #include "render/output/standard_output.hpp"
 #include "render/output/temporary_file.hpp"
 #include "render/page/html_page.hpp"
@@ -29,10 +30,7 @@ namespace vibra::cli {
 
 namespace fs = std::filesystem;
 
-const char* const kSiteManifest = ".vibra-chapter";
-
 namespace {
-constexpr const char* kManifestFirstLine = "vibra chapter site: the files below are vibra's";
 // Columns that hold timings, not results: masked so a second run is byte for byte the same.
 const std::vector<std::string> kTimingColumns = {"cpu_s"};
 
@@ -53,21 +51,9 @@ std::vector<ChapterJob> plan_jobs(const std::vector<const ChapterItem*>& items,
   return jobs;
 }
 
-/// The names an earlier site's manifest lists, or nothing when `folder` holds none.
-std::optional<std::vector<std::string>> manifest_names(const fs::path& folder) {
-  std::ifstream in(folder / kSiteManifest);
-  std::string line;
-  if (!in || !std::getline(in, line) || line != kManifestFirstLine) return std::nullopt;
-  std::vector<std::string> names;
-  for (size_t count = 0; count < 100000 && std::getline(in, line); ++count) {
-    throw_if_stop_requested();
-    names.push_back(line);
-  }
-  return names;
-}
-
-/// Refuses a SITE that is not vibra's to replace: a file, a link, or a folder
-/// holding anything an earlier `vibra chapter` did not write there.
+/// Refuses a SITE that is not vibra's to replace: a file, a link, or a
+/// folder that is neither empty nor proven vibra's by the manifest of
+/// names, sizes and hashes vibra writes last (render/output/ownership_manifest.hpp).
 void check_site_folder(const fs::path& site) {
   std::error_code ec;
   const fs::file_status status = fs::symlink_status(site, ec);
@@ -75,16 +61,9 @@ void check_site_folder(const fs::path& site) {
   const std::string named = quoted_value(site.string());
   if (!fs::is_directory(status))
     throw UsageError("-o " + named + " is not a folder: give a new folder for the site, e.g. -o site/");
-  const auto listed = manifest_names(site);
-  for (const auto& entry : fs::directory_iterator(site, ec)) {
-    const std::string name = entry.path().filename().string();
-    const bool ours =
-        name == kSiteManifest || (listed && std::find(listed->begin(), listed->end(), name) != listed->end());
-    if (!ours || entry.is_directory())
-      throw UsageError("-o " + named + " holds '" + quoted_value(name) +
-                       "', which vibra chapter did not write: give a new or empty folder, or move it");
-  }
-  if (ec) throw UsageError("cannot read the folder " + named + ": " + ec.message() + ": give another -o");
+  if (fs::is_empty(site, ec) && !ec) return;
+  if (const std::string why = render::why_not_vibras(site); !why.empty())
+    throw UsageError("-o " + named + " " + why + ": give a new or empty folder, or move it");
 }
 
 std::string read_text(const fs::path& file) {
@@ -139,17 +118,10 @@ std::vector<ItemResult> collect_results(const std::vector<const ChapterItem*>& i
   return results;
 }
 
-/// index.html and the manifest naming every file of the site.
+/// index.html; the manifest of the site's files (names, sizes, hashes) is
+/// written last, when the staging folder is sealed.
 void write_index(const std::vector<ItemResult>& results, const std::string& only, const fs::path& folder) {
   render::write_text_file(folder / "index.html", chapter_index_html(results, only));
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(folder, ec)) names.push_back(entry.path().filename().string());
-  if (ec) throw render::OutputError("cannot list '" + folder.string() + "': " + ec.message());
-  std::sort(names.begin(), names.end());
-  std::string manifest = std::string(kManifestFirstLine) + "\n";
-  for (const std::string& name : names) manifest += name + "\n";
-  render::write_text_file(folder / kSiteManifest, manifest);
 }
 
 /// --check: each number that differs on stderr, one line each; whether all agree.
