@@ -1,3 +1,4 @@
+// Text set by Pango: markup laid out, measured and drawn at an anchor, in the labels' font.
 #pragma once
 #include <string>
 
