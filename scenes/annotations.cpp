@@ -1,3 +1,4 @@
+// The marks of the book's figures that --annotate NAME adds, and which command (render or plot) draws each.
 #include "scenes/annotations.hpp"
 
 #include "core/error.hpp"

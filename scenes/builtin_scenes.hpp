@@ -1,3 +1,4 @@
+// The preset scene files of scenes/presets/*.toml compiled into the program, by name.
 #pragma once
 #include <string>
 #include <utility>

@@ -1,3 +1,4 @@
+// FrameClock: the simulated time of each video frame, steady or paced.
 #pragma once
 #include <cmath>
 #include <optional>

@@ -1,3 +1,4 @@
+// The title and equation of motion across the top of a frame, as on a lecture slide.
 #pragma once
 #include <optional>
 #include <string>

@@ -1,3 +1,4 @@
+// Where the parts of a horizontal spring-mass drawing go (Figs 1.17, 1.18): wall, floor and body.
 #pragma once
 #include <algorithm>
 #include <cmath>

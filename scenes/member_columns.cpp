@@ -1,3 +1,4 @@
+// Where a comparison member's columns sit within the comparison's row.
 #include "scenes/member_columns.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Where a comparison member's columns sit within the comparison's row.
 #pragma once
 #include <functional>
 #include <span>

@@ -1,3 +1,4 @@
+// Notes (--note "T0-T1: TEXT", scene key notes): text shown over a time window of a render.
 #pragma once
 #include <string>
 

@@ -1,3 +1,4 @@
+// A render's notes as callouts: near the diagram's body, or in a panel with an arrow to its curve.
 #include "scenes/note_callouts.hpp"
 
 #include <algorithm>

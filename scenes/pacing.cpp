@@ -1,3 +1,4 @@
+// Pacing: slow motion and pauses over ranges of simulated time (scene key pacing).
 #include "scenes/pacing.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Pacing: slow motion and pauses over ranges of simulated time (scene key pacing).
 #pragma once
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// The render job: a scene config and model solved and drawn into frames, a video, a still or a page.
 #include "scenes/render_job.hpp"
 
 #include <cairo.h>

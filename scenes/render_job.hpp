@@ -1,3 +1,4 @@
+// The render job: a scene config and model solved and drawn into frames, a video, a still or a page.
 #pragma once
 #include <filesystem>
 #include <memory>

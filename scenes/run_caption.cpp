@@ -1,3 +1,4 @@
+// The caption of a run: its model, scheme and settings as facts, made safe for Pango markup.
 #include "scenes/run_caption.hpp"
 
 #include <algorithm>

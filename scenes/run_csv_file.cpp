@@ -1,3 +1,4 @@
+// A run's rows as a CSV file beside its video (every K-th step), put in place only by commit().
 #include "scenes/run_csv_file.hpp"
 
 #include "render/output/output_error.hpp"

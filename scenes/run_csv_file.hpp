@@ -1,3 +1,4 @@
+// A run's rows as a CSV file beside its video (every K-th step), put in place only by commit().
 #pragma once
 #include <cstdio>
 #include <filesystem>

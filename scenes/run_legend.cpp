@@ -1,3 +1,4 @@
+// The legend of a comparison's runs, in a column of its own at the right of the diagram.
 #include "scenes/run_legend.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Scene: a picture of a solution at one instant, fed solution rows (record, observe, draw).
 #pragma once
 #include <span>
 

@@ -1,3 +1,4 @@
+// SceneConfig: scene files, --set and flags read into one typed configuration of a render.
 #include "scenes/scene_config.hpp"
 
 #include <toml++/toml.h>

@@ -1,3 +1,4 @@
+// SceneConfig: scene files, --set and flags read into one typed configuration of a render.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// Picks and builds the scene a config asks for: a system's diagram with panels, or plots alone.
 #include "scenes/scene_factory.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Picks and builds the scene a config asks for: a system's diagram with panels, or plots alone.
 #pragma once
 #include <memory>
 #include <string>

@@ -1,3 +1,4 @@
+// SceneStyle: what every scene shares: layout (fbd, fbd+plot, plot, grid), colours, plot window, time read-out.
 #pragma once
 #include <cmath>
 #include <string>

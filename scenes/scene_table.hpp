@@ -1,6 +1,5 @@
+// A TOML table of scene keys read as settings: what scene files hold, and what a storyboard's shots hold beside their own keys.
 #pragma once
-// A TOML table of scene keys read as settings: what scene files hold, and
-// what a storyboard's shots hold beside their own keys.
 #include <toml++/toml.h>
 
 #include <string>

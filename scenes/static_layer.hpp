@@ -1,3 +1,4 @@
+// The parts of a frame that never change, drawn once into an image and painted under each frame.
 #pragma once
 #include <cstdint>
 #include <functional>

@@ -1,3 +1,4 @@
+// SystemScene: a system's diagram alone or beside stacked panels, the scene of every model.
 #pragma once
 #include <memory>
 #include <optional>

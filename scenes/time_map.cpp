@@ -1,3 +1,4 @@
+// TimeMap: video time to simulated time, piecewise linear, for pacing (slow motion and pauses).
 #include "scenes/time_map.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Test helper: a Cairo ARGB32 image read as native-endian pixel words.
 #pragma once
 #include <cstddef>
 #include <cstdint>

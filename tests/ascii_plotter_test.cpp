@@ -1,3 +1,4 @@
+// Tests of the ASCII plotter: ranges, overlapping series, symbols and the y = 0 axis.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -1,5 +1,5 @@
-#pragma once
 // Runs the real `vibra` executable for end-to-end tests.
+#pragma once
 #include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>

@@ -1,3 +1,4 @@
+// Tests of one-decimal formatting: the same text as printf("%.1f"), ties and signs included.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>

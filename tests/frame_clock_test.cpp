@@ -1,3 +1,4 @@
+// Tests of the frame clock: frames at t_k = k speed / fps, and frame counts that overflow refused.
 #include <catch2/catch.hpp>
 
 #include "core/error.hpp"

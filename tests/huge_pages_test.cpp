@@ -1,3 +1,4 @@
+// Tests of HugePageArray: size, alignment and huge-page advice for frame buffers.
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstring>

@@ -1,3 +1,4 @@
+// Tests of Parameters: expressions, angles and choices parsed, and near names suggested.
 #include <catch2/catch.hpp>
 
 #include "core/error.hpp"

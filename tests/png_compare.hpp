@@ -1,5 +1,5 @@
-#pragma once
 // Comparing PNG files by their pixels.
+#pragma once
 #include <cairo.h>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Tests of PNG sequences: frame patterns, padding and the written frames.
 #include <cairo.h>
 
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// Tests of scene configuration: built-in scenes, model names as scenes, windows and keys.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>

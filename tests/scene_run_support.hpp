@@ -1,6 +1,5 @@
+// A scene fed as the render job feeds it, for tests that look at the frame of a given moment without writing files.
 #pragma once
-// A scene fed as the render job feeds it, for tests that look at the frame
-// of a given moment without writing files.
 #include <memory>
 #include <vector>
 

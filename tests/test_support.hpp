@@ -1,3 +1,4 @@
+// Test helpers: a model's trajectory from KEY=VALUE settings, its rows, and Hermite values computed independently.
 #pragma once
 #include <Eigen/Dense>
 #include <cmath>

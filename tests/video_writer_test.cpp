@@ -1,3 +1,4 @@
+// Tests of VideoWriter: codecs, pixel formats, sizes and timing of the written videos.
 #include <signal.h>
 #include <stdlib.h>
 #include <sys/resource.h>

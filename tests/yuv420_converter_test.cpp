@@ -1,3 +1,4 @@
+// Tests of the YUV 4:2:0 converter: BT.709 values, agreement with swscale, changed blocks only.
 extern "C" {
 #include <libswscale/swscale.h>
 }

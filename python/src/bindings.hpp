@@ -1,6 +1,7 @@
+// The parts of the module vibra._vibra, one file each.
+// The pure-Python package vibra wraps them with keyword arguments and display
+// objects.
 #pragma once
-// The parts of the module vibra._vibra, one file each. The pure-Python
-// package vibra wraps them with keyword arguments and display objects.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>

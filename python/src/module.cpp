@@ -1,3 +1,4 @@
+// The Python extension module vibra._vibra: registers each part of bindings.hpp and the stop flag for Ctrl-C.
 #include "bindings.hpp"
 
 #include "core/stop_flag.hpp"

@@ -1,3 +1,4 @@
+// Labelled marks on a drawing: force arrows and dimension lines.
 #include "render/draw/annotations.hpp"
 
 #include <cmath>

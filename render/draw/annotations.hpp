@@ -1,3 +1,4 @@
+// Labelled marks on a drawing: force arrows and dimension lines.
 #pragma once
 #include <string>
 
@@ -5,8 +6,6 @@
 #include "render/draw/text.hpp"
 
 namespace vibra::render {
-
-// Labelled marks on a drawing: force arrows and dimension lines.
 
 /// Where a force arrow's label goes.
 enum class LabelPlace {

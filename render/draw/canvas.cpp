@@ -1,3 +1,4 @@
+// Canvas: a Cairo surface (image, SVG or PDF) in pixels and world units that records where each stroke lands (damage).
 #include "render/draw/canvas.hpp"
 
 #include <cairo-pdf.h>

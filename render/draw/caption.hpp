@@ -1,3 +1,4 @@
+// A run's caption (facts joined by " · ") broken onto lines and shrunk to fit a width.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// The parts of a circuit schematic, in world units, each drawn between two terminals `from` and `to` on the loop's wire.
 #include "render/draw/circuit_elements.hpp"
 
 #include <algorithm>

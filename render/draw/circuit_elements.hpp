@@ -1,3 +1,6 @@
+// The parts of a circuit schematic, in world units, each drawn between two terminals `from` and `to` on the loop's wire.
+// No physics here: the caller says how large the current arrow and the charge
+// marks are.
 #pragma once
 #include <span>
 #include <string>
@@ -5,10 +8,6 @@
 #include "render/draw/shapes.hpp"
 
 namespace vibra::render {
-
-// The parts of a circuit schematic, in world units, each drawn between two
-// terminals `from` and `to` on the loop's wire. No physics here: the caller
-// says how large the current arrow and the charge marks are.
 
 /// Straight wires through `points`.
 void draw_wire(Canvas&, const WorldView&, std::span<const Point> points, const Stroke&);

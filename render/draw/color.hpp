@@ -1,3 +1,4 @@
+// Colour: RGBA values, parsing "#rrggbb", and a palette that reads well projected (Okabe-Ito).
 #pragma once
 #include <cstddef>
 #include <string>

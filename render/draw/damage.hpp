@@ -1,3 +1,4 @@
+// Damage tracking: the pixel rectangles a frame changed, so the next frame restores its background only there.
 #pragma once
 #include <utility>
 #include <vector>

@@ -1,3 +1,4 @@
+// Writes a number with one decimal exactly as printf("%.1f") would, without printf's cost.
 #include "render/draw/decimal_format.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Writes a number with one decimal exactly as printf("%.1f") would, without printf's cost.
 #pragma once
 
 namespace vibra::render {

@@ -1,3 +1,4 @@
+// A curve (x(s), y(s)) thinned on a grid as it streams in, for paths that are not functions of x (orbits, phase portraits).
 #include "render/draw/decimated_path.hpp"
 
 #include <algorithm>

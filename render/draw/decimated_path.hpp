@@ -1,3 +1,4 @@
+// A curve (x(s), y(s)) thinned on a grid as it streams in, for paths that are not functions of x (orbits, phase portraits).
 #pragma once
 #include <cstdint>
 #include <unordered_set>

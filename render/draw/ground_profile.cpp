@@ -1,3 +1,4 @@
+// The ground under a road profile h(x): the road's line over a hatched band, so the road reads as solid.
 #include "render/draw/ground_profile.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The ground under a road profile h(x): the road's line over a hatched band, so the road reads as solid.
 #pragma once
 #include <cairo.h>
 

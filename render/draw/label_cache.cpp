@@ -1,3 +1,4 @@
+// LabelCache: labels of an image canvas laid out once and kept as images, pasted on later frames.
 #include "render/draw/label_cache.hpp"
 
 namespace vibra::render {

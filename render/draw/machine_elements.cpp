@@ -1,3 +1,4 @@
+// The machine elements of the chapter's drawings (Figs 1.17, 1.18 and section 1.12): springs, dashpots, wheels, boxes, hatched floors and walls, road profiles.
 #include "render/draw/machine_elements.hpp"
 
 #include <algorithm>

@@ -1,3 +1,7 @@
+// The machine elements of the chapter's drawings (Figs 1.17, 1.18 and section 1.12): springs, dashpots, wheels, boxes, hatched floors and walls, road profiles.
+// Drawn in world units through a WorldView, so they stretch and move with the
+// solution; no physics here. The *_points functions are the geometry (pure,
+// tested), the draw_* functions stroke it.
 #pragma once
 #include <span>
 #include <vector>
@@ -5,12 +9,6 @@
 #include "render/draw/shapes.hpp"
 
 namespace vibra::render {
-
-// The machine elements of the chapter's drawings (Figs 1.17, 1.18 and section
-// 1.12): springs, dashpots, wheels, boxes, hatched floors and walls, road
-// profiles. Drawn in world units through a WorldView, so they stretch and
-// move with the solution; no physics here. The *_points functions are the
-// geometry (pure, tested), the draw_* functions stroke it.
 
 /// A spring drawn as a zigzag: straight leads at both ends, then `coils`
 /// full zigzags across a band of `width` (world units). The number of coils

@@ -1,3 +1,4 @@
+// Clips paths that reach far outside the picture before Cairo sees them (its 24.8 fixed point would wrap).
 #include "render/draw/reach_clip.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Clips paths that reach far outside the picture before Cairo sees them (its 24.8 fixed point would wrap).
 #pragma once
 #include <cairo.h>
 

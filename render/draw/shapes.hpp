@@ -1,3 +1,4 @@
+// Basic shapes in world units: strokes, arrows, arcs, circles, polylines, hatched ceilings and the pendulum's pivot.
 #pragma once
 #include <algorithm>
 #include <optional>

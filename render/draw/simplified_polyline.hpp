@@ -1,3 +1,4 @@
+// Polyline simplification in one pass: the points a curve needs to stay within a tolerance of every sample.
 #pragma once
 #include <algorithm>
 #include <cmath>

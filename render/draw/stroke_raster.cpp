@@ -1,3 +1,4 @@
+// A software stroke for plain strokes on image surfaces, pixel-equal to Cairo's own but faster.
 #include "render/draw/stroke_raster.hpp"
 
 #include <algorithm>

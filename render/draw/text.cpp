@@ -1,3 +1,4 @@
+// Text set by Pango: markup laid out, measured and drawn at an anchor, sizes in 720p pixels.
 #include "render/draw/text.hpp"
 
 #include <pango/pangocairo.h>

@@ -1,3 +1,4 @@
+// Text set by Pango: markup laid out, measured and drawn at an anchor, sizes in 720p pixels.
 #pragma once
 #include <string>
 

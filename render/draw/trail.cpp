@@ -1,3 +1,4 @@
+// The fading path a body leaves behind, thinned by distance and bounded in memory and time.
 #include "render/draw/trail.hpp"
 
 #include <algorithm>

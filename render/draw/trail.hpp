@@ -1,3 +1,4 @@
+// The fading path a body leaves behind, thinned by distance and bounded in memory and time.
 #pragma once
 #include <cstddef>
 #include <cstdint>

@@ -1,3 +1,4 @@
+// FFmpeg's text for an error code, for one-line error messages.
 #pragma once
 extern "C" {
 #include <libavutil/error.h>

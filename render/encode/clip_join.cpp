@@ -1,3 +1,4 @@
+// Joins a lecture's clips into one video with chapters and subtitle streams, copying packets without re-encoding.
 #include "render/encode/clip_join.hpp"
 
 extern "C" {

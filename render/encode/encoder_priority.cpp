@@ -1,3 +1,4 @@
+// Lowers the encoder threads' priority so the drawing thread keeps its core.
 #include "render/encode/encoder_priority.hpp"
 
 #include <sys/resource.h>

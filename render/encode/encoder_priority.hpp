@@ -1,3 +1,4 @@
+// Lowers the encoder threads' priority so the drawing thread keeps its core.
 #pragma once
 #include <sys/types.h>
 

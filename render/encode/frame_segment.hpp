@@ -1,3 +1,4 @@
+// Segments of a render: which frames segment i of n holds, and the tag a segment file carries.
 #pragma once
 #include <cstdint>
 #include <optional>

@@ -1,3 +1,4 @@
+// FrameSink: where rendered frames go (a PNG sequence or a video file), and the video settings of the command line.
 #include "render/encode/frame_sink.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Frame buffers backed by transparent huge pages (HugePageArray), so a frame faults in a few times, not thousands.
 #include "render/encode/huge_pages.hpp"
 
 #include <sys/mman.h>

@@ -1,3 +1,4 @@
+// Encodes one frame as PNG: scanlines filtered and compressed with libdeflate.
 #include "render/encode/png_encoder.hpp"
 
 #include <libdeflate.h>

@@ -1,3 +1,4 @@
+// Encodes one frame as PNG: scanlines filtered and compressed with libdeflate.
 #pragma once
 #include <cstddef>
 #include <cstdint>

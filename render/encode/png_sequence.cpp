@@ -1,3 +1,4 @@
+// PngSequenceWriter: frames as numbered PNG files, compressed on worker threads.
 #include "render/encode/png_sequence.hpp"
 
 #include <algorithm>

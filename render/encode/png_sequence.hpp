@@ -1,3 +1,4 @@
+// PngSequenceWriter: frames as numbered PNG files, compressed on worker threads.
 #pragma once
 #include <condition_variable>
 #include <cstdint>

@@ -1,3 +1,4 @@
+// The files of a remux (packets copied without decoding): an input opened with libavformat, an output written under a temporary name, and the check that two video streams can follow each other in one file.
 #include "render/encode/remux_files.hpp"
 
 #include <cstring>

@@ -1,7 +1,5 @@
+// The files of a remux (packets copied without decoding): an input opened with libavformat, an output written under a temporary name, and the check that two video streams can follow each other in one file.
 #pragma once
-// The files of a remux (packets copied without decoding): an input opened
-// with libavformat, an output written under a temporary name, and the check
-// that two video streams can follow each other in one file.
 extern "C" {
 #include <libavformat/avformat.h>
 }

@@ -1,3 +1,4 @@
+// Subtitle cues and the WebVTT files vibra writes of them.
 #include "render/encode/subtitle_cue.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Subtitle cues and the WebVTT files vibra writes of them.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// vibra concat: joins a render's segment videos into one, in order, without re-encoding.
 #pragma once
 #include <filesystem>
 #include <optional>

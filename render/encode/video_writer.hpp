@@ -1,3 +1,4 @@
+// VideoWriter: frames converted to YUV and encoded by libavcodec on its own thread into a libavformat container.
 #pragma once
 #include <cstdint>
 #include <filesystem>

@@ -1,3 +1,4 @@
+// Writes frames to standard output as YUV4MPEG2 (y4m), for pipes into other encoders.
 #include "render/encode/y4m_stream.hpp"
 
 #include <cstring>

@@ -1,3 +1,4 @@
+// Writes frames to standard output as YUV4MPEG2 (y4m), for pipes into other encoders.
 #pragma once
 #include <cstdint>
 #include <string>

@@ -1,3 +1,4 @@
+// BGRA to YUV 4:2:0 (BT.709, limited range), converting only the blocks that changed.
 #pragma once
 #include <cstdint>
 #include <vector>

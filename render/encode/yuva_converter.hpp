@@ -1,3 +1,4 @@
+// BGRA to YUVA 4:2:0 (BT.709) for videos with an alpha plane (--transparent).
 #pragma once
 #include <cstdint>
 

@@ -1,3 +1,4 @@
+// DrawingRecord: the outlines a drawing leaves and the labels it asks for, kept for the label placer.
 #pragma once
 #include <vector>
 

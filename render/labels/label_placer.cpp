@@ -1,3 +1,4 @@
+// The label placer: puts each requested label where it covers nothing, and keeps it still between frames.
 #include "render/labels/label_placer.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// LabelRequest: a label a drawing asks for, its text and the anchor it belongs to.
 #pragma once
 #include <memory>
 #include <string>

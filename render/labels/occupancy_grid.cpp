@@ -1,3 +1,4 @@
+// OccupancyGrid: a drawing's outline rasterized into cells with a summed-area table, to test whether a box is free.
 #include "render/labels/occupancy_grid.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Outline: the shape of a recorded piece of a drawing and what it is, for the placer and for checks.
 #include "render/labels/outline.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Outline: the shape of a recorded piece of a drawing and what it is, for the placer and for checks.
 #pragma once
 #include <cairo.h>
 

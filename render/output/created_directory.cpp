@@ -1,3 +1,4 @@
+// Creates the directory an output needs (with missing parents), and removes it again if the run fails.
 #include "render/output/created_directory.hpp"
 
 #include <system_error>

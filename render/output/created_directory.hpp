@@ -1,3 +1,4 @@
+// Creates the directory an output needs (with missing parents), and removes it again if the run fails.
 #pragma once
 #include <filesystem>
 #include <vector>

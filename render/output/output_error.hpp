@@ -1,3 +1,4 @@
+// OutputError: a failure writing an output (unwritable path, disk full, missing encoder).
 #pragma once
 #include <stdexcept>
 #include <string>

@@ -1,3 +1,4 @@
+// The one resolver of output paths: links, standard streams, devices, folders and the run's own inputs.
 #include "render/output/output_path.hpp"
 
 #include <unistd.h>

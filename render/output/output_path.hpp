@@ -1,3 +1,4 @@
+// The one resolver of output paths: links, standard streams, devices, folders and the run's own inputs.
 #pragma once
 #include <filesystem>
 #include <string>

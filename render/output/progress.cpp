@@ -1,3 +1,4 @@
+// Progress of a long render on stderr: a bar on a terminal, a plain line every few seconds otherwise.
 #include "render/output/progress.hpp"
 
 #include <unistd.h>

@@ -1,3 +1,4 @@
+// Progress of a long render on stderr: a bar on a terminal, a plain line every few seconds otherwise.
 #pragma once
 #include <chrono>
 #include <cstdio>

@@ -1,3 +1,4 @@
+// Checked writes to standard output: every byte vibra prints goes through here, failures reported once at exit.
 #include "render/output/standard_output.hpp"
 
 extern "C" {

@@ -1,3 +1,4 @@
+// Checked writes to standard output: every byte vibra prints goes through here, failures reported once at exit.
 #pragma once
 #include <cstddef>
 #include <string>

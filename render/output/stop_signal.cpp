@@ -1,3 +1,4 @@
+// Cooperative cancellation for long work: SIGINT/SIGTERM set a flag that render and output loops poll between frames, so they can stop cleanly, remove their temporary files and exit with 128 + signal.
 #include "render/output/stop_signal.hpp"
 
 #include <csignal>

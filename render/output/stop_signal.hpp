@@ -1,7 +1,5 @@
+// Cooperative cancellation for long work: SIGINT/SIGTERM set a flag that render and output loops poll between frames, so they can stop cleanly, remove their temporary files and exit with 128 + signal.
 #pragma once
-// Cooperative cancellation for long work: SIGINT/SIGTERM set a flag that
-// render and output loops poll between frames, so they can stop cleanly,
-// remove their temporary files and exit with 128 + signal.
 
 #include <csignal>
 

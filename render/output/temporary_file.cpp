@@ -1,3 +1,4 @@
+// TemporaryFile and TemporaryDirectory: outputs written under temporary names and put in place only on success.
 #include "render/output/temporary_file.hpp"
 
 #include <fcntl.h>

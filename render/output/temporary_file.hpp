@@ -1,3 +1,4 @@
+// TemporaryFile and TemporaryDirectory: outputs written under temporary names and put in place only on success.
 #pragma once
 #include <filesystem>
 #include <string>

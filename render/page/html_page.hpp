@@ -1,3 +1,4 @@
+// The lecture page: one HTML file with the run's video or frames, its plots, facts and player.
 #pragma once
 #include <filesystem>
 #include <string>

@@ -1,3 +1,4 @@
+// The lecture page's template, script, style and uPlot, compiled into the program at build time.
 #pragma once
 #include <string>
 #include <string_view>

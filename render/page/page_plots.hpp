@@ -1,3 +1,4 @@
+// A lecture page's plots: curves decimated to min/max envelopes and packed into the page.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// Escaping for the lecture page: HTML text, URL paths, JSON inside <script>, base64.
 #include "render/page/web_text.hpp"
 
 #include <cstdio>

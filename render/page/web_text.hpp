@@ -1,3 +1,4 @@
+// Escaping for the lecture page: HTML text, URL paths, JSON inside <script>, base64.
 #pragma once
 #include <cstdint>
 #include <span>

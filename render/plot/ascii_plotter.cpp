@@ -1,3 +1,4 @@
+// The classic line-by-line ASCII plotter: time runs down the page, one line per time step.
 #include "render/plot/ascii_plotter.hpp"
 
 #include <cmath>

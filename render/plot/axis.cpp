@@ -1,3 +1,4 @@
+// Axis: a range and its tick labels, linear or logarithmic.
 #include "render/plot/axis.hpp"
 
 #include <algorithm>

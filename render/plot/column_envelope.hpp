@@ -1,3 +1,4 @@
+// ColumnEnvelope: a whole curve decimated to one min/max cell per pixel column.
 #pragma once
 #include <algorithm>
 #include <optional>

@@ -1,3 +1,4 @@
+// EnvelopeCell: what a curve did inside one pixel column (first, last, smallest and largest sample).
 #pragma once
 #include <cmath>
 

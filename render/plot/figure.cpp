@@ -1,3 +1,4 @@
+// Figure: static panels of curves stacked on one canvas, for vibra plot and vibra analyze.
 #include "render/plot/figure.hpp"
 
 #include <cairo.h>

@@ -1,3 +1,4 @@
+// Figure: static panels of curves stacked on one canvas, for vibra plot and vibra analyze.
 #pragma once
 #include <filesystem>
 #include <memory>

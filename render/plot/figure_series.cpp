@@ -1,3 +1,4 @@
+// A figure's series (points, curve or path, decimated as they stream) and how each is drawn.
 #include "render/plot/figure_series.hpp"
 
 namespace vibra::render {

@@ -1,3 +1,4 @@
+// PlotPanel: a moving time plot with axes, ticks and curves drawn through their pixel-column envelopes.
 #pragma once
 #include <functional>
 #include <string>

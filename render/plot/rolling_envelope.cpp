@@ -1,3 +1,4 @@
+// RollingEnvelope: the latest stretch of a curve in one min/max cell per pixel column, in a ring of bounded size.
 #include "render/plot/rolling_envelope.hpp"
 
 #include <algorithm>

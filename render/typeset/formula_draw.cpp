@@ -1,3 +1,4 @@
+// Draws a typeset formula's boxes on a canvas, with a halo in the background colour.
 #include "render/typeset/formula_draw.hpp"
 
 #include <pango/pangocairo.h>

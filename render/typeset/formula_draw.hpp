@@ -1,3 +1,4 @@
+// Draws a typeset formula's boxes on a canvas, with a halo in the background colour.
 #pragma once
 #include <string>
 

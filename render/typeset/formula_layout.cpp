@@ -1,3 +1,4 @@
+// Lays out a parsed formula into boxes, with TeX's spacing, sizes and fractions.
 #include "render/typeset/formula_layout.hpp"
 
 #include <pango/pangocairo.h>

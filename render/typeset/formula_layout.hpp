@@ -1,3 +1,4 @@
+// Lays out a parsed formula into boxes, with TeX's spacing, sizes and fractions.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// Parses the LaTeX subset vibra typesets ($...$ in titles, notes and equations) into elements.
 #include "render/typeset/formula_parser.hpp"
 
 #include <algorithm>

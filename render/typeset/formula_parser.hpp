@@ -1,3 +1,4 @@
+// Parses the LaTeX subset vibra typesets ($...$ in titles, notes and equations) into elements.
 #pragma once
 #include <cstddef>
 #include <string>

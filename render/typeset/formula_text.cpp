@@ -1,3 +1,4 @@
+// A parsed formula as plain Unicode text, where no typesetting is possible (subtitles, chapter titles).
 #include "render/typeset/formula_text.hpp"
 
 #include <map>

@@ -1,3 +1,4 @@
+// A parsed formula as plain Unicode text, where no typesetting is possible (subtitles, chapter titles).
 #pragma once
 #include <string>
 #include <string_view>

@@ -1,3 +1,4 @@
+// The boxes a typeset formula is made of: glyphs, rules and strokes with their extents.
 #pragma once
 #include <algorithm>
 #include <cmath>

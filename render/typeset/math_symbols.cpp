@@ -1,3 +1,4 @@
+// The typesetter's symbol table: TeX commands, their Unicode characters and atom classes.
 #include "render/typeset/math_symbols.hpp"
 
 #include <array>

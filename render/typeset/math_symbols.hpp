@@ -1,3 +1,4 @@
+// The typesetter's symbol table: TeX commands, their Unicode characters and atom classes.
 #pragma once
 #include <optional>
 #include <string>

@@ -1,3 +1,4 @@
+// The bouncing ball's diagram (section 1.12.9): ground, ball and its velocity arrow.
 #include "scenes/diagrams/bouncing_ball_diagram.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The bumpy road's diagram (section 1.12.8): road, wheel, spring, dashpot and body.
 #include "scenes/diagrams/bumpy_road_diagram.hpp"
 
 #include <algorithm>

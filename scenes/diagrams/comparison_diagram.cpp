@@ -1,3 +1,4 @@
+// A comparison's members in one diagram: the first drawn solid with its forces, the others as ghosts.
 #include "scenes/diagrams/comparison_diagram.hpp"
 
 #include <algorithm>

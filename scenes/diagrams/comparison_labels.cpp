@@ -1,3 +1,4 @@
+// What the pictures of a comparison (`plot --compare`, `render --compare`) call its members, as Pango markup.
 #include "scenes/diagrams/comparison_labels.hpp"
 
 #include <cstdio>

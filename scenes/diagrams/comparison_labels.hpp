@@ -1,3 +1,4 @@
+// What the pictures of a comparison (`plot --compare`, `render --compare`) call its members, as Pango markup.
 #pragma once
 #include <string>
 
@@ -5,9 +6,6 @@
 #include "render/draw/color.hpp"
 
 namespace vibra::scenes {
-
-// What the pictures of a comparison (`plot --compare`, `render --compare`)
-// call its members, as Pango markup.
 
 /// A key as the reader knows it: Δt for dt.
 std::string key_markup(const std::string& key);

@@ -1,3 +1,4 @@
+// Diagram: the interface of every model's drawing, and the forces it draws as arrows.
 #pragma once
 #include <Eigen/Geometry>
 #include <algorithm>

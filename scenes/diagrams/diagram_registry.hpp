@@ -1,3 +1,4 @@
+// The diagram registry: what a diagram is built from, and each diagram found by name.
 #pragma once
 #include <functional>
 #include <memory>

@@ -1,3 +1,4 @@
+// The elastic pendulum's diagram (section 1.12.7): pivot, spring wire, bob and forces.
 #include "scenes/diagrams/elastic_pendulum_diagram.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// The forces' key: each force's colour beside its name ("mg gravity").
 #include "scenes/diagrams/force_key.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// The forces' key: each force's colour beside its name ("mg gravity").
 #pragma once
 #include <string>
 #include <vector>

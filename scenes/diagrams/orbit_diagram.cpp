@@ -1,3 +1,4 @@
+// The two-body orbit's diagram (section 1.12.10): star, planet and trail.
 #include "scenes/diagrams/orbit_diagram.hpp"
 
 #include "render/draw/annotations.hpp"

@@ -1,3 +1,4 @@
+// The two-body orbit's diagram (section 1.12.10): star, planet and trail.
 #pragma once
 #include <array>
 #include <cmath>

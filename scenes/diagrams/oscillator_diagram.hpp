@@ -1,3 +1,4 @@
+// The spring-mass system's diagram (Figs 1.17, 1.18): wall, spring, body on wheels, dashpot and forces.
 #pragma once
 #include <functional>
 #include <optional>

@@ -1,3 +1,4 @@
+// The pendulum's free-body diagram: support, wire, bob, forces and the angle.
 #include "scenes/panels/plot_panels.hpp"
 #include "scenes/diagrams/pendulum_diagram.hpp"
 

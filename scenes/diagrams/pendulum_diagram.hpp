@@ -1,3 +1,4 @@
+// The pendulum's free-body diagram: support, wire, bob, forces and the angle.
 #pragma once
 #include "scenes/diagrams/diagram.hpp"
 #include "scenes/diagrams/force_scale.hpp"

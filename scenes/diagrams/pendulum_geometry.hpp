@@ -1,3 +1,4 @@
+// The pendulum diagram's geometry at one instant, a pure function of the state (forces in units of m g).
 #pragma once
 #include <Eigen/Core>
 

@@ -1,3 +1,4 @@
+// The series RLC circuit's diagram (section 1.12.11): source, resistor, inductor, capacitor, current and charge.
 #include "scenes/diagrams/rlc_diagram.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// The series RLC circuit's diagram (section 1.12.11): source, resistor, inductor, capacitor, current and charge.
 #pragma once
 #include "render/draw/circuit_elements.hpp"
 #include "scenes/diagrams/diagram.hpp"

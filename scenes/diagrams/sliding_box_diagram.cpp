@@ -1,3 +1,4 @@
+// The sliding box's diagram (section 1.12.3): box on a floor, spring to the wall, spring and friction forces.
 #include "scenes/diagrams/sliding_box_diagram.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// The washing machine's diagram (section 1.12.4): a body on springs and a damper, shaken by its drum.
 #include "scenes/diagrams/washing_machine_diagram.hpp"
 
 #include <cmath>

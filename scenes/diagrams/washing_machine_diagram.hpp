@@ -1,3 +1,4 @@
+// The washing machine's diagram (section 1.12.4): a body on springs and a damper, shaken by its drum.
 #pragma once
 #include <optional>
 

@@ -1,3 +1,4 @@
+// The figures of `vibra analyze`, one per experiment of the chapter.
 #include "scenes/figures/analysis_figures.hpp"
 
 #include <algorithm>

@@ -1,3 +1,6 @@
+// The figures of `vibra analyze`, one per experiment of the chapter.
+// Each takes the experiment's numbers and lays them out; none computes physics
+// except the formulas it illustrates (1.18), (1.19).
 #pragma once
 #include <string>
 #include <vector>
@@ -11,10 +14,6 @@
 #include "render/plot/figure.hpp"
 
 namespace vibra::scenes {
-
-// The figures of `vibra analyze`, one per experiment of the chapter. Each
-// takes the experiment's numbers and lays them out; none computes physics
-// except the formulas it illustrates (1.18), (1.19).
 
 /// log-log E against dt, with a reference line of slope = the scheme's order.
 render::Figure convergence_figure(const std::vector<ModelConvergence>&, const std::string& title, int width, int height);

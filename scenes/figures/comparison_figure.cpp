@@ -1,3 +1,4 @@
+// The figure vibra plot --compare draws without --panels: paths or curves against t and the phase plane.
 #include "scenes/figures/comparison_figure.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The figure vibra plot --compare draws without --panels: paths or curves against t and the phase plane.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// The --panels friction figure of the sliding box (Exercise 1.23a): spring force against u and the friction band.
 #include "scenes/figures/friction_panel.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The --panels friction figure of the sliding box (Exercise 1.23a): spring force against u and the friction band.
 #pragma once
 #include <span>
 #include <string>

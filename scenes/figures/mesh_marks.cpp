@@ -1,3 +1,4 @@
+// vibra plot --annotate mesh (Fig 1.12): where a scheme's unknowns live on the time mesh.
 #include "scenes/figures/mesh_marks.hpp"
 
 #include "core/error.hpp"

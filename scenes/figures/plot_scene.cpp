@@ -1,3 +1,4 @@
+// PlotScene: moving plots without a diagram (layouts plot and grid), stacked on one time axis.
 #include "scenes/figures/plot_scene.hpp"
 
 #include "scenes/panels/plot_panels.hpp"

@@ -1,3 +1,4 @@
+// PlotScene: moving plots without a diagram (layouts plot and grid), stacked on one time axis.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// Exercise 1.22's figure: measured steady amplitudes against gamma, one colour per beta.
 #include "scenes/figures/resonance_figure.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The figure of vibra plot: a trajectory streamed once into the named panels, stacked.
 #include "scenes/figures/trajectory_figure.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The figure of vibra plot: a trajectory streamed once into the named panels, stacked.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// The lecture job: a storyboard's shots rendered into one video with chapters and subtitles.
 #include "scenes/lecture/lecture_job.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The lecture job: a storyboard's shots rendered into one video with chapters and subtitles.
 #pragma once
 #include <optional>
 #include <string>

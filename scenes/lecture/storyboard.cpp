@@ -1,3 +1,4 @@
+// Storyboard: a lecture's shots (scenes and title cards) read from a TOML file.
 #include "scenes/lecture/storyboard.hpp"
 
 #include <toml++/toml.h>

@@ -1,3 +1,4 @@
+// Storyboard: a lecture's shots (scenes and title cards) read from a TOML file.
 #pragma once
 #include <optional>
 #include <string>

@@ -1,3 +1,4 @@
+// A lecture's title card: title, text and equation drawn on a frame.
 #include "scenes/lecture/title_card.hpp"
 
 #include <algorithm>

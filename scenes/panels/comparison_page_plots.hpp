@@ -1,3 +1,4 @@
+// A lecture page's plots for a comparison: one collector per member, merged into one set of panels.
 #pragma once
 #include <span>
 #include <vector>

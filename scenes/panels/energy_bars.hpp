@@ -1,3 +1,4 @@
+// Energy bars: kinetic, potential, dissipated energy and the work of external forces at one instant.
 #pragma once
 #include <array>
 #include <span>

@@ -1,3 +1,4 @@
+// Feeds a scene a trajectory's history in time order: every solver step, and the rows between them where needed.
 #include "scenes/panels/history_feed.hpp"
 
 #include <cmath>

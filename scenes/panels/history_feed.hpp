@@ -1,3 +1,4 @@
+// Feeds a scene a trajectory's history in time order: every solver step, and the rows between them where needed.
 #pragma once
 #include <span>
 #include <vector>

@@ -1,3 +1,4 @@
+// Collects a run's samples into the lecture page's plots, with the panels a page shows by default.
 #pragma once
 #include <functional>
 #include <optional>

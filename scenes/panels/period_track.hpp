@@ -1,3 +1,4 @@
+// The period panel's curve: the last period completed by each time, from upward zero crossings.
 #pragma once
 #include <span>
 

@@ -1,3 +1,4 @@
+// PhasePanel: the phase plane of a run, fixed ranges from the pre-pass and a trail.
 #include "scenes/panels/phase_panel.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// PhasePanel: the phase plane of a run, fixed ranges from the pre-pass and a trail.
 #pragma once
 #include <deque>
 #include <functional>

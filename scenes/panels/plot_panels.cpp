@@ -1,3 +1,4 @@
+// What `vibra plot` can draw for a model, shared by the figure of one run and that of a comparison.
 #include "scenes/panels/plot_panels.hpp"
 
 #include <algorithm>

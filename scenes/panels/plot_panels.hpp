@@ -1,3 +1,4 @@
+// What `vibra plot` can draw for a model, shared by the figure of one run and that of a comparison.
 #pragma once
 #include <string>
 #include <vector>
@@ -6,9 +7,6 @@
 #include "render/draw/color.hpp"
 
 namespace vibra::scenes {
-
-// What `vibra plot` can draw for a model, shared by the figure of one run and
-// that of a comparison.
 
 /// Index of the column `name`, or -1.
 int column_index(const TrajectoryInfo&, const std::string& name);

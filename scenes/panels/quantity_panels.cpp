@@ -1,3 +1,4 @@
+// The panels `vibra render --panels` can put beside a diagram: any of the model's columns against t, and `phase`, `energy`, `error`, `period`.
 #include "scenes/panels/quantity_panels.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The panels `vibra render --panels` can put beside a diagram: any of the model's columns against t, and `phase`, `energy`, `error`, `period`.
 #pragma once
 #include <memory>
 #include <string>
@@ -10,9 +11,6 @@
 #include "scenes/panels/series_panel.hpp"
 
 namespace vibra::scenes {
-
-// The panels `vibra render --panels` can put beside a diagram: any of the
-// model's columns against t, and `phase`, `energy`, `error`, `period`.
 
 /// A panel to draw: against time (`curves` and `references`) or the phase
 /// plane (`phase` non-empty). Every curve is a function of one row of the

@@ -1,3 +1,4 @@
+// The rows a figure samples between an adaptive run's steps, so curves stay smooth at pixel resolution.
 #pragma once
 #include <span>
 

@@ -1,3 +1,4 @@
+// ScenePanel: one panel beside a diagram, curves against time or the phase plane.
 #pragma once
 #include <span>
 

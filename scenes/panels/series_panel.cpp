@@ -1,3 +1,4 @@
+// SeriesPanel: curves against time beside a diagram, following a long run (full or moving window).
 #include "scenes/panels/series_panel.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SeriesPanel: curves against time beside a diagram, following a long run (full or moving window).
 #pragma once
 #include <functional>
 #include <optional>

@@ -1,3 +1,4 @@
+// vibra analyze amplitude: empirical amplitudes from the extrema of a run.
 #include "app/experiments.hpp"
 #include "app/list_option.hpp"
 #include "core/analysis/empirical.hpp"

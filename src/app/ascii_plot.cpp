@@ -1,3 +1,4 @@
+// vibra ascii's work: a model's trajectory streamed through the ASCII plotter.
 #include "app/ascii_plot.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// vibra ascii's work: a model's trajectory streamed through the ASCII plotter.
 #pragma once
 #include <memory>
 #include <optional>

@@ -1,3 +1,4 @@
+// vibra analyze bounces: the bouncing ball's impacts and apex heights against the exact ones.
 #include "app/experiments.hpp"
 #include "core/event_trajectory.hpp"
 #include "core/models/model.hpp"

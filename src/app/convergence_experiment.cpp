@@ -1,3 +1,4 @@
+// vibra analyze convergence: errors and rates of a scheme as dt halves, with a verdict on its order.
 #include <cmath>
 #include <cstdio>
 

@@ -1,3 +1,4 @@
+// vibra analyze empirical: periods and amplitudes measured from a run's extrema.
 #include <cmath>
 #include <cstdio>
 

@@ -1,3 +1,4 @@
+// vibra analyze energy: the chapter's energy-error table over schemes and T.
 #include <cmath>
 
 #include "app/experiments.hpp"

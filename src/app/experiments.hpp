@@ -1,3 +1,5 @@
+// The chapter's experiments (`vibra analyze ...`, `vibra.convergence(...)`): each takes its options as the user typed them, checks them (UsageError with the option's name), runs, and returns its tables and its figure.
+// The defaults are the command line's.
 #pragma once
 #include <functional>
 #include <optional>
@@ -8,11 +10,6 @@
 #include "render/plot/figure.hpp"
 
 namespace vibra::app {
-
-// The chapter's experiments (`vibra analyze ...`, `vibra.convergence(...)`):
-// each takes its options as the user typed them, checks them (UsageError with
-// the option's name), runs, and returns its tables and its figure. The
-// defaults are the command line's.
 
 /// A table with the line that says what it holds.
 struct TitledTable {

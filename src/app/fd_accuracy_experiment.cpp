@@ -1,3 +1,4 @@
+// vibra analyze fd-accuracy: how well [DtDt u] approximates u'' (Exercise 1.8).
 #include <cmath>
 
 #include "app/experiments.hpp"

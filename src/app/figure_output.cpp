@@ -1,3 +1,4 @@
+// Writes an experiment's figure to the path the user gave, through a temporary file.
 #include <filesystem>
 
 #include "app/experiments.hpp"

@@ -1,3 +1,4 @@
+// vibra analyze frequency: the centered scheme's numerical frequency (1.18) against w.
 #include <cmath>
 #include <cstdio>
 

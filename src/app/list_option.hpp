@@ -1,3 +1,4 @@
+// Reads a comma-separated list of positive numbers (expressions allowed) for an experiment's option.
 #pragma once
 #include <string>
 #include <vector>

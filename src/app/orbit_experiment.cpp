@@ -1,3 +1,4 @@
+// vibra analyze orbit: the two-body orbit's radius and phase errors over blocks of orbits.
 #include <unistd.h>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// vibra analyze period: the pendulum's measured period against its exact one.
 #include <cmath>
 #include <cstdio>
 

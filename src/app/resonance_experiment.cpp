@@ -1,3 +1,4 @@
+// vibra analyze resonance: steady amplitudes against the forcing frequency (Exercise 1.22).
 #include "app/experiments.hpp"
 #include "app/list_option.hpp"
 #include "core/analysis/resonance.hpp"

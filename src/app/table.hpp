@@ -1,3 +1,4 @@
+// Table: results printed with aligned columns for people or as CSV for programs.
 #pragma once
 #include <string>
 #include <variant>

@@ -1,9 +1,9 @@
+// The experiments of `vibra analyze`, one subcommand each (analyze_*.cpp).
 #pragma once
 #include <CLI/CLI.hpp>
 
 namespace vibra::cli {
 
-// The experiments of `vibra analyze`, one subcommand each (analyze_*.cpp).
 void add_convergence_analysis(CLI::App& analyze);
 void add_energy_analysis(CLI::App& analyze);
 void add_empirical_analysis(CLI::App& analyze);

@@ -1,3 +1,4 @@
+// The options every vibra analyze experiment shares: table aligned or CSV, and an optional figure.
 #pragma once
 #include <CLI/CLI.hpp>
 #include <functional>

@@ -1,3 +1,4 @@
+// Registers vibra analyze: one subcommand per experiment, a misspelt experiment named and corrected.
 #include <memory>
 
 #include "cli/analyses.hpp"

@@ -1,3 +1,4 @@
+// Registers vibra analyze fd-accuracy and its options.
 #include "cli/analyses.hpp"
 #include "cli/analysis_output.hpp"
 

@@ -1,3 +1,4 @@
+// Registers vibra analyze orbit and its options.
 #include "cli/analyses.hpp"
 #include "cli/analysis_output.hpp"
 #include "cli/option_checks.hpp"

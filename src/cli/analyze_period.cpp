@@ -1,3 +1,4 @@
+// Registers vibra analyze period and its options.
 #include "cli/analyses.hpp"
 #include "cli/analysis_output.hpp"
 

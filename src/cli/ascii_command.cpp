@@ -1,3 +1,4 @@
+// Registers vibra ascii: a model's trajectory as the classic ASCII plot on standard output.
 #include <sys/ioctl.h>
 #include <unistd.h>
 

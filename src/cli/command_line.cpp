@@ -1,3 +1,4 @@
+// The command line vibra was started with, kept for pages and metadata to show.
 #include "cli/command_line.hpp"
 
 #include "core/shown_path.hpp"

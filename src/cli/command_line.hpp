@@ -1,3 +1,4 @@
+// The command line vibra was started with, kept for pages and metadata to show.
 #pragma once
 #include <string>
 

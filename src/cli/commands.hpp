@@ -1,3 +1,4 @@
+// The commands' registration functions: each adds its subcommand to the CLI11 app.
 #pragma once
 #include <CLI/CLI.hpp>
 

@@ -1,3 +1,4 @@
+// Registers vibra concat: joins segment videos into one without re-encoding.
 #include <cstdio>
 #include <filesystem>
 #include <memory>

@@ -1,3 +1,4 @@
+// Registers vibra lecture: a storyboard's shots played into one video.
 #include <cstdlib>
 #include <memory>
 #include <optional>

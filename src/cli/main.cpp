@@ -1,3 +1,4 @@
+// The vibra executable's entry point: runs the command line and checks standard output at exit.
 #include <cerrno>
 #include <csignal>
 #include <cstdio>

@@ -1,3 +1,4 @@
+// The models' help text: one line each, and each model's keys for --help.
 #pragma once
 #include <string>
 

@@ -1,3 +1,4 @@
+// CLI11 validators for numeric options, read as --set values are and held to the table of ranges.
 #include "cli/option_checks.hpp"
 
 #include "core/error.hpp"

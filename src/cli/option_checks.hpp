@@ -1,3 +1,4 @@
+// CLI11 validators for numeric options, read as --set values are and held to the table of ranges.
 #pragma once
 #include <CLI/CLI.hpp>
 #include <string>

@@ -1,3 +1,4 @@
+// Registers vibra plot: a static figure of a run's panels.
 #include <algorithm>
 #include <filesystem>
 #include <memory>

@@ -1,3 +1,4 @@
+// Registers vibra render: its flags turned into scene settings and handed to the render job.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// Parses argv and runs the command it names, as the vibra executable does; every error one line on stderr.
 #include "cli/run_command_line.hpp"
 
 #include <cstdio>

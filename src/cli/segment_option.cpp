@@ -1,3 +1,4 @@
+// --segment K/N, or auto from a Slurm or Kubernetes job array: which segment of a render this process draws.
 #include "cli/segment_option.hpp"
 
 #include <algorithm>

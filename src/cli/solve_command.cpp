@@ -1,3 +1,4 @@
+// Registers vibra solve: a model's trajectory as CSV, streamed to standard output or a file.
 #include <cstdio>
 #include <memory>
 #include <optional>

@@ -1,3 +1,4 @@
+// The closing line "vibra: wrote WHAT" every command that writes files prints on stderr.
 #pragma once
 #include <cstdio>
 #include <string>

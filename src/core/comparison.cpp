@@ -1,3 +1,4 @@
+// Comparisons (--compare KEY=V1,V2,...): one run per value of one key.
 #include "core/comparison.hpp"
 
 #include <algorithm>

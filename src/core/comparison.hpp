@@ -1,3 +1,4 @@
+// Comparisons (--compare KEY=V1,V2,...): one run per value of one key.
 #pragma once
 #include <cmath>
 #include <functional>

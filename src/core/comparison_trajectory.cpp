@@ -1,3 +1,4 @@
+// The runs of a comparison as one Trajectory, columns suffixed by member.
 #include "core/comparison_trajectory.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The runs of a comparison as one Trajectory, columns suffixed by member.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// CsvWriter: rows of doubles as shortest round-trip CSV through one large buffer.
 #include "core/csv_writer.hpp"
 
 #include <cerrno>

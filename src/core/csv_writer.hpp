@@ -1,3 +1,4 @@
+// CsvWriter: rows of doubles as shortest round-trip CSV through one large buffer.
 #pragma once
 #include <cstdio>
 #include <span>

@@ -1,3 +1,4 @@
+// EnergyParts: a system's mechanical energy at one instant, split into kinetic and potential.
 #pragma once
 #include <cmath>
 #include <functional>

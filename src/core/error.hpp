@@ -1,3 +1,4 @@
+// vibra's error types: UsageError (bad input, exit 2) and SolutionError (a non-finite value).
 #pragma once
 #include <stdexcept>
 #include <string>

@@ -1,3 +1,4 @@
+// The error column (--panels error): a run with e^n = u^n - u_e(t_n) added.
 #include "core/error_column.hpp"
 
 #include "core/error.hpp"

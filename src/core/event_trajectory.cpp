@@ -1,3 +1,4 @@
+// Trajectories of piecewise-smooth models: events (turning points, impacts) located between steps.
 #include "core/event_trajectory.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Trajectories of piecewise-smooth models: events (turning points, impacts) located between steps.
 #pragma once
 #include <functional>
 #include <memory>

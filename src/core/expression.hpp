@@ -1,3 +1,4 @@
+// Expression: a formula the user typed, compiled once by muParser and evaluated many times.
 #pragma once
 #include <initializer_list>
 #include <memory>

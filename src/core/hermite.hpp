@@ -1,3 +1,4 @@
+// The state between two samples by Hermite interpolation, for adaptive runs without dense output.
 #pragma once
 #include "core/sample.hpp"
 

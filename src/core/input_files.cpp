@@ -1,3 +1,4 @@
+// The files a run reads, noted as they are opened, so no output of the run overwrites one.
 #include "core/input_files.hpp"
 
 #include <sys/stat.h>

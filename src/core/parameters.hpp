@@ -1,3 +1,4 @@
+// Parameters: a model's --set keys with units and defaults, parsed from KEY=VALUE with suggestions.
 #pragma once
 #include <map>
 #include <string>

@@ -1,3 +1,4 @@
+// Adaptive Gauss-Kronrod quadrature (7/15 points), for potentials of formula restoring forces.
 #include "core/quadrature.hpp"
 
 #include <algorithm>

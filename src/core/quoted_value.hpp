@@ -1,3 +1,4 @@
+// A user's value fit to quote in a one-line message: control characters escaped, long text cut.
 #pragma once
 #include <string>
 #include <string_view>

@@ -1,3 +1,4 @@
+// RoadProfile (section 1.12.8): a road as heights every dx, with h(x) and h''(x).
 #pragma once
 #include <cstdint>
 #include <string>

@@ -1,3 +1,4 @@
+// Sample: the state of a D-dimensional second-order system at one time.
 #pragma once
 #include <Eigen/Core>
 

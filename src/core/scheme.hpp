@@ -1,3 +1,4 @@
+// The schemes as one std::variant: names, kinds (fixed, adaptive) and stability limits.
 #pragma once
 #include <string>
 #include <string_view>

@@ -1,3 +1,4 @@
+// SecondOrderSystem<D>: u'' = force(u, t) plus damping, the equations every scheme steps.
 #pragma once
 #include <cmath>
 #include <functional>

@@ -1,3 +1,4 @@
+// SolutionStream: a scheme's samples one at a time in constant memory, stopping at a non-finite value.
 #include "core/solution_stream.hpp"
 
 #include <cstdio>

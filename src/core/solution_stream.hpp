@@ -1,3 +1,4 @@
+// SolutionStream: a scheme's samples one at a time in constant memory, stopping at a non-finite value.
 #pragma once
 #include <cmath>
 #include <limits>

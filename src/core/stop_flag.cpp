@@ -1,3 +1,4 @@
+// The one stop flag: the signal the handler recorded, checked by long loops, and their progress reports.
 #include "core/stop_flag.hpp"
 
 #include <atomic>

@@ -1,9 +1,9 @@
+// The one stop flag every long loop polls (solver steps, pre-passes, analyses, drawing, encoding, concat).
+// SIGINT and SIGTERM set it (render/output/stop_signal.hpp installs the
+// handlers), and the loop that sees it throws Interrupted, so the run removes
+// its temporaries and exits with 128 + signal. In core so that the solver
+// itself can look at it.
 #pragma once
-// The one stop flag every long loop polls (solver steps, pre-passes,
-// analyses, drawing, encoding, concat): SIGINT and SIGTERM set it
-// (render/output/stop_signal.hpp installs the handlers), and the loop that sees it
-// throws Interrupted, so the run removes its temporaries and exits with
-// 128 + signal. In core so that the solver itself can look at it.
 
 namespace vibra {
 

@@ -1,3 +1,4 @@
+// TimeMesh: t_n = n dt up to T and the scheme that walks it, with the adaptive tolerances checked.
 #include "core/time_mesh.hpp"
 
 #include <cmath>

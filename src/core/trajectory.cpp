@@ -1,3 +1,4 @@
+// Trajectory: a model's run for observers, rows of columns with the exact solution and the state between samples.
 #include "core/trajectory.hpp"
 
 #include <algorithm>

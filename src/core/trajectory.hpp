@@ -1,3 +1,4 @@
+// Trajectory: a model's run for observers, rows of columns with the exact solution and the state between samples.
 #pragma once
 #include <functional>
 #include <limits>

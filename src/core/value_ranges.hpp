@@ -1,3 +1,4 @@
+// The one table of ranges for every number the user can give: options, scene keys and model keys.
 #pragma once
 #include <string>
 #include <string_view>

@@ -1,3 +1,4 @@
+// Splits a comma-separated option value into words, refusing an empty one.
 #include "core/word_list.hpp"
 
 #include <sstream>

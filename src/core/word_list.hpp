@@ -1,3 +1,4 @@
+// Splits a comma-separated option value into words, refusing an empty one.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// The fuzz inputs: each target's bytes turned into a vibra call, shared by the fuzzers and the replay test.
 #include "fuzz_inputs.hpp"
 
 #include <glib.h>

@@ -1,9 +1,7 @@
+// What the fuzz targets feed to vibra, shared by the libFuzzer executables (tests/fuzz/fuzz_*.cpp) and by the Catch test that replays the corpus and every regression input in the normal suite.
+// Each entry accepts the errors vibra reports to users (UsageError,
+// SolutionError); anything else escapes and is a finding.
 #pragma once
-// What the fuzz targets feed to vibra, shared by the libFuzzer executables
-// (tests/fuzz/fuzz_*.cpp) and by the Catch test that replays the corpus and
-// every regression input in the normal suite. Each entry accepts the errors
-// vibra reports to users (UsageError, SolutionError); anything else escapes
-// and is a finding.
 #include <string_view>
 
 namespace vibra::fuzz {

@@ -1,3 +1,4 @@
+// Convergence studies: errors against dt and the rates between levels.
 #include "core/analysis/convergence.hpp"
 
 #include <cmath>

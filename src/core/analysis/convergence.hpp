@@ -1,3 +1,4 @@
+// Convergence studies: errors against dt and the rates between levels.
 #pragma once
 #include <functional>
 #include <memory>

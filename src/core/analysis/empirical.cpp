@@ -1,3 +1,4 @@
+// Empirical periods and amplitudes from the extrema of a sampled solution.
 #include "core/analysis/empirical.hpp"
 
 #include <cmath>

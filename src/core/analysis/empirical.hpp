@@ -1,3 +1,4 @@
+// Empirical periods and amplitudes from the extrema of a sampled solution.
 #pragma once
 #include <deque>
 #include <optional>

@@ -1,3 +1,4 @@
+// The chapter's energy-error table: one entry per scheme and T.
 #include "core/analysis/energy_study.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// The chapter's energy-error table: one entry per scheme and T.
 #pragma once
 #include <string>
 #include <vector>

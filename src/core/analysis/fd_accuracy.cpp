@@ -1,3 +1,4 @@
+// The centered difference's accuracy for u'' (Exercise 1.8): E(p) = 4 sin^2(p/2) / p^2.
 #include "core/analysis/fd_accuracy.hpp"
 
 #include <cmath>

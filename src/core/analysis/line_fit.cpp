@@ -1,3 +1,4 @@
+// A least-squares straight line y = intercept + slope x.
 #include "core/analysis/line_fit.hpp"
 
 #include <Eigen/Dense>

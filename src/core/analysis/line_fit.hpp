@@ -1,3 +1,4 @@
+// A least-squares straight line y = intercept + slope x.
 #pragma once
 #include <vector>
 

@@ -1,3 +1,4 @@
+// A convergence study of one model and scheme, as vibra analyze convergence runs it.
 #include "core/analysis/model_convergence.hpp"
 
 #include "core/analysis/parameters_with_dt.hpp"

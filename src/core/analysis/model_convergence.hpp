@@ -1,3 +1,4 @@
+// A convergence study of one model and scheme, as vibra analyze convergence runs it.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// The centered scheme's numerical frequency w~ = (2/dt) asin(w dt/2) (1.18) and its series (1.19).
 #include "core/analysis/numerical_frequency.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// The centered scheme's numerical frequency w~ = (2/dt) asin(w dt/2) (1.18) and its series (1.19).
 #pragma once
 
 namespace vibra {

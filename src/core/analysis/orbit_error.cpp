@@ -1,3 +1,4 @@
+// The two-body orbit's errors per block of orbits: radius drift and phase drift.
 #include "core/analysis/orbit_error.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// A model's Parameters from the user's settings with dt replaced, for experiments that vary dt.
 #pragma once
 #include <memory>
 #include <string>

@@ -1,3 +1,4 @@
+// The pendulum's exact period 4 K(sin(Theta/2)), K by the arithmetic-geometric mean.
 #pragma once
 
 namespace vibra {

@@ -1,3 +1,4 @@
+// PeriodMeter: upward zero crossings and maxima located between mesh points, one sample at a time.
 #pragma once
 #include <vector>
 

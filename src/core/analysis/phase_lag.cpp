@@ -1,3 +1,4 @@
+// The phase lag of a numerical maximum behind the exact solution's (Exercise 1.2).
 #include "core/analysis/phase_lag.hpp"
 
 #include <cmath>

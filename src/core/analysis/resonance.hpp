@@ -1,3 +1,4 @@
+// Steady amplitudes of u'' + beta u' + u = sin(gamma t) measured from runs (Exercise 1.22).
 #pragma once
 #include <vector>
 

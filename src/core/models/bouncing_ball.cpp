@@ -1,3 +1,4 @@
+// The bouncing-ball model (section 1.12.9, Exercise 1.24): free fall with impacts located between steps.
 #include <cmath>
 #include <string>
 

@@ -1,3 +1,4 @@
+// The bumpy-road model (section 1.12.8): a vehicle on a generated or read road profile.
 #include <cmath>
 #include <memory>
 

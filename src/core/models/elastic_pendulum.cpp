@@ -1,3 +1,4 @@
+// The elastic-pendulum model (section 1.12.7, (1.148)): a pendulum on a spring, in scaled (x, y).
 #include <cmath>
 
 #include "core/error.hpp"

@@ -1,3 +1,4 @@
+// ModelDefinition: a model's keys, units, columns, time defaults and how to build its trajectory.
 #pragma once
 #include <functional>
 #include <memory>

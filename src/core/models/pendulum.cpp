@@ -1,3 +1,4 @@
+// The pendulum and physical-pendulum models: theta'' + alpha |theta'| theta' + sin(theta) = 0, scaled.
 #include <cmath>
 
 #include "core/analysis/pendulum_period.hpp"

@@ -1,3 +1,4 @@
+// The resonance model u'' + beta u' + u = sin(gamma t) (Exercise 1.22), with its exact solution.
 #include <cmath>
 
 #include "core/error.hpp"

@@ -1,3 +1,7 @@
+// The rlc model, the series RLC circuit (section 1.12.11): solved for the charge, L q'' + R q' + q/C = V(t), I = q'.
+// L I'' + R I' + I/C = V'(t) is solved for the charge so that V itself is
+// needed and not its derivative. It is the generalized model (1.71) with
+// m = L, linear damping b = R, spring k = 1/C and force F = V.
 #include <cmath>
 
 #include "core/error.hpp"
@@ -6,10 +10,6 @@
 
 namespace vibra {
 
-// The series RLC circuit (section 1.12.11): L I'' + R I' + I/C = V'(t) is
-// solved for the charge, L q'' + R q' + q/C = V(t), I = q', so V itself is
-// needed and not its derivative. It is the generalized model (1.71) with
-// m = L, linear damping b = R, spring k = 1/C and force F = V.
 ModelDefinition rlc_model() {
   ModelDefinition m;
   m.name = "rlc";

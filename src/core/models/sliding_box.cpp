@@ -1,3 +1,4 @@
+// The sliding-box model (section 1.12.3, Exercise 1.23): a spring and Coulomb friction, stops at rest.
 #include <cmath>
 
 #include "core/error.hpp"

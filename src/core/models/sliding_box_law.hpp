@@ -1,3 +1,4 @@
+// The sliding box's law (section 1.12.3): u'' + mu sign(u') + s(u) = 0, with s(u) = tanh(alpha u)/alpha.
 #pragma once
 #include <cmath>
 

@@ -1,3 +1,4 @@
+// The two-body model: a light planet around a heavy star, scaled: x'' = -x / |x|^3 (Exercise 1.28).
 #include <cmath>
 
 #include "core/error.hpp"
@@ -5,7 +6,6 @@
 
 namespace vibra {
 
-// A light planet around a heavy star, scaled: x'' = -x / |x|^3 (Exercise 1.28).
 ModelDefinition two_body_model() {
   ModelDefinition m;
   m.name = "two-body";

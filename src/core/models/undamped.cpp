@@ -1,3 +1,4 @@
+// The undamped model: u'' + w^2 u = 0, u(0) = I, u'(0) = V (section 1.1); the scaled model has w = 2 pi, so the period is 1.
 #include <cmath>
 
 #include "core/error.hpp"
@@ -5,8 +6,6 @@
 
 namespace vibra {
 
-// u'' + w^2 u = 0, u(0) = I, u'(0) = V (section 1.1); the scaled model has
-// w = 2 pi, so the period is 1.
 ModelDefinition undamped_model() {
   ModelDefinition m;
   m.name = "undamped";

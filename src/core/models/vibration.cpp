@@ -1,3 +1,4 @@
+// The vibration model (1.71): m u'' + f(u') + s(u) = F(t) with formula forces typed by the user.
 #include <algorithm>
 #include <cmath>
 #include <functional>

@@ -1,3 +1,4 @@
+// The forces of the generalized model (1.71) as the vibration model's keys give them.
 #include "core/models/vibration_law.hpp"
 
 #include <regex>

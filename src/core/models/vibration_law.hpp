@@ -1,3 +1,4 @@
+// The forces of the generalized model (1.71) as the vibration model's keys give them.
 #pragma once
 #include <cmath>
 #include <functional>

@@ -1,3 +1,4 @@
+// The explicit Adams-Bashforth methods AB2 and AB3 for u' = v, v' = a(u, v, t).
 #pragma once
 #include <array>
 

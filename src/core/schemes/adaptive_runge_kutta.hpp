@@ -1,3 +1,4 @@
+// The adaptive Runge-Kutta stepper over an embedded pair (rkf45, dopri5), with step size control.
 #pragma once
 #include <algorithm>
 #include <array>

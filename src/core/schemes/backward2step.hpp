@@ -1,3 +1,4 @@
+// The two-step backward difference scheme (BDF2) for u' = v, v' = a(u, v, t).
 #pragma once
 #include "core/schemes/newton.hpp"
 #include "core/schemes/theta_method.hpp"

@@ -1,3 +1,4 @@
+// The centered scheme (1.7), with damping as in (1.75) and (1.82).
 #pragma once
 #include "core/second_order_system.hpp"
 

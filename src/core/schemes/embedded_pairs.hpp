@@ -1,3 +1,4 @@
+// Butcher tableaus of the embedded Runge-Kutta pairs (Fehlberg 4(5), Dormand-Prince 5(4)).
 #pragma once
 #include <array>
 

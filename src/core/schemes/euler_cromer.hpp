@@ -1,3 +1,4 @@
+// The Euler-Cromer scheme (1.90)-(1.91).
 #pragma once
 #include "core/second_order_system.hpp"
 

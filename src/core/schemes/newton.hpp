@@ -1,3 +1,4 @@
+// Newton's method with a finite-difference Jacobian, for the implicit schemes' steps.
 #pragma once
 #include <Eigen/Dense>
 #include <cmath>

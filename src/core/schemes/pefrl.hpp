@@ -1,3 +1,4 @@
+// The PEFRL scheme (1.107)-(1.118): a 4th-order symplectic splitting.
 #pragma once
 #include "core/second_order_system.hpp"
 

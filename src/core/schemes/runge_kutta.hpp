@@ -1,3 +1,4 @@
+// The explicit one-step Runge-Kutta methods: Forward Euler, RK2, RK3 and RK4.
 #pragma once
 #include "core/second_order_system.hpp"
 

@@ -1,3 +1,4 @@
+// The staggered mesh scheme (1.67)-(1.70), (1.99)-(1.104): u at t_n, v at t_{n+1/2}.
 #pragma once
 #include "core/second_order_system.hpp"
 

@@ -1,3 +1,4 @@
+// The theta-rule: Forward Euler, Crank-Nicolson and Backward Euler for u' = v, v' = a(u, v, t).
 #pragma once
 #include "core/schemes/newton.hpp"
 #include "core/second_order_system.hpp"

@@ -1,3 +1,4 @@
+// The Velocity Verlet scheme (Problem 1.6).
 #pragma once
 #include "core/second_order_system.hpp"
 
