@@ -124,14 +124,7 @@ GroundReport ground_of(const vibra::render::Canvas& frame, const vibra::render::
 vibra::render::Canvas frame(vibra::scenes::SceneConfig config, double moment) {
   long long steps = 0;
   auto scene = vibra::test::scene_after_pre_pass(config, steps);
-  const long long wanted = std::llround(moment * (steps - 1));
-  auto runs = vibra::scenes::build_scene_runs(config);
-  std::vector<double> row(runs->width());
-  for (long long step = 0;; ++step) {
-    runs->row(row);
-    scene->observe(row);
-    if (step == wanted || !runs->advance()) break;
-  }
+  const std::vector<double> row = vibra::test::observed_row_at(*scene, config, steps, moment);
   vibra::render::Canvas canvas = vibra::render::Canvas::image(config.width, config.height);
   scene->draw(canvas, row);
   canvas.flush();

@@ -56,15 +56,8 @@ DrawingRecord frame_at(const std::string& scene_name, const std::vector<vibra::s
   for (const auto& s : settings) vibra::scenes::apply_setting(config, s);
   long long steps = 0;
   auto scene = vibra::test::scene_after_pre_pass(config, steps);
-  const long long wanted = std::llround(moment * (steps - 1));
+  const std::vector<double> row = vibra::test::observed_row_at(*scene, config, steps, moment);
   Canvas canvas = Canvas::image(config.width, config.height);
-  auto runs = vibra::scenes::build_scene_runs(config);
-  std::vector<double> row(runs->width());
-  for (long long step = 0;; ++step) {
-    runs->row(row);
-    scene->observe(row);
-    if (step == wanted || !runs->advance()) break;
-  }
   scene->draw(canvas, row);
   REQUIRE(scene->last_layout());
   return *scene->last_layout();

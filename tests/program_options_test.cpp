@@ -17,7 +17,7 @@ using vibra::test::shell;
 namespace fs = std::filesystem;
 
 namespace {
-const char* const kCommands[] = {"solve", "render", "ascii", "plot", "analyze", "concat", "lecture"};
+const char* const kCommands[] = {"solve", "render", "ascii", "plot", "analyze", "concat", "lecture", "chapter"};
 
 /// The long options `vibra ARGS --help` lists ("--set", "--output", ...).
 std::vector<std::string> long_options_in_help(const std::string& args) {

@@ -27,7 +27,7 @@ bool draw_force_arrow(Canvas& canvas, const WorldView& view, const ForceArrow& f
   {
     OutlineKindScope kind(canvas, OutlineKind::arrow);
     if (visible) {
-      draw_arrow(canvas, view, f.from, f.to, {color, 4.2}, 22, casing);
+      draw_arrow(canvas, view, f.from, f.to, {color, kForceShaftWidth}, 22, casing);
     } else {
       // Shorter than its head: a small ring where the force acts, still
       // labelled (a ring, so the body under it keeps its colour).

@@ -25,6 +25,9 @@ struct ForceArrow {
   bool from_rim = false;     ///< starts at a body's rim (its casing keeps off the body)
 };
 
+/// A force arrow's shaft width, 720p pixels.
+inline constexpr double kForceShaftWidth = 4.2;
+
 /// Draws the arrow (or its ring) and asks for its haloed label (see
 /// request_label). `background` is the halo colour. Returns false when the
 /// arrow was too short and drawn as a ring.

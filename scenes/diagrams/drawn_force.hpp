@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "scenes/diagrams/diagram.hpp"
+#include "render/draw/annotations.hpp"
 #include "render/draw/shapes.hpp"
 #include "scenes/diagrams/force_key.hpp"
 
@@ -37,7 +38,7 @@ inline Arrow from_rim(const Point& centre, double radius, const Point& tip) {
 /// from it: the shaft's round cap and its casing, so neither covers the body.
 inline double rim_gap(const render::Canvas& canvas, const render::WorldView& view) {
   const double scale = canvas.scale();
-  return (render::Casing{}.device_reach(scale) + 2.1 * scale) / view.zoom();
+  return (render::Casing{}.device_reach(scale) + 0.5 * render::kForceShaftWidth * scale) / view.zoom();
 }
 
 /// What a spring's force label adds about the spring (section 1.12.1): a
