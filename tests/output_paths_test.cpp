@@ -244,7 +244,7 @@ TEST_CASE("an interrupted render leaves an earlier run's frames byte for byte", 
   REQUIRE(run_vibra("render --size 160x90 --set periods=5 -q -o " + pattern).exit_code == 0);
   std::map<fs::path, std::string> earlier;
   for (const auto& e : fs::directory_iterator(dir.path / "frames")) earlier[e.path()] = read_file(e.path());
-  REQUIRE(earlier.size() == 301);
+  REQUIRE(earlier.size() == 302);  // and the ledger of the frames vibra wrote
   auto new_frames_exist = [&] {  // replaced frames, or frames waiting beside them
     for (const auto& e : fs::recursive_directory_iterator(dir.path / "frames")) {
       const auto old = earlier.find(e.path());
@@ -276,19 +276,19 @@ TEST_CASE("a shorter run leaves exactly its own frames under the pattern", "[out
   ScratchDirectory dir;
   const std::string pattern = dir / "frames/f_%04d.png";
   REQUIRE(run_vibra("render --size 160x90 --set periods=0.5 -q -o " + pattern).exit_code == 0);  // 31 frames
-  REQUIRE(entries(dir.path / "frames").size() == 31);
+  REQUIRE(entries(dir.path / "frames").size() == 31 + 1);  // and the ledger of the frames vibra wrote
   // The user's own files in the folder, one of them almost a frame's name.
   write(dir.path / "frames/notes.txt", "mine");
   write(dir.path / "frames/f_12ab.png", "mine too");
   write(dir.path / "frames/g_0040.png", "another pattern's");
   // A segment of a longer render removes nothing: the other segments' frames belong there.
   REQUIRE(run_vibra("render --size 160x90 --set periods=1 -q --segment 0/2 -o " + pattern).exit_code == 0);
-  CHECK(entries(dir.path / "frames").size() == 31 + 3);
+  CHECK(entries(dir.path / "frames").size() == 31 + 1 + 3 + 1);  // and the segment's own ledger
   const auto r = run_vibra("render --size 160x90 --set periods=0.1 -o " + pattern);  // 7 frames
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   CHECK_THAT(r.err, Catch::Contains("removed 24 frames of an earlier run"));
-  std::vector<std::string> expected = {"f_12ab.png"};
+  std::vector<std::string> expected = {".vibra-frames", "f_12ab.png"};  // the segment's ledger folded into the run's
   for (int i = 0; i < 7; ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "f_%04d.png", i);
@@ -320,7 +320,7 @@ TEST_CASE("a page keeps its companions in PAGE_files/ and leaves the user's file
   // Again, as a frames player: vibra's own folder is replaced whole, without --force.
   REQUIRE(run_vibra("render" + kShort + "--frames-player -o " + (dir / "lecture.html")).exit_code == 0);
   const auto files = entries(dir.path / "lecture_files");
-  CHECK(files.size() == 33);  // 31 frames, the CSV and the manifest
+  CHECK(files.size() == 34);  // 31 frames, their ledger, the CSV and the manifest
   CHECK(std::find(files.begin(), files.end(), "lecture.mp4") == files.end());
   CHECK_THAT(read_file(dir.path / "lecture.html"), Catch::Contains("\"prefix\":\"lecture_files/frame_\""));
 

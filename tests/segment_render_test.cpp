@@ -23,7 +23,8 @@ namespace {
 /// Every file of a directory by name, with its bytes.
 std::map<std::string, std::string> files_of(const fs::path& dir) {
   std::map<std::string, std::string> files;
-  for (const auto& entry : fs::directory_iterator(dir)) files[entry.path().filename().string()] = read_file(entry.path());
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == ".png") files[entry.path().filename().string()] = read_file(entry.path());
   return files;
 }
 

@@ -53,20 +53,33 @@ class PngSink final : public FrameSink {
   void finish() override {
     writer_.finish();
     // A whole render (not a segment) leaves exactly its own frames under the
-    // pattern: an earlier, longer run's extra frames go, but only now that
-    // the new set is complete (docs/reliability.md, "Interrupted runs").
-    if (first_ == 0 && writer_.frames_written() == count_) removed_ = remove_earlier_frames(pattern_, count_);
+    // pattern: an earlier run's extra frames go, but only now that the new
+    // set is complete, and only those a ledger proves vibra wrote
+    // (docs/reliability.md, "Frames of an earlier, longer run").
+    FrameLedger ledger(pattern_.directory);
+    if (first_ == 0 && writer_.frames_written() == count_) {
+      earlier_ = remove_earlier_frames(pattern_, count_, ledger);
+      ledger_note_ = ledger.record_whole_run(writer_.written_listing());
+    } else {
+      ledger_note_ = ledger.record_segment(first_, writer_.written_listing());
+    }
   }
-
   std::string description() const override {
-    return std::to_string(writer_.frames_written()) + " frames " + pattern_.name(first_).string() + " ... " +
-           pattern_.name(first_ + std::max(0LL, writer_.frames_written() - 1)).string() +
-           (removed_ ? "; removed " + std::to_string(removed_) + " frames of an earlier run beyond these" : "");
+    std::string d = std::to_string(writer_.frames_written()) + " frames " + pattern_.name(first_).string() + " ... " +
+                    pattern_.name(first_ + std::max(0LL, writer_.frames_written() - 1)).string();
+    if (earlier_.removed) d += "; removed " + std::to_string(earlier_.removed) + " frames of an earlier run beyond these";
+    if (earlier_.kept)
+      d += "; kept " + std::to_string(earlier_.kept) +
+           " files named like frames that vibra cannot prove it wrote (remove them yourself if they are old frames)";
+    if (!ledger_note_.empty()) d += "; " + ledger_note_;
+    return d;
   }
 
  private:
   FramePattern pattern_;
-  long long first_, count_, removed_ = 0;
+  long long first_, count_;
+  EarlierFrames earlier_;
+  std::string ledger_note_;
   PngSequenceWriter writer_;
 };
 class Y4mSink final : public FrameSink {

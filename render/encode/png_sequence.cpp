@@ -106,19 +106,28 @@ FramePattern parse_frame_pattern(const std::string& pattern, long long frame_cou
   return p;
 }
 
-long long remove_earlier_frames(const FramePattern& p, long long count) {
-  long long removed = 0;
+EarlierFrames remove_earlier_frames(const FramePattern& p, long long count, const FrameLedger& ledger) {
+  EarlierFrames result;
   std::error_code ec;
   long long seen = 0;
   for (const auto& entry : fs::directory_iterator(p.directory, ec)) {
     if ((++seen & 0xff) == 0) throw_if_stop_requested();
-    const std::optional<long long> number = p.index_of(entry.path().filename().string(), true);
-    if (!number) continue;
-    const bool ours = *number < count && p.index_of(entry.path().filename().string(), false);
+    const std::string name = entry.path().filename().string();
+    const std::optional<long long> number = p.index_of(name, true);
+    if (!number || (*number < count && p.index_of(name, false))) continue;  // not named like a frame, or this run's
     std::error_code ignored;
-    if (!ours && entry.is_regular_file(ignored) && fs::remove(entry.path(), ignored)) ++removed;
+    if (ledger.vouches_for(name) && fs::remove(entry.path(), ignored)) ++result.removed;
+    else ++result.kept;
   }
-  return removed;
+  return result;
+}
+
+std::optional<FileListing> PngSequenceWriter::written_listing() const {
+  if (frames_written() > static_cast<long long>(kMostListedFiles)) return std::nullopt;
+  FileListing listing;
+  for (long long i = 0; i < static_cast<long long>(fingerprints_.size()) && i < frames_written(); ++i)
+    listing.emplace(pattern_.name(first_ + i).filename().string(), fingerprints_[static_cast<size_t>(i)]);
+  return listing;
 }
 
 PngSequenceWriter::PngSequenceWriter(FramePattern pattern, int width, int height, int threads, long long first_index)
@@ -196,8 +205,9 @@ void PngSequenceWriter::work() {
     progress_.notify_all();  // room in the queue
 
     std::string error;
+    Fingerprint written;
     try {
-      save(job, png);
+      written = save(job, png);
     } catch (const OutputError& e) {
       error = e.what();
     } catch (const std::exception& e) {
@@ -207,13 +217,17 @@ void PngSequenceWriter::work() {
     lock.lock();
     --busy_;
     spare_.push_back(std::move(job.scanlines));
+    if (const long long slot = job.index - first_; error.empty() && slot < static_cast<long long>(kMostListedFiles)) {
+      if (fingerprints_.size() <= static_cast<size_t>(slot)) fingerprints_.resize(static_cast<size_t>(slot) + 1);
+      fingerprints_[static_cast<size_t>(slot)] = written;
+    }
     if (!error.empty() && failure_.empty())
       failure_ = std::move(error);
     progress_.notify_all();
   }
 }
 
-void PngSequenceWriter::save(const Job& job, std::vector<std::uint8_t>& png) const {
+Fingerprint PngSequenceWriter::save(const Job& job, std::vector<std::uint8_t>& png) const {
   const std::size_t size = encode_png(job.scanlines, png);
   const fs::path name = pattern_.name(job.index);
   const fs::path file = staging_.path() / name.filename();
@@ -227,6 +241,7 @@ void PngSequenceWriter::save(const Job& job, std::vector<std::uint8_t>& png) con
   if (!ok)
     throw OutputError("writing '" + name.string() + "' failed: " + std::generic_category().message(error) +
                       ": free disk space or choose another directory");
+  return fingerprint_of(png.data(), size);
 }
 
 }  // namespace vibra::render

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "render/encode/png_encoder.hpp"  // PngScanlines, which the writer queues
+#include "render/output/file_listing.hpp"
+#include "render/output/frame_ledger.hpp"
 #include "render/output/temporary_file.hpp"
 
 namespace vibra::render {
@@ -28,12 +30,18 @@ struct FramePattern {
   std::optional<long long> index_of(const std::string& file_name, bool any_digits = false) const;
 };
 
+/// What became of files named like a run's frames that the run did not write.
+struct EarlierFrames {
+  long long removed = 0;  ///< an earlier run's frames, proven by `ledger`
+  long long kept = 0;     ///< named like frames, but not provably vibra's
+};
+
 /// After a whole render of `count` frames has replaced its set: removes the
 /// frames of an earlier run that this one did not write, files named by the
 /// same pattern (prefix, digits, suffix) with a number of `count` or more, or
-/// with another number of digits, so the folder holds exactly this run's
-/// frames. Anything else in the folder stays. Returns how many it removed.
-long long remove_earlier_frames(const FramePattern&, long long count);
+/// with another number of digits, when `ledger` proves vibra wrote them and
+/// nobody changed them since. Anything else in the folder stays.
+EarlierFrames remove_earlier_frames(const FramePattern&, long long count, const FrameLedger& ledger);
 
 /// Reads a user's pattern: "frames/tmp_%04d.png" (exactly one %d or %0Nd,
 /// N in 1..18, in the file name, which ends in .png, any case), or a
@@ -73,6 +81,9 @@ class PngSequenceWriter {
   void finish();
   /// Frames accepted by write(); all of them are on disk once finish() returns.
   long long frames_written() const { return queued_ - first_; }
+  /// The fingerprints of the frames on disk after finish(), by file name;
+  /// none when there are more than a listing holds (kMostListedFiles).
+  std::optional<FileListing> written_listing() const;
 
  private:
   struct Job {
@@ -80,7 +91,7 @@ class PngSequenceWriter {
     PngScanlines scanlines;
   };
   void work();
-  void save(const Job&, std::vector<std::uint8_t>& png) const;
+  Fingerprint save(const Job&, std::vector<std::uint8_t>& png) const;
   void stop_workers() noexcept;
 
   FramePattern pattern_;
@@ -99,6 +110,7 @@ class PngSequenceWriter {
   int busy_ = 0;
   bool stopping_ = false;
   std::string failure_;
+  std::vector<Fingerprint> fingerprints_;  ///< by frame, while a listing can hold them
   std::vector<std::thread> workers_;
 };
 
