@@ -323,6 +323,22 @@ FrameClock frame_clock_of(const SceneConfig& scene, const TimeMesh& mesh) {
   return FrameClock::paced(double(mesh.steps) * mesh.dt, scene.fps, video_rate_of(scene, mesh), scene.pacing);
 }
 
+namespace {
+/// A segment splits a video or frame sequence into files vibra concat joins.
+void refuse_unsplittable(const RenderRequest& r, const std::string& ext, bool still, bool stream, bool page) {
+  if (still) throw UsageError("--segment splits a video or frame sequence; --at renders one still: drop one of them");
+  if (stream)
+    throw UsageError("--segment writes files for vibra concat to join: give -o FILE.mp4, .mkv, .webm or PNG frames, "
+                     "not a stream (" + r.output + ")");
+  if (page)
+    throw UsageError("--segment cannot split a page (.html): render segments to .mp4, .mkv, .webm or PNG frames, "
+                     "join them with vibra concat");
+  if (render::is_video_path(r.output) && ext != ".mp4" && ext != ".mkv" && ext != ".webm")
+    throw UsageError("--segment needs a video that keeps timestamps: write .mp4, .mkv or .webm (or PNG frames), "
+                     "not " + ext);
+}
+}  // namespace
+
 /// Everything run_render works with between its checks and its frames.
 struct PreparedRender::State {
   RenderRequest r;
@@ -351,8 +367,19 @@ struct PreparedRender::State {
 };
 
 PreparedRender::PreparedRender(const RenderRequest& request) : state_(std::make_unique<State>()) {
+  state_->r = request;
+  const bool frames = check_output_kind();
+  std::unique_ptr<Trajectory> pre_pass = solve_pre_pass();
+  if (check_paths_or_skip(frames)) return;
+  record_pre_pass(std::move(pre_pass));
+  start_render_pass();
+}
+
+/// The kind of output (still, page, frames, stream or video file) from -o
+/// and the options, refusing combinations that cannot be written; whether
+/// the output is frames.
+bool PreparedRender::check_output_kind() {
   State& s = *state_;
-  s.r = request;
   const RenderRequest& r = s.r;
   const std::string ext = extension_of(r.output);
   const bool still = r.at.has_value();
@@ -367,10 +394,9 @@ PreparedRender::PreparedRender(const RenderRequest& request) : state_(std::make_
   // A frame pattern or folder names frames; anything else one file or a stream.
   const bool frames = !still && !page && !render::is_video_path(r.output) && r.output != "-" &&
                       !r.output.empty() && render::is_frame_pattern(r.output);
-  render::OutputTarget& target = s.target;  // frames: their names are checked one by one below
-  target.named = r.output;
-  if (!frames) target = render::resolve_output(r.output, still || page ? render::kNeedsAFile : "");
-  const bool stream = s.stream = target.stream;
+  s.target.named = r.output;  // frames: their names are checked one by one later
+  if (!frames) s.target = render::resolve_output(r.output, still || page ? render::kNeedsAFile : "");
+  const bool stream = s.stream = s.target.stream;
   if (r.frames_player && !page) throw UsageError("--frames-player writes a page: give -o PLAYER.html");
   if (r.csv_every < 1) throw UsageError("--every must be at least 1: the page's CSV keeps every K-th step");
   if (r.csv_every != 1 && !page) throw UsageError("--every thins the CSV beside a page: give -o PAGE.html, or drop --every");
@@ -384,20 +410,15 @@ PreparedRender::PreparedRender(const RenderRequest& request) : state_(std::make_
                      ": use .mp4, .webm, .mkv, .mov, .ogv, .gif, .yuv, .html, a frame pattern frames/tmp_%04d.png, a "
                      "directory, - (standard output) with --format, or .png/.svg/.pdf with --at");
   }
+  if (r.segment) refuse_unsplittable(r, ext, still, stream, page);
+  return frames;
+}
 
-  if (r.segment) {
-    if (still) throw UsageError("--segment splits a video or frame sequence; --at renders one still: drop one of them");
-    if (stream)
-      throw UsageError("--segment writes files for vibra concat to join: give -o FILE.mp4, .mkv, .webm or PNG frames, "
-                       "not a stream (" + r.output + ")");
-    if (page)
-      throw UsageError("--segment cannot split a page (.html): render segments to .mp4, .mkv, .webm or PNG frames, "
-                       "join them with vibra concat");
-    if (render::is_video_path(r.output) && ext != ".mp4" && ext != ".mkv" && ext != ".webm")
-      throw UsageError("--segment needs a video that keeps timestamps: write .mp4, .mkv or .webm (or PNG frames), "
-                       "not " + ext);
-  }
-
+/// Solve #1, the pre-pass: the run's mesh, frame clock, caption and
+/// segment, checked before any path is touched.
+std::unique_ptr<Trajectory> PreparedRender::solve_pre_pass() {
+  State& s = *state_;
+  const RenderRequest& r = s.r;
   std::vector<Note> notes;  // more at once than a frame shows: refused before any work
   for (const std::string& spec : r.scene.notes) notes.push_back(parse_note(spec));
   refuse_crowded_notes(notes, r.scene.width, r.scene.height);
@@ -408,80 +429,95 @@ PreparedRender::PreparedRender(const RenderRequest& request) : state_(std::make_
   std::unique_ptr<Trajectory> pre_pass = build_scene_runs(r.scene);  // reads the run's files (a road)
   const TimeMesh mesh = s.mesh = pre_pass->info().mesh;
   if (!std::isfinite(mesh.T)) throw UsageError("a render needs a finite end time: give T or periods");
+  const bool still = r.at.has_value();
   if (still && (*r.at < 0 || *r.at > mesh.T * (1 + 1e-12)))
     throw UsageError("--at " + short_number(*r.at) + " is outside the run [0, " + short_number(mesh.T) +
                      "]: choose a time inside it, or a longer T");
-
   if (still) r.scene.pacing.check_inside(mesh.T);  // a still's pacing is checked, though it shows one time
   s.speed = steady_speed(r.scene, mesh);
   const FrameClock& clock = s.clock.emplace(frame_clock_of(r.scene, mesh));
   const auto* runs = dynamic_cast<const ComparisonTrajectory*>(pre_pass.get());
-  const std::string caption = s.caption =
-      runs ? comparison_caption(r.scene.model, runs->comparison()) : run_caption(r.scene.model, *s.parameters, mesh);
-  render::FrameSegment& segment = s.segment = {0, 1, clock.frames()};
+  s.caption = runs ? comparison_caption(r.scene.model, runs->comparison()) : run_caption(r.scene.model, *s.parameters, mesh);
+  s.segment = {0, 1, clock.frames()};
   if (r.segment) {
-    segment = {r.segment->index, r.segment->count, clock.frames(), render_fingerprint(r, caption, clock.frames())};
-    if (segment.frames() == 0)
-      throw UsageError("segment " + std::to_string(segment.index) + "/" + std::to_string(segment.count) +
-                       " has no frames: the render has only " + std::to_string(segment.total) +
+    s.segment = {r.segment->index, r.segment->count, clock.frames(), render_fingerprint(r, s.caption, clock.frames())};
+    if (s.segment.frames() == 0)
+      throw UsageError("segment " + std::to_string(s.segment.index) + "/" + std::to_string(s.segment.count) +
+                       " has no frames: the render has only " + std::to_string(s.segment.total) +
                        ", so use at most that many segments");
   }
+  return pre_pass;
+}
 
-  // Every path the run will write, checked now that its inputs are known,
-  // before any work: the inputs, companions and frame names.
-  const fs::path companions = s.companions = page ? companion_folder(r.output) : fs::path();
-  if (!target.file.empty()) render::refuse_input_as_output(target.file);
-  if (page) check_companion_folder(companions, r.force);
-  if (r.segment && render::is_video_path(r.output)) check_segment_file(r, segment.file_name(r.output), segment);
-  if (frames) check_frame_names(r.output, segment);
-  if (r.skip_existing && !stream && already_complete(r, still ? Outputs{} : plan_outputs(r, segment, false, {}), segment)) {
-    const std::string done =
-        page || still ? r.output : r.segment && render::is_video_path(r.output) ? segment.file_name(r.output) : r.output;
-    if (!r.quiet) std::fprintf(stderr, "vibra: %s is already complete: skipped\n", done.c_str());
-    s.done = true;
-    return;
-  }
+/// Every path the run will write, checked now that its inputs are known,
+/// before any work: the inputs, companions and frame names. True when the
+/// output is already complete and --skip-existing skips it.
+bool PreparedRender::check_paths_or_skip(bool frames) {
+  State& s = *state_;
+  const RenderRequest& r = s.r;
+  const bool still = r.at.has_value();
+  s.companions = s.page ? companion_folder(r.output) : fs::path();
+  if (!s.target.file.empty()) render::refuse_input_as_output(s.target.file);
+  if (s.page) check_companion_folder(s.companions, r.force);
+  if (r.segment && render::is_video_path(r.output)) check_segment_file(r, s.segment.file_name(r.output), s.segment);
+  if (frames) check_frame_names(r.output, s.segment);
+  if (!r.skip_existing || s.stream ||
+      !already_complete(r, still ? Outputs{} : plan_outputs(r, s.segment, false, {}), s.segment))
+    return false;
+  const std::string done = s.page || still                                          ? r.output
+                           : r.segment && render::is_video_path(r.output) ? s.segment.file_name(r.output)
+                                                                            : r.output;
+  if (!r.quiet) std::fprintf(stderr, "vibra: %s is already complete: skipped\n", done.c_str());
+  s.done = true;
+  return true;
+}
+
+/// The outputs planned (a page's companions staged), the scene made, and
+/// every step of the pre-pass recorded: the scene's fixed view and plot
+/// ranges in constant memory, and for a page its time series and CSV.
+void PreparedRender::record_pre_pass(std::unique_ptr<Trajectory> pre_pass) {
+  State& s = *state_;
+  const RenderRequest& r = s.r;
   // A page's companions are made in a temporary folder, and take the place
   // of earlier ones only with the page, when the run is complete.
-  if (page) {
-    s.staged.emplace(companions.parent_path(), companions.filename().string());
-    s.page_file.emplace(target.file);
+  if (s.page) {
+    s.staged.emplace(s.companions.parent_path(), s.companions.filename().string());
+    s.page_file.emplace(s.target.file);
   }
-  s.outputs = still ? Outputs{} : plan_outputs(r, segment, stream, s.staged ? s.staged->path() : fs::path());
-
+  s.outputs = r.at ? Outputs{} : plan_outputs(r, s.segment, s.stream, s.staged ? s.staged->path() : fs::path());
   SceneConfig drawn = r.scene;
   if (r.video.transparent) drawn.colors.background = drawn.colors.background.with_alpha(0);  // cleared, not painted
-  s.scene = make_scene_for(drawn, *pre_pass, caption);
-  Scene& scene = *s.scene;
-
-  // Pre-pass: fixed view and plot ranges over the whole run, in constant
-  // memory; for a page also its time series and its CSV.
+  s.scene = make_scene_for(drawn, *pre_pass, s.caption);
+  const auto* runs = dynamic_cast<const ComparisonTrajectory*>(pre_pass.get());
   s.csv_name = fs::path(r.output).stem().string() + ".csv";
-  if (page) {
+  if (s.page) {
     if (runs) s.comparison_plots.emplace(*runs, r.scene.colors.bob);
     else s.page_plots.emplace(pre_pass->info(), page_panel_names(pre_pass->info()), r.scene.name);
     s.csv.emplace(s.staged->path() / s.csv_name, pre_pass->info().columns, r.csv_every);
   }
-  HistoryFeed(*pre_pass, scene, scene.sample_interval()).record_all([&](std::span<const double> row) {
+  HistoryFeed(*pre_pass, *s.scene, s.scene->sample_interval()).record_all([&](std::span<const double> row) {
     if (s.comparison_plots) s.comparison_plots->observe(*runs, row);
     if (s.page_plots) s.page_plots->observe(*pre_pass, row);
-    if (page) s.csv->write(pre_pass->index(), pre_pass->done(), row);
+    if (s.page) s.csv->write(pre_pass->index(), pre_pass->done(), row);
   });
-  pre_pass.reset();
-  runs = nullptr;  // it was the pre-pass
+}
 
-  // The render pass: the scene sees the history up to each frame's time
-  // (moving plots, trails), and frames between steps interpolate the
-  // solution (cubic Hermite).
+/// Solve #2, which feeds the frames: the scene sees the history up to each
+/// frame's time (moving plots, trails), and frames between steps
+/// interpolate the solution (cubic Hermite). A still is drawn now.
+void PreparedRender::start_render_pass() {
+  State& s = *state_;
+  const RenderRequest& r = s.r;
   s.trajectory = build_scene_runs(r.scene);
-  s.history.emplace(*s.trajectory, scene, scene.sample_interval());
-  auto row_at = [&s](double t) { return s.row_at(t); };
-  if (still) {
+  s.history.emplace(*s.trajectory, *s.scene, s.scene->sample_interval());
+  if (r.at) {
     // The frame that shows the still's time (or would), and its chain's frames before it.
+    const FrameClock& clock = *s.clock;
     const long long k = clock.first_frame_from(*r.at);
     const long long d = k < clock.frames() && clock.time(k) == *r.at ? clock.drawn_frame(k) : k;
-    replay_label_chain(scene, clock, d, r.scene.width, r.scene.height, false, row_at);
-    write_still(r, target, scene, row_at(*r.at));
+    auto row_at = [&s](double t) { return s.row_at(t); };
+    replay_label_chain(*s.scene, clock, d, r.scene.width, r.scene.height, false, row_at);
+    write_still(r, s.target, *s.scene, row_at(*r.at));
     s.done = true;
     return;
   }
@@ -490,6 +526,37 @@ PreparedRender::PreparedRender(const RenderRequest& request) : state_(std::make_
 }
 
 PreparedRender::~PreparedRender() = default;
+
+/// The render's own sinks (files, frames or a stream), their notes told once.
+std::unique_ptr<render::FrameSink> PreparedRender::open_sinks() {
+  const State& s = *state_;
+  const RenderRequest& r = s.r;
+  std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name},
+                                                 {"comment", render::markup_plain_text(s.caption)}};
+  if (r.segment) metadata["description"] = s.segment.tag();  // what vibra concat checks
+  if (s.stream) render::send_standard_output_to(s.target);  // a pipe or device: written as -o - is
+  auto sinks = render::make_frame_sinks(s.outputs.targets, r.scene.width, r.scene.height, r.scene.fps,
+                                        s.clock->frames(), r.video, metadata, s.segment.first());
+  if (!r.quiet)
+    for (const auto& note : sinks->notes()) std::fprintf(stderr, "vibra: %s\n", note.c_str());
+  return sinks;
+}
+
+/// A page's CSV and HTML written, then its companions and the page put in place together.
+void PreparedRender::commit_page() {
+  State& s = *state_;
+  const RenderRequest& r = s.r;
+  const FrameClock& clock = *s.clock;
+  s.csv->commit();
+  render::write_text(*s.page_file,
+                     page_html(r, s.outputs, clock, page_facts(r, clock.frames(), *s.parameters, s.mesh, s.speed),
+                               s.comparison_plots ? s.comparison_plots->take_panels() : s.page_plots->take_panels(),
+                               s.companions.filename().string() + "/" + s.csv_name));
+  s.staged->seal();
+  check_companion_folder(s.companions, r.force);  // again: the user may have put a file there meanwhile
+  // The earlier companions and page go only now, together (the temporaries then hold them, and go).
+  render::place_together({{s.staged->path(), s.companions}, {s.page_file->path(), s.page_file->final_path()}});
+}
 
 void PreparedRender::play() {
   State& s = *state_;
@@ -503,17 +570,7 @@ void PreparedRender::play() {
   const bool page = s.page;
   auto row_at = [&s](double t) { return s.row_at(t); };
 
-  std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name},
-                                                 {"comment", render::markup_plain_text(s.caption)}};
-  if (r.segment) metadata["description"] = segment.tag();  // what vibra concat checks
-  if (s.stream) render::send_standard_output_to(s.target);  // a pipe or device: written as -o - is
-  std::unique_ptr<render::FrameSink> own_sink;
-  if (!r.into) {
-    own_sink = render::make_frame_sinks(s.outputs.targets, r.scene.width, r.scene.height, r.scene.fps, clock.frames(),
-                                        r.video, metadata, segment.first());
-    if (!r.quiet)
-      for (const auto& note : own_sink->notes()) std::fprintf(stderr, "vibra: %s\n", note.c_str());
-  }
+  std::unique_ptr<render::FrameSink> own_sink = r.into ? nullptr : open_sinks();
   render::FrameSink* const sink = r.into ? r.into : own_sink.get();
   // A segment's earlier frames are not drawn, but the solver passes through
   // them (moving plots see every step) and the scene keeps up with them, so
@@ -543,17 +600,7 @@ void PreparedRender::play() {
   }
   if (own_sink) own_sink->finish();
   progress.finish(segment.frames());
-  if (page) {
-    s.csv->commit();
-    render::write_text(*s.page_file,
-                       page_html(r, s.outputs, clock, page_facts(r, clock.frames(), *s.parameters, s.mesh, s.speed),
-                                 s.comparison_plots ? s.comparison_plots->take_panels() : s.page_plots->take_panels(),
-                                 s.companions.filename().string() + "/" + s.csv_name));
-    s.staged->seal();
-    check_companion_folder(s.companions, r.force);  // again: the user may have put a file there meanwhile
-    // The earlier companions and page go only now, together (the temporaries then hold them, and go).
-    render::place_together({{s.staged->path(), s.companions}, {s.page_file->path(), s.page_file->final_path()}});
-  }
+  if (page) commit_page();
   if (!r.quiet && r.report_written)
     std::fprintf(stderr, "vibra: wrote %s\n",  // one line, a newline in a file name escaped
                  one_line_message(page ? page_written(r, s.target, clock.frames()) : sink->description(), 4096).c_str());

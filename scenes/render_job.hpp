@@ -12,6 +12,10 @@
 #include "scenes/frame_clock.hpp"
 #include "scenes/scene_config.hpp"
 
+namespace vibra {
+class Trajectory;
+}
+
 namespace vibra::scenes {
 
 struct RenderRequest {
@@ -67,6 +71,16 @@ class PreparedRender {
 
  private:
   struct State;
+  // The constructor's stages, in order (render_job.cpp).
+  bool check_output_kind();
+  std::unique_ptr<Trajectory> solve_pre_pass();
+  bool check_paths_or_skip(bool frames);
+  void record_pre_pass(std::unique_ptr<Trajectory> pre_pass);
+  void start_render_pass();
+  // play()'s stages.
+  std::unique_ptr<render::FrameSink> open_sinks();
+  void commit_page();
+
   std::unique_ptr<State> state_;
 };
 

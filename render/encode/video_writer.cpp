@@ -25,6 +25,7 @@ extern "C" {
 #include "render/encode/av_error.hpp"
 #include "render/encode/encoder_priority.hpp"
 #include "render/encode/huge_pages.hpp"
+#include "render/encode/video_formats.hpp"
 #include "render/encode/yuv420_converter.hpp"
 #include "render/encode/yuva_converter.hpp"
 #include "render/output/output_error.hpp"
@@ -76,81 +77,14 @@ int renew_frame_pixels(AVFrame* frame) {
   return allocate_frame_pixels(frame);
 }
 
-/// How each codec is driven. Quality presets {draft, medium, high}:
-///   h264    crf 28 / 23 / 18  (x264, 0..51, lower is better; 23 is x264's default)
-///   vp9     crf 40 / 32 / 24  (0..63, constant quality: crf with b:v 0)
-///   vp8     crf 20 / 10 / 4   (4..63, constrained quality under a 4 Mb/s cap)
-///   theora  q    5 /  7 / 9   (0..10, higher is better)
-///   flv     q   10 /  5 / 2   (quantizer 2..31, lower is better)
-///   gif     fixed palette, no quality setting
-///   raw     YUV 4:2:0 as it goes to the encoders, no quality setting
-/// Lossless (h264 and vp9 only): x264 at qp 0, VP9 with lossless=1; both
-/// decode to exactly the YUV 4:2:0 frames they were given.
-struct Codec {
-  const char* name;     ///< as in VideoOptions::codec
-  const char* label;    ///< for messages
-  const char* encoder;  ///< FFmpeg encoder name
-  std::array<int, 3> quality;
-  int lowest, highest;  ///< accepted explicit crf
+/// The writer's codec and container, checked against the options.
+struct FormatChoice {
+  const Container& container;
+  const Codec& codec;
+  const AVCodec* encoder;
+  const AVOutputFormat* muxer;
+  bool alpha, lossless;
 };
-
-constexpr Codec kCodecs[] = {
-    {"h264", "H.264", "libx264", {28, 23, 18}, 0, 51},
-    {"vp9", "VP9", "libvpx-vp9", {40, 32, 24}, 0, 63},
-    {"vp8", "VP8", "libvpx", {20, 10, 4}, 4, 63},
-    {"theora", "Theora", "libtheora", {5, 7, 9}, 0, 10},
-    {"flv", "FLV1", "flv", {10, 5, 2}, 2, 31},
-    {"gif", "GIF", "gif", {0, 0, 0}, 0, 0},
-    {"raw", "raw YUV 4:2:0", "rawvideo", {0, 0, 0}, 0, 0},
-    {"prores", "ProRes 4444", "prores_ks", {0, 0, 0}, 0, 0},
-};
-
-struct Container {
-  const char* extension;
-  const char* format;  ///< FFmpeg muxer name
-  const char* codec;   ///< default codec
-};
-
-constexpr Container kContainers[] = {
-    {".mp4", "mp4", "h264"},   {".mkv", "matroska", "h264"}, {".webm", "webm", "vp9"},
-    {".ogv", "ogg", "theora"}, {".gif", "gif", "gif"},       {".flv", "flv", "flv"},
-    {".yuv", "rawvideo", "raw"},  // for other encoders: ffmpeg -f rawvideo -pix_fmt yuv420p -s WxH -r FPS -i x.yuv
-    {".mov", "mov", "prores"},    // ProRes 4444 with alpha, for video editors
-    {".nut", "nut", "h264"},      // FFmpeg's own container, good for pipes
-};
-
-/// The codecs that carry alpha, and the pixel format they take it in.
-bool carries_alpha(const std::string& codec) { return codec == "vp9" || codec == "prores"; }
-
-/// A container by its muxer name, for streams (-o - --format nut).
-const Container* container_named(const std::string& format) {
-  for (const Container& c : kContainers)
-    if (format == c.format) return &c;
-  return nullptr;
-}
-
-constexpr const char* kX264Presets[] = {"ultrafast", "superfast", "veryfast", "faster", "fast",
-                                        "medium",    "slow",      "slower",   "veryslow", "placebo"};
-
-const Codec& find_codec(const std::string& name) {
-  for (const Codec& c : kCodecs)
-    if (name == c.name) return c;
-  throw OutputError("unknown video codec '" + name + "': choose h264, vp9, vp8, theora, gif, flv or raw");
-}
-
-const Container* container_for(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  for (const Container& c : kContainers)
-    if (ext == c.extension) return &c;
-  return nullptr;
-}
-
-const Container& find_container(const fs::path& path) {
-  if (const Container* c = container_for(path)) return *c;
-  throw OutputError("cannot tell the video format of '" + path.string() +
-                    "': name it .mp4 (H.264), .webm (VP9), .mkv (H.264), .ogv (Theora), .gif, .flv or .yuv (raw)");
-}
 
 /// A fixed palette suited to line art: a 6x6x6 colour cube (216 colours,
 /// black and white among them) and 40 more greys, because anti-aliased dark
@@ -249,6 +183,12 @@ struct VideoWriter::Impl {
   void convert(const std::uint8_t* argb32, int stride, const Damage* changed, AVFrame* into);
   void encode(AVFrame* input);
   void work();
+  // The constructor's stages, in order.
+  void size_frames(const VideoOptions&, const Codec&, std::vector<std::string>& notes);
+  void open_encoder(const VideoOptions&, const FormatChoice&);
+  void allocate_frames();
+  void open_output(const VideoOptions&, const Container&);
+  void start_worker();
 };
 
 VideoWriter::Impl::~Impl() {
@@ -355,202 +295,189 @@ bool VideoWriter::is_video_path(const fs::path& path) { return container_for(pat
 
 std::string VideoWriter::alpha_problem(const fs::path& path, const std::string& codec) {
   const Container* container = container_for(path);
-  if (!container || carries_alpha(codec.empty() ? container->codec : codec)) return "";
+  if (!container || carries_alpha(find_codec(codec.empty() ? container->codec : codec))) return "";
   return (codec.empty() ? path.extension().string() + " video" : "--codec " + codec) +
          " cannot be transparent: write .webm (VP9 with alpha), .mov (ProRes 4444 with alpha) or PNG frames such as "
          "frames/tmp_%04d.png";
 }
 
-VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
-  av_log_set_level(AV_LOG_ERROR);  // x264 and the muxers are chatty
+namespace {
+void check_size_and_rate(const VideoOptions& o) {
   if (o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192)
     throw OutputError("video size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
                       " is out of range: width and height must be 1..8192");
   if (o.fps < 1 || o.fps > 240)
     throw OutputError("video fps " + std::to_string(o.fps) + " is out of range: choose 1..240");
-  const bool streaming = final_path == kStandardOutput;
-  const Container* named = streaming ? container_named(o.format) : nullptr;
-  if (streaming && (!named || o.format == "rawvideo" || o.format == "gif"))
-    throw OutputError("-o - streams a video to standard output: add --format y4m, nut or matroska");
-  const Container& container = streaming ? *named : find_container(final_path);
+}
+
+const Container& container_of(const fs::path& final_path, const VideoOptions& o) {
+  if (final_path != VideoWriter::kStandardOutput) return find_container(final_path);
+  const Container* named = streaming_container(o.format);
+  if (!named) throw OutputError("-o - streams a video to standard output: add --format y4m, nut or matroska");
+  return *named;
+}
+
+/// Refuses a quality, preset or transparency the codec cannot give; notes what it ignores.
+void check_codec_options(const Codec& codec, const VideoOptions& o, std::vector<std::string>& notes) {
+  const bool has_quality = codec.highest > 0, lossless = o.quality == VideoQuality::lossless;
+  if (o.crf >= 0 && has_quality && (o.crf < codec.lowest || o.crf > codec.highest))
+    throw OutputError("crf " + std::to_string(o.crf) + " is out of range for " + codec.label + ": choose " +
+                      std::to_string(codec.lowest) + ".." + std::to_string(codec.highest));
+  bool known_preset = false;
+  for (const char* const* p = codec.presets; p && *p; ++p) known_preset |= o.preset == *p;
+  if (!o.preset.empty() && codec.presets && !known_preset)
+    throw OutputError("unknown " + std::string(codec.presets_of) + " preset '" + o.preset +
+                      "': choose ultrafast, superfast, veryfast, faster, fast, medium, slow, slower or veryslow");
+  if (lossless && !codec.lossless)
+    throw OutputError("--quality lossless needs " + codec_labels(&Codec::lossless) + ", not " + codec.label +
+                      ": write .mp4, .mkv or .webm");
+  if (lossless && o.crf >= 0) throw OutputError("--quality lossless and --crf exclude each other: give one of them");
+  if (!o.preset.empty() && !codec.presets)
+    notes.push_back("the preset applies to " + codec_labels(&Codec::has_presets) + " only: ignored");
+  if (!has_quality && o.crf >= 0) notes.push_back(std::string(codec.label) + " has no quality setting: crf ignored");
+  if (o.transparent && !carries_alpha(codec))
+    throw OutputError(std::string(codec.label) +
+                      " video cannot be transparent: write .webm (VP9 with alpha), .mov (ProRes 4444 with alpha) or "
+                      "PNG frames such as frames/tmp_%04d.png");
+  if (codec.smooth_fps && o.fps > codec.smooth_fps) {
+    char shortest[32];
+    std::snprintf(shortest, sizeof shortest, "%g", 1.0 / codec.smooth_fps);
+    notes.push_back(std::string(codec.label) + " viewers slow down frames shorter than " + shortest + " s: use " +
+                    std::to_string(codec.smooth_fps) + " fps or less");
+  }
+}
+
+FormatChoice choose_format(const fs::path& final_path, const VideoOptions& o, std::vector<std::string>& notes) {
+  const Container& container = container_of(final_path, o);
   const Codec& codec = find_codec(o.codec.empty() ? container.codec : o.codec);
-  const std::string codec_name = codec.name;
   const AVCodec* encoder = avcodec_find_encoder_by_name(codec.encoder);
   if (!encoder)
-    throw OutputError(std::string("this FFmpeg has no ") + codec.encoder +
-                      " encoder: install libavcodec-extra or choose " + (codec_name == "h264" ? ".webm" : ".mp4"));
+    throw OutputError(std::string("this FFmpeg has no ") + codec.encoder + " encoder: install libavcodec-extra or choose " +
+                      codec.fallback);
   const AVOutputFormat* muxer = av_guess_format(container.format, nullptr, nullptr);
   if (!muxer || avformat_query_codec(muxer, encoder->id, FF_COMPLIANCE_NORMAL) != 1)
     throw OutputError(std::string(container.extension) + " files cannot hold " + codec.label +
                       " video: choose another codec or extension");
-  const bool is_gif = codec_name == "gif", has_quality = codec.highest > 0;
-  if (o.crf >= 0 && has_quality && (o.crf < codec.lowest || o.crf > codec.highest))
-    throw OutputError("crf " + std::to_string(o.crf) + " is out of range for " + codec.label + ": choose " +
-                      std::to_string(codec.lowest) + ".." + std::to_string(codec.highest));
-  if (!o.preset.empty() && codec_name == "h264" &&
-      std::find_if(std::begin(kX264Presets), std::end(kX264Presets), [&](const char* p) { return o.preset == p; }) ==
-          std::end(kX264Presets))
-    throw OutputError("unknown x264 preset '" + o.preset +
-                      "': choose ultrafast, superfast, veryfast, faster, fast, medium, slow, slower or veryslow");
-  const bool lossless = o.quality == VideoQuality::lossless;
-  if (lossless && codec_name != "h264" && codec_name != "vp9")
-    throw OutputError(std::string("--quality lossless needs H.264 or VP9, not ") + codec.label +
-                      ": write .mp4, .mkv or .webm");
-  if (lossless && o.crf >= 0) throw OutputError("--quality lossless and --crf exclude each other: give one of them");
-  if (!o.preset.empty() && codec_name != "h264") notes_.push_back("the preset applies to H.264 only: ignored");
-  if (!has_quality && o.crf >= 0) notes_.push_back(std::string(codec.label) + " has no quality setting: crf ignored");
-  const bool alpha = o.transparent || codec_name == "prores";  // ProRes 4444 always has an alpha plane
-  if (o.transparent && !carries_alpha(codec_name))
-    throw OutputError(std::string(codec.label) +
-                      " video cannot be transparent: write .webm (VP9 with alpha), .mov (ProRes 4444 with alpha) or "
-                      "PNG frames such as frames/tmp_%04d.png");
-  if (is_gif && o.fps > 50) notes_.push_back("GIF viewers slow down frames shorter than 0.02 s: use 50 fps or less");
+  check_codec_options(codec, o, notes);
+  return {container, codec, encoder, muxer, o.transparent || codec.always_alpha, o.quality == VideoQuality::lossless};
+}
+}  // namespace
 
-  impl_ = std::make_unique<Impl>(final_path);  // checks that the directory is writable
-  Impl& m = *impl_;
-  m.width = o.width;
-  m.height = o.height;
-  // x264 refuses odd sizes in 4:2:0; the other encoders take them as they are.
-  const bool even = codec_name == "h264";
-  m.coded_width = even ? (o.width + 1) & ~1 : o.width;
-  m.coded_height = even ? (o.height + 1) & ~1 : o.height;
-  if (m.coded_width != o.width || m.coded_height != o.height)
-    notes_.push_back(std::string(codec.label) + " needs even sizes: " + std::to_string(o.width) + "x" +
-                     std::to_string(o.height) + " encoded as " + std::to_string(m.coded_width) + "x" +
-                     std::to_string(m.coded_height));
+/// The frame size the encoder codes (even for H.264), and the queue's length.
+void VideoWriter::Impl::size_frames(const VideoOptions& o, const Codec& codec, std::vector<std::string>& notes) {
+  width = o.width;
+  height = o.height;
+  coded_width = codec.even_size ? (o.width + 1) & ~1 : o.width;
+  coded_height = codec.even_size ? (o.height + 1) & ~1 : o.height;
+  if (coded_width != o.width || coded_height != o.height)
+    notes.push_back(std::string(codec.label) + " needs even sizes: " + std::to_string(o.width) + "x" +
+                    std::to_string(o.height) + " encoded as " + std::to_string(coded_width) + "x" +
+                    std::to_string(coded_height));
   // Bounded queue: a few frames, fewer when frames are huge.
-  const std::size_t frame_bytes = std::size_t(m.coded_width) * m.coded_height * 4;
-  m.capacity = frame_bytes > (64u << 20) ? 1 : 3;
+  const std::size_t frame_bytes = std::size_t(coded_width) * coded_height * 4;
+  capacity = frame_bytes > (64u << 20) ? 1 : 3;
+}
 
-  m.check(avformat_alloc_output_context2(&m.format, muxer, nullptr, m.streaming ? nullptr : m.file->path().c_str()),
-          "setting up the container", false);
-  m.stream = avformat_new_stream(m.format, nullptr);
-  m.codec = avcodec_alloc_context3(encoder);
-  m.packet = av_packet_alloc();
-  if (!m.stream || !m.codec || !m.packet) m.check(AVERROR(ENOMEM), "setting up the encoder", false);
-
-  AVCodecContext* c = m.codec;
-  c->width = m.coded_width;
-  c->height = m.coded_height;
+/// The container's context and the encoder, opened with the codec's tuning.
+void VideoWriter::Impl::open_encoder(const VideoOptions& o, const FormatChoice& f) {
+  check(avformat_alloc_output_context2(&format, f.muxer, nullptr, streaming ? nullptr : file->path().c_str()),
+        "setting up the container", false);
+  stream = avformat_new_stream(format, nullptr);
+  codec = avcodec_alloc_context3(f.encoder);
+  packet = av_packet_alloc();
+  if (!stream || !codec || !packet) check(AVERROR(ENOMEM), "setting up the encoder", false);
+  AVCodecContext* c = codec;
+  c->width = coded_width;
+  c->height = coded_height;
   c->time_base = AVRational{1, o.fps};  // pts = frame index
   c->framerate = AVRational{o.fps, 1};
   c->gop_size = 5 * o.fps;  // seeking stays quick; key frames, the bulk of a line-art video, stay few
-  c->pix_fmt = is_gif                   ? AV_PIX_FMT_PAL8
-               : codec_name == "prores" ? AV_PIX_FMT_YUVA444P10LE
-               : alpha                  ? AV_PIX_FMT_YUVA420P
-                                        : AV_PIX_FMT_YUV420P;
-  m.stream->time_base = c->time_base;  // a hint: the muxer may choose another in write_header
-  m.stream->avg_frame_rate = c->framerate;
-  if (!is_gif) {  // the tags say what the conversion below does
+  c->pix_fmt = f.alpha ? f.codec.alpha_pixels : f.codec.pixels;
+  stream->time_base = c->time_base;  // a hint: the muxer may choose another in write_header
+  stream->avg_frame_rate = c->framerate;
+  if (c->pix_fmt != AV_PIX_FMT_PAL8) {  // the tags say what the conversion does
     c->color_range = AVCOL_RANGE_MPEG;
     c->colorspace = AVCOL_SPC_BT709;
     c->color_primaries = AVCOL_PRI_BT709;
     c->color_trc = AVCOL_TRC_BT709;
   }
-  const int q = o.crf >= 0 ? o.crf : lossless ? 0 : codec.quality[static_cast<int>(o.quality)];
-  const std::string crf = std::to_string(q);
+  const int q = o.crf >= 0 ? o.crf : f.lossless ? 0 : f.codec.quality[static_cast<int>(o.quality)];
   AVDictionary* settings = nullptr;
-  if (codec_name == "h264") {
-    // The default, measured on the pendulum diagram at 1280x720 (encoder
-    // alone, 2 threads, crf 23, 300 frames; PSNR and SSIM against the source):
-    //   medium                          2.30 s CPU  202 KiB  52.98 dB  0.99969
-    //   veryfast                        1.50 s      209 KiB  51.08 dB  0.99952
-    //   veryfast, no B-frames, me dia   1.13 s      230 KiB  51.38 dB  0.99954
-    //     + subme 1                     1.05 s      241 KiB  51.29 dB  0.99951
-    //     + subme 1, 4x4 transforms     1.06 s      239 KiB  51.34 dB  0.99953  <- default
-    //     + subme 0, 4x4 transforms     0.94 s      269 KiB  51.25 dB  0.99952
-    // B-frames buy little where most of the picture stands still, the
-    // diamond search finds a diagram's small motions as well as hex, one
-    // sub-pixel pass is enough for them, and the sharp edges of line art code
-    // no worse in 4x4 transforms than 8x8 (on the diagram with plot as well).
-    // tune animation gave the same SSIM per byte as no tune, so none is set.
-    // A --preset given by the user is x264's own preset, untouched.
-    av_dict_set(&settings, "preset", o.preset.empty() ? "veryfast" : o.preset.c_str(), 0);
-    if (o.preset.empty()) av_dict_set(&settings, "x264-params", "bframes=0:me=dia:subme=1:8x8dct=0", 0);
-    // A ceiling: x264 signals the lowest profile its tools need (Main for
-    // the default, High from superfast up, Constrained Baseline for ultrafast).
-    // Lossless coding (qp 0) is High 4:4:4 Predictive's alone, even in 4:2:0.
-    av_dict_set(&settings, "profile", lossless ? "high444" : "high", 0);
-    av_dict_set(&settings, lossless ? "qp" : "crf", crf.c_str(), 0);
-    // One frame thread per core, not x264's own 1.5 per core: the drawing
-    // thread needs a share of the cores too, and on two cores the example
-    // lecture took 1637 ms with two threads against 1721 ms with x264's
-    // choice (nine alternating rounds); x264 alone is no slower either.
-    c->thread_count = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  } else if (codec_name == "vp9") {
-    av_dict_set(&settings, lossless ? "lossless" : "crf", lossless ? "1" : crf.c_str(), 0);
-    c->bit_rate = 0;  // with crf: constant quality
-    av_dict_set(&settings, "row-mt", "1", 0);
-    av_dict_set(&settings, "deadline", "realtime", 0);
-    av_dict_set(&settings, "cpu-used", "8", 0);
-    c->thread_count = 2;
-  } else if (codec_name == "vp8") {
-    av_dict_set(&settings, "crf", crf.c_str(), 0);
-    c->bit_rate = 4'000'000;  // VP8's crf is constrained quality: it needs a cap
-    av_dict_set(&settings, "deadline", "realtime", 0);
-    av_dict_set(&settings, "cpu-used", "8", 0);
-    c->thread_count = 1;  // libvpx's VP8 threads busy-wait: on two cores one thread is faster
-  } else if (codec_name == "prores") {
-    av_dict_set(&settings, "profile", "4444", 0);
-    av_dict_set(&settings, "vendor", "apl0", 0);  // as Apple's encoder tags it: some editors look for it
-    c->thread_count = 0;  // one slice thread per core: ProRes costs about 0.12 s of CPU per 720p frame
-  } else if (codec_name == "theora" || codec_name == "flv") {
-    c->flags |= AV_CODEC_FLAG_QSCALE;
-    c->global_quality = FF_QP2LAMBDA * q;
-  }
+  f.codec.tune({c, &settings, q, f.lossless, o.preset});
   if (o.threads > 0) c->thread_count = o.threads;
-  if (m.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  if (format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   const EncoderPriority started;
-  const int opened = avcodec_open2(c, encoder, &settings);
+  const int opened = avcodec_open2(c, f.encoder, &settings);
   started.lower_started_since();
   av_dict_free(&settings);
-  m.check(opened, std::string("opening the ") + codec.encoder + " encoder", false);
-  m.check(avcodec_parameters_from_context(m.stream->codecpar, c), "setting up the stream", false);
+  check(opened, std::string("opening the ") + f.codec.encoder + " encoder", false);
+  check(avcodec_parameters_from_context(stream->codecpar, c), "setting up the stream", false);
+}
 
-  // The queue, one frame with the worker and one being converted.
-  for (std::size_t i = 0; i < m.capacity + 2; ++i) {
+/// The queue's frames, one with the worker and one being converted, and the
+/// conversion the pixel format needs.
+void VideoWriter::Impl::allocate_frames() {
+  for (std::size_t i = 0; i < capacity + 2; ++i) {
     AVFrame* frame = av_frame_alloc();
-    if (!frame) m.check(AVERROR(ENOMEM), "allocating a frame", false);
-    m.frames.push_back(frame);
-    frame->format = c->pix_fmt;
-    frame->width = c->width;
-    frame->height = c->height;
-    m.check(allocate_frame_pixels(frame), "allocating a frame", false);
-    m.free_frames.push_back(frame);
+    if (!frame) check(AVERROR(ENOMEM), "allocating a frame", false);
+    frames.push_back(frame);
+    frame->format = codec->pix_fmt;
+    frame->width = codec->width;
+    frame->height = codec->height;
+    check(allocate_frame_pixels(frame), "allocating a frame", false);
+    free_frames.push_back(frame);
   }
-  if (is_gif)
-    m.palette = std::make_unique<GifPalette>();
-  else if (alpha)
-    m.alpha_converter = std::make_unique<YuvaConverter>(
-        codec_name == "prores" ? YuvaConverter::Layout::yuva444p10 : YuvaConverter::Layout::yuva420p, m.width, m.height);
+  if (codec->pix_fmt == AV_PIX_FMT_PAL8)
+    palette = std::make_unique<GifPalette>();
+  else if (codec->pix_fmt == AV_PIX_FMT_YUVA444P10LE)
+    alpha_converter = std::make_unique<YuvaConverter>(YuvaConverter::Layout::yuva444p10, width, height);
+  else if (codec->pix_fmt == AV_PIX_FMT_YUVA420P)
+    alpha_converter = std::make_unique<YuvaConverter>(YuvaConverter::Layout::yuva420p, width, height);
   else
-    m.converter = std::make_unique<Yuv420Converter>(m.width, m.height, m.coded_width, m.coded_height);
+    converter = std::make_unique<Yuv420Converter>(width, height, coded_width, coded_height);
+}
 
+/// The file (or standard output) opened and the container's header written.
+void VideoWriter::Impl::open_output(const VideoOptions& o, const Container& container) {
   for (const auto& [key, value] : o.metadata)
-    m.check(av_dict_set(&m.format->metadata, key.c_str(), value.c_str(), 0), "setting metadata", false);
-  if (m.streaming) {
-    m.format->pb = open_standard_output_io();
-    if (!m.format->pb) m.check(AVERROR(ENOMEM), "opening standard output", true);
+    check(av_dict_set(&format->metadata, key.c_str(), value.c_str(), 0), "setting metadata", false);
+  if (streaming) {
+    format->pb = open_standard_output_io();
+    if (!format->pb) check(AVERROR(ENOMEM), "opening standard output", true);
   } else {
-    m.check(avio_open(&m.format->pb, m.file->path().c_str(), AVIO_FLAG_WRITE), "opening the file", true);
+    check(avio_open(&format->pb, file->path().c_str(), AVIO_FLAG_WRITE), "opening the file", true);
   }
   AVDictionary* header = nullptr;
-  if (codec_name == "h264" && std::string(container.format) == "mp4")
-    av_dict_set(&header, "movflags", "+faststart", 0);  // index first: browsers play while loading
-  const int written = avformat_write_header(m.format, &header);
+  if (container.movflags) av_dict_set(&header, "movflags", container.movflags, 0);
+  const int written = avformat_write_header(format, &header);
   av_dict_free(&header);
-  m.check(written, "writing the header", true);
-  m.next_pts = o.first_frame;
-  // The worker lowers its own priority before the writer is ready, so the
-  // threads are as they will stay from the first write.
+  check(written, "writing the header", true);
+  next_pts = o.first_frame;
+}
+
+/// The encoding thread, which lowers its own priority before the writer is
+/// ready, so the threads are as they will stay from the first write.
+void VideoWriter::Impl::start_worker() {
   std::promise<void> lowered;
   std::future<void> worker_ready = lowered.get_future();
-  m.worker = std::thread([&m, &lowered] {
+  worker = std::thread([this, &lowered] {
     EncoderPriority::lower_this_thread();
     lowered.set_value();
-    m.work();
+    work();
   });
   worker_ready.wait();
+}
+
+VideoWriter::VideoWriter(const fs::path& final_path, const VideoOptions& o) {
+  av_log_set_level(AV_LOG_ERROR);  // x264 and the muxers are chatty
+  check_size_and_rate(o);
+  const FormatChoice format = choose_format(final_path, o, notes_);
+  impl_ = std::make_unique<Impl>(final_path);  // checks that the directory is writable
+  impl_->size_frames(o, format.codec, notes_);
+  impl_->open_encoder(o, format);
+  impl_->allocate_frames();
+  impl_->open_output(o, format.container);
+  impl_->start_worker();
 }
 
 VideoWriter::~VideoWriter() = default;
