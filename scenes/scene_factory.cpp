@@ -156,76 +156,105 @@ std::unique_ptr<Scene> make_scene_for(const SceneConfig& config, const Trajector
   return make_scene(config, runs.info(), caption);
 }
 
+namespace {
+/// A comparison's members as its scene draws them: their columns and legend entries.
+struct ComparisonMembers {
+  std::vector<MemberColumns> columns;
+  std::vector<LegendEntry> legend;
+};
+
+ComparisonMembers comparison_members(const SceneConfig& config, const ComparisonTrajectory& runs) {
+  const Comparison& comparison = runs.comparison();
+  ComparisonMembers m;
+  for (size_t i = 0; i < comparison.size(); ++i) {
+    m.columns.push_back(MemberColumns::of(runs, i));
+    m.legend.push_back({member_markup(comparison, i), member_color(config.colors.bob, i), false,
+                        m.columns[i].reading([](std::span<const double> row) { return row[1]; }),
+                        [ends = runs.early_ends(), i] { return (*ends)[i]; }});
+    // --equation with a comparison of schemes: each scheme's update formula under its name.
+    if (config.equation && comparison.request().key == "scheme")
+      m.legend.back().formula = std::string(scheme_info(comparison.trajectory(i).info().mesh.scheme).formula);
+  }
+  return m;
+}
+
+/// Layout plot: every member's curve in one panel, with the exact solution(s).
+std::unique_ptr<Scene> comparison_plot_scene(const SceneConfig& config, const ComparisonTrajectory& runs,
+                                             const SceneStyle& style, ComparisonMembers m) {
+  const Comparison& comparison = runs.comparison();
+  const TrajectoryInfo& first = comparison.trajectory(0).info();
+  const bool shared_exact = comparison.same_problem();
+  const double factor = display_factor(first.columns[1]);
+  PanelSpec panel{quantity_markup(first.columns[1]), {}};
+  for (size_t i = 0; i < m.columns.size(); ++i) panel.series.push_back(main_series(m.columns[i], factor, m.legend[i].color));
+  for (size_t i = 0; i < m.columns.size(); ++i) {
+    const auto& exact = comparison.trajectory(i).info().exact;
+    if (exact && (!shared_exact || i == 0))
+      panel.series.push_back(exact_series(exact, factor, shared_exact ? render::palette::ink : m.legend[i].color));
+  }
+  if (first.exact)
+    m.legend.push_back({first.exact_label + (shared_exact ? "" : " (dashed)"),
+                        shared_exact ? render::palette::ink : render::palette::faint, true});
+  return std::make_unique<PlotScene>(config.width, config.height, runs.info(), style, std::vector{std::move(panel)},
+                                     std::move(m.legend));
+}
+
+/// Layout grid: each member in a panel of its own, named on its axis: no legend needed.
+std::unique_ptr<Scene> comparison_grid_scene(const SceneConfig& config, const ComparisonTrajectory& runs,
+                                             const SceneStyle& style, const ComparisonMembers& m) {
+  const Comparison& comparison = runs.comparison();
+  const TrajectoryInfo& first = comparison.trajectory(0).info();
+  const double factor = display_factor(first.columns[1]);
+  std::vector<PanelSpec> panels;
+  for (size_t i = 0; i < m.columns.size(); ++i) {
+    PanelSpec panel{quantity_markup(first.columns[1]) + "  " + m.legend[i].label,
+                    {main_series(m.columns[i], factor, m.legend[i].color)}};
+    if (const auto& exact = comparison.trajectory(i).info().exact)
+      panel.series.push_back(exact_series(exact, factor, render::palette::ink));
+    panels.push_back(std::move(panel));
+  }
+  return std::make_unique<PlotScene>(config.width, config.height, runs.info(), style, std::move(panels));
+}
+
+/// One member's scene settings for the comparison's diagram: its run's colour.
+SceneConfig member_config(const SceneConfig& config, render::Color color) {
+  SceneConfig member = config;
+  member.colors.bob = color;
+  // Here a hue names a run: the forces (drawn for the first run) are in
+  // charcoal, not in the hues of runs, unless a scene file chose theirs.
+  const SceneColors defaults;
+  for (auto [force, by_default] : {std::pair{&member.colors.gravity, defaults.gravity},
+                                   {&member.colors.wire_force, defaults.wire_force}, {&member.colors.drag, defaults.drag}})
+    if (*force == by_default) *force = render::palette::charcoal;
+  // Each member would choose its own factor from its own run: one scale for
+  // all, the one given or true scale, keeps the ghosts comparable.
+  if (member.exaggerate == 0) member.exaggerate = 1;
+  return member;
+}
+}  // namespace
+
 std::unique_ptr<Scene> make_comparison_scene(const SceneConfig& config, const ComparisonTrajectory& runs,
                                              const std::string& caption) {
   check_panel_options(config);
   const Comparison& comparison = runs.comparison();
-  const TrajectoryInfo& info = runs.info();
-  const SceneStyle style = style_of(config, info, caption);
-  std::vector<MemberColumns> columns;
-  std::vector<LegendEntry> legend;
-  for (size_t i = 0; i < comparison.size(); ++i) {
-    columns.push_back(MemberColumns::of(runs, i));
-    legend.push_back({member_markup(comparison, i), member_color(config.colors.bob, i), false,
-                      columns[i].reading([](std::span<const double> row) { return row[1]; }),
-                      [ends = runs.early_ends(), i] { return (*ends)[i]; }});
-    // --equation with a comparison of schemes: each scheme's update formula under its name.
-    if (config.equation && comparison.request().key == "scheme")
-      legend.back().formula = std::string(scheme_info(comparison.trajectory(i).info().mesh.scheme).formula);
-  }
-  const TrajectoryInfo& first = comparison.trajectory(0).info();
-  auto exact_of = [&](size_t i) -> const std::function<double(double)>& { return comparison.trajectory(i).info().exact; };
-  const bool shared_exact = comparison.same_problem();
-  const std::string quantity = quantity_markup(first.columns[1]);
-  const double factor = display_factor(first.columns[1]);
-
-  if (config.layout == Layout::plot) {
-    PanelSpec panel{quantity, {}};
-    for (size_t i = 0; i < columns.size(); ++i) panel.series.push_back(main_series(columns[i], factor, legend[i].color));
-    for (size_t i = 0; i < columns.size(); ++i)
-      if (exact_of(i) && (!shared_exact || i == 0))
-        panel.series.push_back(exact_series(exact_of(i), factor, shared_exact ? render::palette::ink : legend[i].color));
-    if (first.exact)
-      legend.push_back({first.exact_label + (shared_exact ? "" : " (dashed)"),
-                        shared_exact ? render::palette::ink : render::palette::faint, true});
-    return std::make_unique<PlotScene>(config.width, config.height, info, style, std::vector{std::move(panel)},
-                                       std::move(legend));
-  }
-  if (config.layout == Layout::grid) {
-    // Each member in a panel of its own, named on its axis: no legend needed.
-    std::vector<PanelSpec> panels;
-    for (size_t i = 0; i < columns.size(); ++i) {
-      PanelSpec panel{quantity + "  " + legend[i].label, {main_series(columns[i], factor, legend[i].color)}};
-      if (exact_of(i)) panel.series.push_back(exact_series(exact_of(i), factor, render::palette::ink));
-      panels.push_back(std::move(panel));
-    }
-    return std::make_unique<PlotScene>(config.width, config.height, info, style, std::move(panels));
-  }
-
-  if (config.energy_bars)
-    throw UsageError("energy bars show one run's energy: drop --energy-bars, or --compare");
+  const SceneStyle style = style_of(config, runs.info(), caption);
+  ComparisonMembers m = comparison_members(config, runs);
+  if (config.layout == Layout::plot) return comparison_plot_scene(config, runs, style, std::move(m));
+  if (config.layout == Layout::grid) return comparison_grid_scene(config, runs, style, m);
+  if (config.energy_bars) throw UsageError("energy bars show one run's energy: drop --energy-bars, or --compare");
   std::vector<QuantityPanelSpec> panels;
-  for (const auto& name : config.panels) panels.push_back(comparison_panel(name, comparison, columns, legend));
+  for (const auto& name : config.panels) panels.push_back(comparison_panel(name, comparison, m.columns, m.legend));
   const DiagramKind& kind = diagram_for(config);
   std::vector<ComparisonDiagram::Member> members;
-  for (size_t i = 0; i < columns.size(); ++i) {
-    SceneConfig member = config;
-    member.colors.bob = legend[i].color;
-    // Here a hue names a run: the forces (drawn for the first run) are in
-    // charcoal, not in the hues of runs, unless a scene file chose theirs.
-    const SceneColors defaults;
-    for (auto [force, by_default] : {std::pair{&member.colors.gravity, defaults.gravity},
-                                     {&member.colors.wire_force, defaults.wire_force}, {&member.colors.drag, defaults.drag}})
-      if (*force == by_default) *force = render::palette::charcoal;
-    // Each member would choose its own factor from its own run: one scale for
-    // all, the one given or true scale, keeps the ghosts comparable.
-    if (member.exaggerate == 0) member.exaggerate = 1;
-    members.push_back({kind.make({member, comparison.parameters(i), comparison.trajectory(i).info()}), columns[i],
-                       std::move(legend[i])});
-  }
+  for (size_t i = 0; i < m.columns.size(); ++i)
+    members.push_back({kind.make({member_config(config, m.legend[i].color), comparison.parameters(i),
+                                  comparison.trajectory(i).info()}),
+                       m.columns[i], std::move(m.legend[i])});
   return std::make_unique<SystemScene>(
-      config.width, config.height, info, style,
-      std::make_unique<ComparisonDiagram>(std::move(members), shared_exact, first.exact_label), std::move(panels));
+      config.width, config.height, runs.info(), style,
+      std::make_unique<ComparisonDiagram>(std::move(members), comparison.same_problem(),
+                                          comparison.trajectory(0).info().exact_label),
+      std::move(panels));
 }
 
 }  // namespace vibra::scenes

@@ -91,6 +91,58 @@ void GroundProfile::paint(cairo_t* cr, const Placement& at, std::vector<Point> t
   cairo_restore(cr);
 }
 
+void GroundProfile::record_outline(DrawingRecord& record, const Placement& at, double x0, double x1, double column0) const {
+  // Pasted from tiles, not stroked: its outline is the road down to the bottom.
+  std::vector<Point> ground = road_points(at, x0 - column0, x1 - column0);
+  for (Point& p : ground) p.x() += column0;
+  if (ground.size() < 2) return;
+  ground.emplace_back(ground.back().x(), at.bottom);
+  ground.emplace_back(ground.front().x(), at.bottom);
+  record.outline.add_polygon(std::move(ground), OutlineKind::ground);
+}
+
+void GroundProfile::drop_tiles_outside(long long first, long long last) const {
+  for (auto it = tiles_.begin(); it != tiles_.end();) {
+    if (it->first >= first - 1 && it->first <= last + 1) {
+      ++it;
+      continue;
+    }
+    if (spare_.size() < kSpareTiles) spare_.push_back(std::move(it->second.image));
+    it = tiles_.erase(it);
+  }
+}
+
+void GroundProfile::draw_tile(Tile& tile, const Placement& at, double p0) const {
+  std::vector<Point> points = road_points(at, p0, p0 + kTileWidth);
+  double highest = at.bottom;
+  for (const Point& p : points) highest = std::min(highest, p.y());
+  // The top rounded up to whole bands of rows, so that tiles come in few
+  // heights and a tile gone out of sight can be reused: a fresh image
+  // costs a page fault for every 4 KiB of it.
+  const int top = static_cast<int>(std::floor(highest - 2 * stroke_.width * at.scale - 1));
+  tile.top = int(at.bottom) - kTileRows * ((int(at.bottom) - top + kTileRows - 1) / kTileRows);
+  const int rows = std::max(1, int(at.bottom) - tile.top);
+  const auto reusable = std::find_if(spare_.begin(), spare_.end(), [&](const auto& image) {
+    return cairo_image_surface_get_height(image.get()) == rows;
+  });
+  if (reusable != spare_.end()) {
+    tile.image = std::move(*reusable);
+    spare_.erase(reusable);
+  } else {
+    tile.image.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, kTileWidth, rows), cairo_surface_destroy);
+  }
+  cairo_t* tile_cr = cairo_create(tile.image.get());
+  cairo_set_operator(tile_cr, CAIRO_OPERATOR_CLEAR);  // a reused tile starts as clear as a new one
+  cairo_paint(tile_cr);
+  cairo_set_operator(tile_cr, CAIRO_OPERATOR_OVER);
+  cairo_set_antialias(tile_cr, kShapeAntialias);  // as the canvas draws
+  paint(tile_cr, at, std::move(points), p0, tile.top);
+  const bool drawn = cairo_status(tile_cr) == CAIRO_STATUS_SUCCESS;
+  cairo_destroy(tile_cr);
+  if (!drawn) throw OutputError("cannot draw the road: out of memory for its tiles: choose a smaller --size");
+  cairo_surface_flush(tile.image.get());
+}
+
 void GroundProfile::draw(Canvas& canvas, const WorldView& view) const {
   OutlineKindScope outline_kind(canvas, OutlineKind::ground);
   cairo_t* cr = canvas.cr();
@@ -100,16 +152,7 @@ void GroundProfile::draw(Canvas& canvas, const WorldView& view) const {
   const Point origin = view.to_pixel(Point(0, 0));
   const double column0 = std::round(origin.x());  // canvas column of road column 0
   const Placement at{canvas.id(), view.zoom(), origin.y(), std::ceil(clip_y1), canvas.scale()};
-  if (DrawingRecord* record = canvas.record()) {
-    // Pasted from tiles, not stroked: its outline is the road down to the bottom.
-    std::vector<Point> ground = road_points(at, clip_x0 - column0, clip_x1 - column0);
-    for (Point& p : ground) p.x() += column0;
-    if (ground.size() > 1) {
-      ground.emplace_back(ground.back().x(), at.bottom);
-      ground.emplace_back(ground.front().x(), at.bottom);
-      record->outline.add_polygon(std::move(ground), OutlineKind::ground);
-    }
-  }
+  if (DrawingRecord* record = canvas.record()) record_outline(*record, at, clip_x0, clip_x1, column0);
   if (cairo_surface_get_type(canvas.surface()) != CAIRO_SURFACE_TYPE_IMAGE) {  // a vector still: drawn as it is
     canvas.mark_drawn(clip_x0, clip_y0, clip_x1, clip_y1);
     paint(cr, at, road_points(at, clip_x0 - column0, clip_x1 - column0), -column0, 0);
@@ -118,48 +161,11 @@ void GroundProfile::draw(Canvas& canvas, const WorldView& view) const {
   if (!(placement_ == at)) tiles_.clear(), spare_.clear(), placement_ = at;
   const auto first = static_cast<long long>(std::floor((clip_x0 - column0) / kTileWidth));
   const auto last = static_cast<long long>(std::floor((clip_x1 - column0 - 1) / kTileWidth));
-  // Tiles out of sight go (a following view does not come back to them).
-  for (auto it = tiles_.begin(); it != tiles_.end();) {
-    if (it->first >= first - 1 && it->first <= last + 1) {
-      ++it;
-      continue;
-    }
-    if (spare_.size() < kSpareTiles) spare_.push_back(std::move(it->second.image));
-    it = tiles_.erase(it);
-  }
+  drop_tiles_outside(first, last);  // a following view does not come back to them
   for (long long k = first; k <= last; ++k) {
-    const double p0 = double(k) * kTileWidth, p1 = p0 + kTileWidth;
+    const double p0 = double(k) * kTileWidth;
     Tile& tile = tiles_[k];
-    if (!tile.image) {
-      std::vector<Point> points = road_points(at, p0, p1);
-      double highest = at.bottom;
-      for (const Point& p : points) highest = std::min(highest, p.y());
-      // The top rounded up to whole bands of rows, so that tiles come in few
-      // heights and a tile gone out of sight can be reused: a fresh image
-      // costs a page fault for every 4 KiB of it.
-      const int top = static_cast<int>(std::floor(highest - 2 * stroke_.width * at.scale - 1));
-      tile.top = int(at.bottom) - kTileRows * ((int(at.bottom) - top + kTileRows - 1) / kTileRows);
-      const int rows = std::max(1, int(at.bottom) - tile.top);
-      const auto reusable = std::find_if(spare_.begin(), spare_.end(), [&](const auto& image) {
-        return cairo_image_surface_get_height(image.get()) == rows;
-      });
-      if (reusable != spare_.end()) {
-        tile.image = std::move(*reusable);
-        spare_.erase(reusable);
-      } else {
-        tile.image.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, kTileWidth, rows), cairo_surface_destroy);
-      }
-      cairo_t* tile_cr = cairo_create(tile.image.get());
-      cairo_set_operator(tile_cr, CAIRO_OPERATOR_CLEAR);  // a reused tile starts as clear as a new one
-      cairo_paint(tile_cr);
-      cairo_set_operator(tile_cr, CAIRO_OPERATOR_OVER);
-      cairo_set_antialias(tile_cr, kShapeAntialias);  // as the canvas draws
-      paint(tile_cr, at, std::move(points), p0, tile.top);
-      const bool drawn = cairo_status(tile_cr) == CAIRO_STATUS_SUCCESS;
-      cairo_destroy(tile_cr);
-      if (!drawn) throw OutputError("cannot draw the road: out of memory for its tiles: choose a smaller --size");
-      cairo_surface_flush(tile.image.get());
-    }
+    if (!tile.image) draw_tile(tile, at, p0);
     const double x = column0 + p0, h = cairo_image_surface_get_height(tile.image.get());
     canvas.mark_drawn(x, tile.top, x + kTileWidth, tile.top + h);
     cairo_set_source_surface(cr, tile.image.get(), x, tile.top);

@@ -13,6 +13,8 @@
 
 namespace vibra::render {
 
+struct DrawingRecord;
+
 /// The ground under a road profile h(x) (world units): the road's line, and a
 /// band `depth` deep under it, hatched, so the road reads as solid; drawn
 /// across the visible part of the view (the clip).
@@ -54,6 +56,12 @@ class GroundProfile {
   /// Draws the ground through `top` (road_points) onto `cr`, where road
   /// column P and canvas row y land at (P - dx, y - dy).
   void paint(cairo_t* cr, const Placement&, std::vector<Point> top, double dx, double dy) const;
+  /// The ground's outline between canvas columns x0 and x1, for the label placer.
+  void record_outline(DrawingRecord&, const Placement&, double x0, double x1, double column0) const;
+  /// Tiles outside [first - 1, last + 1] go, kept for reuse while there is room.
+  void drop_tiles_outside(long long first, long long last) const;
+  /// Draws tile `tile` (road columns [p0, p0 + kTileWidth)) into a fresh or reused image.
+  void draw_tile(Tile& tile, const Placement&, double p0) const;
 
   std::function<double(double)> height_;
   double spacing_, depth_;

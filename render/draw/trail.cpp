@@ -117,6 +117,33 @@ DamageRect covered(std::span<const Point> pixels, double width) {
   return {int(std::floor(x0 - reach)), int(std::floor(y0 - reach)), int(std::ceil(x1 + reach)),
           int(std::ceil(y1 + reach))};
 }
+
+/// The older part of a trail stroked into an image covering `box`, pasted while it holds.
+std::shared_ptr<cairo_surface_t> stroked_layer(const std::vector<Point>& older, const std::vector<int>& level,
+                                               const Color& color, double width, const DamageRect& box) {
+  std::shared_ptr<cairo_surface_t> image(
+      cairo_image_surface_create(CAIRO_FORMAT_ARGB32, box.x1 - box.x0, box.y1 - box.y0), cairo_surface_destroy);
+  cairo_t* cr = cairo_create(image.get());
+  cairo_set_antialias(cr, kShapeAntialias);  // as the canvas draws
+  cairo_translate(cr, -box.x0, -box.y0);          // whole pixels: the same rasterization
+  stroke_levels(cr, older, level, color, width);
+  const bool drawn = cairo_status(cr) == CAIRO_STATUS_SUCCESS;
+  cairo_destroy(cr);
+  if (!drawn) throw OutputError("cannot draw the trail: out of memory for its layer: choose a smaller --size");
+  cairo_surface_flush(image.get());
+  return image;
+}
+
+/// The newest part's pixels: the last older point, the points in (settled, t], and the head.
+template <typename Iterator>
+std::vector<Point> recent_pixels(const WorldView& view, Iterator first, Iterator newest, Iterator last,
+                                 const std::optional<Point>& head) {
+  std::vector<Point> recent;
+  if (newest > first) recent.push_back(view.to_pixel((newest - 1)->p));
+  for (auto it = newest; it < last; ++it) recent.push_back(view.to_pixel(it->p));
+  if (head && std::isfinite(head->x()) && std::isfinite(head->y())) recent.push_back(view.to_pixel(*head));
+  return recent;
+}
 }  // namespace
 
 void Trail::draw(Canvas& canvas, const WorldView& view, double t, double fade, const Color& color, double width,
@@ -151,17 +178,7 @@ void Trail::draw(Canvas& canvas, const WorldView& view, double t, double fade, c
       layer_ = {canvas.id(), version_, settled, fade, pixels_wide, view.zoom(), origin, color, nullptr, 0, 0};
       if (older.size() >= 2) {
         const DamageRect box = covered(older, pixels_wide);
-        std::shared_ptr<cairo_surface_t> image(
-            cairo_image_surface_create(CAIRO_FORMAT_ARGB32, box.x1 - box.x0, box.y1 - box.y0), cairo_surface_destroy);
-        cairo_t* cr = cairo_create(image.get());
-        cairo_set_antialias(cr, kShapeAntialias);  // as the canvas draws
-        cairo_translate(cr, -box.x0, -box.y0);          // whole pixels: the same rasterization
-        stroke_levels(cr, older, level, color, pixels_wide);
-        const bool drawn = cairo_status(cr) == CAIRO_STATUS_SUCCESS;
-        cairo_destroy(cr);
-        if (!drawn) throw OutputError("cannot draw the trail: out of memory for its layer: choose a smaller --size");
-        cairo_surface_flush(image.get());
-        layer_.image = std::move(image);
+        layer_.image = stroked_layer(older, level, color, pixels_wide, box);
         layer_.x = box.x0, layer_.y = box.y0;
       }
     }
@@ -181,10 +198,7 @@ void Trail::draw(Canvas& canvas, const WorldView& view, double t, double fade, c
 
   // The newest part, from the last older point through (settled, t] to the
   // head, at the first step, stroked every frame.
-  std::vector<Point> recent;
-  if (newest > first) recent.push_back(view.to_pixel((newest - 1)->p));
-  for (auto it = newest; it < last; ++it) recent.push_back(view.to_pixel(it->p));
-  if (head && std::isfinite(head->x()) && std::isfinite(head->y())) recent.push_back(view.to_pixel(*head));
+  const std::vector<Point> recent = recent_pixels(view, first, newest, last, head);
   if (recent.size() >= 2) {
     const DamageRect box = covered(recent, pixels_wide);
     canvas.mark_drawn(box.x0, box.y0, box.x1, box.y1);

@@ -122,6 +122,73 @@ std::optional<FrameSegment> read_segment_tag(const fs::path& video) {
   return FrameSegment::from_tag(read_video_description(video));
 }
 
+namespace {
+/// The output's one stream, a copy of the first part's, and its header written.
+AVStream* start_output(MuxedOutput& out, const std::vector<Part>& parts, const fs::path& output) {
+  const AVOutputFormat* muxer = av_guess_format(nullptr, output.c_str(), nullptr);
+  const AVCodecParameters* codec = parts.front().stream->codecpar;
+  if (!muxer || avformat_query_codec(muxer, codec->codec_id, FF_COMPLIANCE_NORMAL) != 1)
+    throw OutputError("-o " + quoted(output) + " cannot hold " + avcodec_get_name(codec->codec_id) +
+                      " video: name it like the parts (" + parts.front().path.extension().string() + ")");
+  out.open(muxer);
+  AVStream* out_stream = avformat_new_stream(out.format, nullptr);
+  if (!out_stream) out.check(AVERROR(ENOMEM), "setting up");
+  out.check(avcodec_parameters_copy(out_stream->codecpar, codec), "setting up");
+  out_stream->codecpar->codec_tag = 0;  // the output container chooses its own
+  out_stream->time_base = parts.front().stream->time_base;
+  out_stream->avg_frame_rate = parts.front().frame_rate;
+  for (const char* key : {"title", "comment"})
+    if (const std::string value = container_metadata(parts.front().input.get(), key); !value.empty())
+      av_dict_set(&out.format->metadata, key, value.c_str(), 0);
+  out.write_header();
+  return out_stream;
+}
+
+/// Copies one part's packets into the output, checking that it holds
+/// exactly the frames its tag names, once each, after the previous part's.
+/// Returns how many it copied.
+long long copy_part(Part& part, MuxedOutput& out, AVStream* out_stream, AVPacket* packet, std::int64_t& last_dts) {
+  const FrameSegment& s = part.segment;
+  std::vector<bool> seen(static_cast<std::size_t>(s.frames()), false);
+  const AVRational frame_base = av_inv_q(part.frame_rate);
+  // Matroska stores no decoding timestamps: its demuxer guesses them, but
+  // not for a file's first packets. With B-frames a guess-less packet at a
+  // seam would break the order, so all of them go, and the muxer derives
+  // each from the presentation timestamps, as for any stream without them.
+  const bool guessed_dts = std::strstr(part.input->iformat->name, "matroska") != nullptr;
+  long long copied = 0;
+  for (;;) {
+    const int read = av_read_frame(part.input.get(), packet);
+    if (read == AVERROR_EOF) break;
+    if (read < 0) refuse(part, "reading it failed (" + av_error(read) + ")", "render it again");
+    if (packet->pts == AV_NOPTS_VALUE) refuse(part, "a packet has no timestamp", "render it again");
+    const long long frame = av_rescale_q_rnd(packet->pts, part.stream->time_base, frame_base,
+                                             static_cast<AVRounding>(AV_ROUND_NEAR_INF | AV_ROUND_PASS_MINMAX));
+    if (frame < s.first() || frame >= s.end() || seen[frame - s.first()])
+      refuse(part, "it holds frame " + std::to_string(frame) + ", not only frames " + std::to_string(s.first()) + "-" +
+                       std::to_string(s.end() - 1) + " once each as its tag says",
+             "render it again");
+    seen[frame - s.first()] = true;
+    if (guessed_dts) packet->dts = AV_NOPTS_VALUE;
+    av_packet_rescale_ts(packet, part.stream->time_base, out_stream->time_base);
+    if (packet->dts != AV_NOPTS_VALUE) {
+      if (last_dts != AV_NOPTS_VALUE && packet->dts <= last_dts)
+        refuse(part, "its decoding timestamps overlap the previous part's", "render every segment with the same options");
+      last_dts = packet->dts;
+    }
+    packet->stream_index = out_stream->index;
+    packet->pos = -1;
+    out.check(av_interleaved_write_frame(out.format, packet), "writing a frame");  // takes the packet's data
+    ++copied;
+  }
+  const auto held = std::count(seen.begin(), seen.end(), true);
+  if (held != s.frames())
+    refuse(part, "it holds " + std::to_string(held) + " of the " + std::to_string(s.frames()) + " frames its tag names",
+           "render it again");
+  return copied;
+}
+}  // namespace
+
 ConcatSummary concat_segments(const std::vector<fs::path>& paths, const fs::path& output) {
   av_log_set_level(AV_LOG_QUIET);  // every failure is reported in our words, with FFmpeg's reason
   if (paths.empty()) throw OutputError("concat needs the segment videos to join: give PART... -o OUT");
@@ -130,68 +197,13 @@ ConcatSummary concat_segments(const std::vector<fs::path>& paths, const fs::path
   std::vector<Part> parts;
   for (const fs::path& path : paths) parts.push_back(open_part(path));
   check_parts(parts);
-
-  const AVOutputFormat* muxer = av_guess_format(nullptr, output.c_str(), nullptr);
-  const AVCodecParameters* codec = parts.front().stream->codecpar;
-  if (!muxer || avformat_query_codec(muxer, codec->codec_id, FF_COMPLIANCE_NORMAL) != 1)
-    throw OutputError("-o " + quoted(output) + " cannot hold " + avcodec_get_name(codec->codec_id) +
-                      " video: name it like the parts (" + parts.front().path.extension().string() + ")");
   MuxedOutput out(file);
-  out.open(muxer);
-  AVStream* out_stream = avformat_new_stream(out.format, nullptr);
-  if (!out_stream) out.check(AVERROR(ENOMEM), "setting up");
-  out.check(avcodec_parameters_copy(out_stream->codecpar, codec), "setting up");
-  out_stream->codecpar->codec_tag = 0;  // the output container chooses its own
-  const AVStream* first = parts.front().stream;
-  out_stream->time_base = first->time_base;
-  out_stream->avg_frame_rate = parts.front().frame_rate;
-  for (const char* key : {"title", "comment"})
-    if (const std::string value = container_metadata(parts.front().input.get(), key); !value.empty())
-      av_dict_set(&out.format->metadata, key, value.c_str(), 0);
-  out.write_header();
-
+  AVStream* out_stream = start_output(out, parts, output);
   std::unique_ptr<AVPacket, void (*)(AVPacket*)> packet(av_packet_alloc(), [](AVPacket* p) { av_packet_free(&p); });
   if (!packet) out.check(AVERROR(ENOMEM), "allocating a packet");
   std::int64_t last_dts = AV_NOPTS_VALUE;
   ConcatSummary summary{0, parts.size()};
-  for (Part& part : parts) {
-    const FrameSegment& s = part.segment;
-    std::vector<bool> seen(static_cast<std::size_t>(s.frames()), false);
-    const AVRational frame_base = av_inv_q(part.frame_rate);
-    // Matroska stores no decoding timestamps: its demuxer guesses them, but
-    // not for a file's first packets. With B-frames a guess-less packet at a
-    // seam would break the order, so all of them go, and the muxer derives
-    // each from the presentation timestamps, as for any stream without them.
-    const bool guessed_dts = std::strstr(part.input->iformat->name, "matroska") != nullptr;
-    for (;;) {
-      const int read = av_read_frame(part.input.get(), packet.get());
-      if (read == AVERROR_EOF) break;
-      if (read < 0) refuse(part, "reading it failed (" + av_error(read) + ")", "render it again");
-      if (packet->pts == AV_NOPTS_VALUE) refuse(part, "a packet has no timestamp", "render it again");
-      const long long frame = av_rescale_q_rnd(packet->pts, part.stream->time_base, frame_base,
-                                               static_cast<AVRounding>(AV_ROUND_NEAR_INF | AV_ROUND_PASS_MINMAX));
-      if (frame < s.first() || frame >= s.end() || seen[frame - s.first()])
-        refuse(part, "it holds frame " + std::to_string(frame) + ", not only frames " + std::to_string(s.first()) +
-                         "-" + std::to_string(s.end() - 1) + " once each as its tag says",
-               "render it again");
-      seen[frame - s.first()] = true;
-      if (guessed_dts) packet->dts = AV_NOPTS_VALUE;
-      av_packet_rescale_ts(packet.get(), part.stream->time_base, out_stream->time_base);
-      if (packet->dts != AV_NOPTS_VALUE) {
-        if (last_dts != AV_NOPTS_VALUE && packet->dts <= last_dts)
-          refuse(part, "its decoding timestamps overlap the previous part's", "render every segment with the same options");
-        last_dts = packet->dts;
-      }
-      packet->stream_index = out_stream->index;
-      packet->pos = -1;
-      out.check(av_interleaved_write_frame(out.format, packet.get()), "writing a frame");  // takes the packet's data
-      ++summary.frames;
-    }
-    const auto held = std::count(seen.begin(), seen.end(), true);
-    if (held != s.frames())
-      refuse(part, "it holds " + std::to_string(held) + " of the " + std::to_string(s.frames()) + " frames its tag names",
-             "render it again");
-  }
+  for (Part& part : parts) summary.frames += copy_part(part, out, out_stream, packet.get(), last_dts);
   out.finish_and_commit();
   return summary;
 }

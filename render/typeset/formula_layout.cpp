@@ -459,15 +459,15 @@ MathBox layout_formula(Canvas& canvas, const Formula& formula, const MathStyle& 
   return setter.formula(formula);
 }
 
-MathBox layout_rich_text(Canvas& canvas, const std::vector<RichRun>& runs, const MathStyle& style, double max_width) {
-  const double em = style.size * canvas.scale();
-  Typesetter setter(canvas.cr(), em, style.family, style.bold_text);
-  // The pieces lines break between: words, and formulas whole.
-  struct Piece {
-    std::string word;  ///< a word; empty for a formula
-    MathBox box;       ///< a formula's box, or the word measured alone
-    bool space_before = false;
-  };
+namespace {
+/// A piece lines break between: a word, or a formula whole.
+struct Piece {
+  std::string word;  ///< a word; empty for a formula
+  MathBox box;       ///< a formula's box, or the word measured alone
+  bool space_before = false;
+};
+
+std::vector<Piece> rich_text_pieces(Typesetter& setter, const std::vector<RichRun>& runs, double em) {
   std::vector<Piece> pieces;
   bool pending_space = false;
   for (const RichRun& run : runs) {
@@ -491,11 +491,11 @@ MathBox layout_rich_text(Canvas& canvas, const std::vector<RichRun>& runs, const
     }
     // A space at the end of a text run separates it from the formula after it.
   }
-  const double space = setter.glyphs("a a", MathFont::text, em, Atom::ord).width -
-                       2 * setter.glyphs("a", MathFont::text, em, Atom::ord).width;
+  return pieces;
+}
 
-  // Greedy lines; then each line's neighbouring words are set as one run
-  // (kerning and one Pango layout for a phrase).
+/// Greedy lines of at most `max_width` (0: one line).
+std::vector<std::vector<const Piece*>> greedy_lines(const std::vector<Piece>& pieces, double space, double max_width) {
   std::vector<std::vector<const Piece*>> lines(1);
   double x = 0;
   for (const Piece& p : pieces) {
@@ -504,31 +504,45 @@ MathBox layout_rich_text(Canvas& canvas, const std::vector<RichRun>& runs, const
     x += lines.back().empty() ? p.box.width : advance;
     lines.back().push_back(&p);
   }
-  std::vector<MathBox> boxes;
-  for (const auto& line : lines) {
-    MathBox box;
-    box.role = Role::line;
-    // Every text line is at least the font's height, so lines keep an even pitch.
-    box.ascent = 0.8 * em, box.descent = 0.25 * em;
-    double at = 0;
-    for (size_t i = 0; i < line.size();) {
-      if (i > 0 && line[i]->space_before) at += space;
-      MathBox item;
-      if (line[i]->word.empty()) {
-        item = line[i]->box;
-        ++i;
-      } else {
-        std::string phrase = line[i]->word;
-        for (++i; i < line.size() && !line[i]->word.empty(); ++i) phrase += (line[i]->space_before ? " " : "") + line[i]->word;
-        item = setter.glyphs(phrase, MathFont::text, em, Atom::ord);
-      }
-      const double width = item.width;
-      append_at(box, std::move(item), at);
-      at += width;
+  return lines;
+}
+
+/// One line's box: its neighbouring words set as one run (kerning, and one
+/// Pango layout for a phrase), its formulas as they are.
+MathBox line_box(Typesetter& setter, const std::vector<const Piece*>& line, double space, double em) {
+  MathBox box;
+  box.role = Role::line;
+  // Every text line is at least the font's height, so lines keep an even pitch.
+  box.ascent = 0.8 * em, box.descent = 0.25 * em;
+  double at = 0;
+  for (size_t i = 0; i < line.size();) {
+    if (i > 0 && line[i]->space_before) at += space;
+    MathBox item;
+    if (line[i]->word.empty()) {
+      item = line[i]->box;
+      ++i;
+    } else {
+      std::string phrase = line[i]->word;
+      for (++i; i < line.size() && !line[i]->word.empty(); ++i) phrase += (line[i]->space_before ? " " : "") + line[i]->word;
+      item = setter.glyphs(phrase, MathFont::text, em, Atom::ord);
     }
-    box.width = at;
-    boxes.push_back(std::move(box));
+    const double width = item.width;
+    append_at(box, std::move(item), at);
+    at += width;
   }
+  box.width = at;
+  return box;
+}
+}  // namespace
+
+MathBox layout_rich_text(Canvas& canvas, const std::vector<RichRun>& runs, const MathStyle& style, double max_width) {
+  const double em = style.size * canvas.scale();
+  Typesetter setter(canvas.cr(), em, style.family, style.bold_text);
+  const std::vector<Piece> pieces = rich_text_pieces(setter, runs, em);
+  const double space = setter.glyphs("a a", MathFont::text, em, Atom::ord).width -
+                       2 * setter.glyphs("a", MathFont::text, em, Atom::ord).width;
+  std::vector<MathBox> boxes;
+  for (const auto& line : greedy_lines(pieces, space, max_width)) boxes.push_back(line_box(setter, line, space, em));
   return setter.stack(std::move(boxes), em);
 }
 

@@ -2,6 +2,8 @@
 #include "render/typeset/formula_parser.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <tuple>
 #include <utility>
 
 #include "core/error.hpp"
@@ -345,9 +347,10 @@ class Parser {
     return group;
   }
 
-  MathNode parse_command(const std::string& name) {
+  /// \frac, \sqrt and \left...\right: commands with arguments or a body.
+  std::optional<MathNode> parse_structure(const std::string& name) {
+    MathNode node;
     if (name == "frac" || name == "dfrac" || name == "tfrac") {
-      MathNode node;
       node.kind = MathNode::Kind::fraction;
       node.atom = Atom::inner;
       node.parts.push_back(argument("\\" + name, "\\frac{a}{b}"));
@@ -357,27 +360,29 @@ class Parser {
     if (name == "sqrt") {
       skip_spaces();
       if (peek() == '[') fail("\\sqrt[n] (an n-th root) is not supported: write x^{1/n}");
-      MathNode node;
       node.kind = MathNode::Kind::radical;
       node.parts.push_back(argument("\\sqrt", "\\sqrt{x}"));
       return node;
     }
-    if (name == "left") {
-      MathNode node;
-      node.kind = MathNode::Kind::delimited;
-      node.atom = Atom::inner;
-      node.glyphs = delimiter("left");
-      {
-        Nest nest(*this);
-        node.parts.push_back(parse_row(RowEnd::right));
-      }
-      node.close = delimiter("right");
-      return node;
+    if (name != "left") return std::nullopt;
+    node.kind = MathNode::Kind::delimited;
+    node.atom = Atom::inner;
+    node.glyphs = delimiter("left");
+    {
+      Nest nest(*this);
+      node.parts.push_back(parse_row(RowEnd::right));
     }
+    node.close = delimiter("right");
+    return node;
+  }
+
+  /// Text, font and accent commands: one argument, set in a style.
+  std::optional<MathNode> parse_styled(const std::string& name) {
     if (name == "text") return text_argument(name);
-    if (name == "mathrm") return with_font(MathFont::upright, name);
-    if (name == "mathbf") return with_font(MathFont::bold, name);
-    if (name == "mathit") return with_font(MathFont::italic, name);
+    static const std::pair<const char*, MathFont> kFonts[] = {
+        {"mathrm", MathFont::upright}, {"mathbf", MathFont::bold}, {"mathit", MathFont::italic}};
+    for (const auto& [command, font] : kFonts)
+      if (name == command) return with_font(font, name);
     if (name == "operatorname") {
       MathNode node = with_font(MathFont::upright, name);
       node.atom = Atom::op;
@@ -385,33 +390,42 @@ class Parser {
     }
     static const std::pair<const char*, const char*> kAccents[] = {
         {"dot", "˙"}, {"ddot", "¨"}, {"hat", "ˆ"}, {"tilde", "˜"}, {"vec", "→"}, {"bar", ""}};
-    for (const auto& [accent, glyph] : kAccents)
-      if (name == accent) {
-        MathNode node;
-        node.kind = MathNode::Kind::accent;
-        node.glyphs = glyph;
-        node.parts.push_back(argument("\\" + name, "\\" + name + "{u}"));
-        return node;
-      }
-    if (name == "quad") return space_node(1);
-    if (name == "qquad") return space_node(2);
-    if (name == ",") return space_node(3.0 / 18);
-    if (name == ":" || name == ">") return space_node(4.0 / 18);
-    if (name == ";") return space_node(5.0 / 18);
-    if (name == "!") return space_node(-3.0 / 18);
-    if (name == " ") return space_node(1.0 / 3);
-    if (name == "|") return glyph_node("‖", Atom::ord, MathFont::upright);
-    if (name == "{") return glyph_node("{", Atom::open, MathFont::upright);
-    if (name == "}") return glyph_node("}", Atom::close, MathFont::upright);
-    if (name == "langle") return glyph_node("⟨", Atom::open, MathFont::upright);
-    if (name == "rangle") return glyph_node("⟩", Atom::close, MathFont::upright);
+    for (const auto& [accent, glyph] : kAccents) {
+      if (name != accent) continue;
+      MathNode node;
+      node.kind = MathNode::Kind::accent;
+      node.glyphs = glyph;
+      node.parts.push_back(argument("\\" + name, "\\" + name + "{u}"));
+      return node;
+    }
+    return std::nullopt;
+  }
+
+  /// Spaces, escaped characters, delimiters and symbols: no argument.
+  std::optional<MathNode> parse_glyph_command(const std::string& name) {
+    static const std::pair<const char*, double> kSpaces[] = {  // in em
+        {"quad", 1},        {"qquad", 2},         {",", 3.0 / 18}, {":", 4.0 / 18},
+        {">", 4.0 / 18},    {";", 5.0 / 18},      {"!", -3.0 / 18}, {" ", 1.0 / 3}};
+    for (const auto& [command, em] : kSpaces)
+      if (name == command) return space_node(em);
+    static const std::tuple<const char*, const char*, Atom> kGlyphs[] = {
+        {"|", "‖", Atom::ord},     {"{", "{", Atom::open},       {"}", "}", Atom::close},
+        {"langle", "⟨", Atom::open}, {"rangle", "⟩", Atom::close}};
+    for (const auto& [command, glyph, atom] : kGlyphs)
+      if (name == command) return glyph_node(glyph, atom, MathFont::upright);
     if (name.size() == 1 && std::string_view("$%&#_").find(name[0]) != std::string_view::npos)
       return glyph_node(name, Atom::ord, MathFont::upright);
-    if (const std::optional<MathSymbol> symbol = math_symbol(name)) {
-      MathFont font = symbol->font;
-      if (font == MathFont::italic && override_font_) font = *override_font_;
-      return glyph_node(std::string(symbol->glyphs), symbol->atom, font);
-    }
+    const std::optional<MathSymbol> symbol = math_symbol(name);
+    if (!symbol) return std::nullopt;
+    MathFont font = symbol->font;
+    if (font == MathFont::italic && override_font_) font = *override_font_;
+    return glyph_node(std::string(symbol->glyphs), symbol->atom, font);
+  }
+
+  MathNode parse_command(const std::string& name) {
+    if (std::optional<MathNode> node = parse_structure(name)) return std::move(*node);
+    if (std::optional<MathNode> node = parse_styled(name)) return std::move(*node);
+    if (std::optional<MathNode> node = parse_glyph_command(name)) return std::move(*node);
     const std::string near = is_letter(name[0]) ? closest_match(name, math_command_names()) : "";
     fail("unknown command \\" + quoted_value(name, 24) + (near.empty() ? "" : " (did you mean \\" + near + "?)") + ": " +
          std::string(kSubset));

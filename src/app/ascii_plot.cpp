@@ -37,11 +37,10 @@ double largest_value(Trajectory& run, const std::vector<int>& columns, const std
 }
 }  // namespace
 
-AsciiPlot::AsciiPlot(const AsciiPlotOptions& o) : exact_(o.exact) {
-  trajectory_ = find_model(o.model).build(model_settings(o.model, o.settings));
-  const TrajectoryInfo& info = trajectory_->info();
-
-  // The series: the main quantity (or the chosen columns), then the exact solution.
+namespace {
+/// The series' columns: the main quantity, or the chosen columns.
+std::vector<int> plotted_columns(const TrajectoryInfo& info, const AsciiPlotOptions& o) {
+  std::vector<int> columns;
   for (const auto& name : o.columns.empty() ? std::vector<std::string>{info.columns[1]} : o.columns) {
     const auto it = std::find(info.columns.begin() + 1, info.columns.end(), name);
     if (it == info.columns.end()) {
@@ -49,41 +48,54 @@ AsciiPlot::AsciiPlot(const AsciiPlotOptions& o) : exact_(o.exact) {
       for (size_t i = 1; i < info.columns.size(); ++i) valid += (valid.empty() ? "" : ", ") + info.columns[i];
       throw UsageError("model " + o.model + " has no column '" + name + "': choose from " + valid);
     }
-    columns_.push_back(static_cast<int>(it - info.columns.begin()));
+    columns.push_back(static_cast<int>(it - info.columns.begin()));
   }
+  return columns;
+}
+
+void check_symbols(const std::string& symbols, size_t series) {
+  // A symbol is one byte of a line: 'é' (two bytes of UTF-8) would be split into invalid text.
+  if (std::any_of(symbols.begin(), symbols.end(), [](unsigned char c) { return c < 0x20 || c > 0x7e; }))
+    throw UsageError("--symbols '" + quoted_value(symbols, 40) + "' holds a character that is not printable ASCII: "
+                     "each series is drawn with one, e.g. --symbols '*o+'");
+  if (symbols.size() < series)
+    throw UsageError("--symbols '" + symbols + "' has fewer symbols than the " + std::to_string(series) + " series");
+}
+
+/// The largest value the plot must hold: for the classic plot the model's
+/// known amplitude (as the book's plotter); for several columns (theta, S, D
+/// differ in size) the largest value of any series over a pre-pass.
+double plotted_extent(Trajectory& run, const std::vector<int>& columns, const AsciiPlotOptions& o) {
+  const TrajectoryInfo& info = run.info();
+  double largest = 0;
+  if (columns.size() == 1) {
+    std::vector<double> row(run.width());
+    run.row(row);
+    largest = std::max(info.amplitude_bound, std::abs(row[columns[0]]));
+    if (o.exact) largest = std::max(largest, std::abs(info.exact(row[0])));
+  } else {
+    largest = largest_value(*find_model(o.model).build(model_settings(o.model, o.settings)), columns,
+                            o.exact ? info.exact : nullptr);
+  }
+  return !(largest > 0) || !std::isfinite(largest) ? 1 : largest;
+}
+}  // namespace
+
+AsciiPlot::AsciiPlot(const AsciiPlotOptions& o) : exact_(o.exact) {
+  trajectory_ = find_model(o.model).build(model_settings(o.model, o.settings));
+  const TrajectoryInfo& info = trajectory_->info();
+  columns_ = plotted_columns(info, o);
   if (o.exact && !info.exact)
     throw UsageError("model " + o.model + " has no exact solution with these settings: drop --exact "
                      "(undamped has one; pendulum has the small-angle one when alpha=0)");
   const size_t series = columns_.size() + (o.exact ? 1 : 0);
-  // A symbol is one byte of a line: 'é' (two bytes of UTF-8) would be split into invalid text.
-  if (std::any_of(o.symbols.begin(), o.symbols.end(), [](unsigned char c) { return c < 0x20 || c > 0x7e; }))
-    throw UsageError("--symbols '" + quoted_value(o.symbols, 40) + "' holds a character that is not printable ASCII: "
-                     "each series is drawn with one, e.g. --symbols '*o+'");
-  if (o.symbols.size() < series)
-    throw UsageError("--symbols '" + o.symbols + "' has fewer symbols than the " + std::to_string(series) + " series");
+  check_symbols(o.symbols, series);
   row_.resize(trajectory_->width());
   values_.resize(series);
-
-  // The range: given; for the classic plot 1.2 times the model's known
-  // amplitude (as the book's plotter); for several columns (theta, S, D differ
-  // in size) 1.2 times the largest value of any series over the run.
-  double ymin, ymax;
+  // The range: given, or 1.2 times the extent either way of zero.
   if (o.ymin.has_value() != o.ymax.has_value()) throw UsageError("give both --ymin and --ymax, or neither");
-  if (o.ymin) {
-    ymin = *o.ymin, ymax = *o.ymax;
-  } else {
-    double largest = 0;
-    if (columns_.size() == 1) {
-      trajectory_->row(row_);
-      largest = std::max(info.amplitude_bound, std::abs(row_[columns_[0]]));
-      if (o.exact) largest = std::max(largest, std::abs(info.exact(row_[0])));
-    } else {
-      largest = largest_value(*find_model(o.model).build(model_settings(o.model, o.settings)), columns_,
-                              o.exact ? info.exact : nullptr);
-    }
-    if (!(largest > 0) || !std::isfinite(largest)) largest = 1;
-    ymax = 1.2 * largest, ymin = -ymax;
-  }
+  const double ymax = o.ymax ? *o.ymax : 1.2 * plotted_extent(*trajectory_, columns_, o);
+  const double ymin = o.ymin ? *o.ymin : -ymax;
   if (o.width < 1 || o.width > kWidestAsciiPlot)
     throw UsageError("--width must be 1.." + std::to_string(kWidestAsciiPlot) + " (or auto)");
   try {
@@ -99,7 +111,6 @@ AsciiPlot::AsciiPlot(const AsciiPlotOptions& o) : exact_(o.exact) {
   show_counter_ = counter != "none";
   by_period_ = counter == "period";
   inverse_period_ = info.mesh.period > 0 ? 1 / info.mesh.period : 0;
-
   if (o.legend || !o.columns.empty()) {
     for (size_t i = 0; i < columns_.size(); ++i)
       legend_ += std::string(legend_.empty() ? "" : "   ") + o.symbols[i] + " " + info.columns[columns_[i]];

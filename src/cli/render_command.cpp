@@ -142,6 +142,60 @@ void run(const RenderOptions& o) {
   request.force = o.force;
   scenes::run_render(request);  // -o -: a failed write ends it with StandardOutputFailed, for main to handle
 }
+/// The flags that set scene keys (each handed to apply_setting as text, by run()).
+void add_scene_flags(CLI::App& cmd, RenderOptions& o) {
+  cmd.add_option("--size", o.size, "Frame size WxH, e.g. 1920x1080");
+  cmd.add_option("--fps", o.fps, "Frames per second");
+  cmd.add_option("--speed", o.speed, "Simulated time units per second of video");
+  cmd.add_flag("--frame-per-step", o.frame_per_step, "One frame per solver step (the book's animation)");
+  cmd.add_option("--slow", o.slow,
+                 "T0-T1:FACTOR: simulated times T0 to T1 play FACTOR times slower (2-4:4 is a quarter speed; 0.5 "
+                 "twice as fast); repeatable, ranges may not overlap");
+  cmd.add_option("--pause", o.pauses, "T:SECONDS: hold simulated time T for SECONDS of video (3:1); repeatable");
+  cmd.add_option(
+      "--layout", o.layout,
+      "fbd (the diagram alone), fbd+plot, plot (any model's moving plot), or grid (a panel per compared run)");
+  cmd.add_option("--compare", o.compare,
+                 "KEY=V1,V2,...: one run per value (up to 8) of scheme, dt, steps_per_period or a model key, drawn "
+                 "together: the first solid, the others as ghosts in their own colours, a curve each in every panel");
+  cmd.add_option("--window", o.window, "Plot window: a time or N periods (8periods); default the whole run");
+  cmd.add_option("--window-mode", o.window_mode, "drawing, movement (default) or jumps");
+  cmd.add_option("--panels", o.panels,
+                 "Panels beside the diagram, top to bottom (layout fbd+plot): the model's columns, phase (the main "
+                 "quantity against its velocity), energy ((E - E0)/|E0|), error (against the exact solution), period "
+                 "(each measured period against the exact one); default: the system's own");
+  cmd.add_flag("--energy-bars", o.energy_bars,
+               "Kinetic, potential and dissipated energy as bars beside the diagram, on one scale over the run");
+  cmd.add_option("--annotate", o.annotate,
+                 "Marks of the book's figures on the diagram: geometry (the pendulum's unit vectors i_r and i_theta, "
+                 "its pivot (x0, y0) and length L, Fig 1.21)");
+  cmd.add_option("--exaggerate", o.exaggerate,
+                 "F: the bumpy road's heights (road and body) drawn F times larger, said under the diagram; default: "
+                 "chosen from the run when its motion is too small to see, 1 for true scale");
+  cmd.add_option("--title", o.title, "A title across the top of the frame (text; $math$ in the LaTeX subset)");
+  cmd.add_flag("--equation", o.equation,
+               "The model's equation of motion typeset under the title; with --compare scheme=..., each scheme's "
+               "update formula under its legend entry");
+  cmd.add_option("--note", o.notes,
+                 "\"T0-T1: TEXT\": a callout shown for T0 <= t <= T1 (TEXT may hold $math$; \"... @PANEL\" points at "
+                 "that panel's curve at T0, e.g. @theta or @2); repeatable");
+}
+
+/// The flags of the video encoder.
+void add_video_flags(CLI::App& cmd, render::VideoSettings& video) {
+  cmd.add_option("--codec", video.codec, "Video codec: h264, vp9, vp8, theora, gif (default from the extension)");
+  cmd.add_option("--quality", video.quality,
+                 "draft, medium, high, or lossless (H.264 or VP9: decodes to exactly the frames drawn)")
+      ->capture_default_str();
+  cmd.add_option("--crf", video.crf, "Constant rate factor (overrides --quality)")->check(ranged("--crf"));
+  cmd.add_option("--preset", video.preset, "x264 preset, e.g. veryfast, medium");
+  cmd.add_option("--format", video.format,
+                 "With -o - (standard output), a pipe or a device: y4m (raw frames, for ffplay -), nut or matroska "
+                 "(H.264)");
+  cmd.add_flag("--transparent", video.transparent,
+               "No background: PNG with alpha, .webm (VP9 with alpha), .mov (ProRes 4444), SVG/PDF without the "
+               "background rectangle");
+}
 }  // namespace
 
 void add_render_command(CLI::App& app) {
@@ -149,55 +203,18 @@ void add_render_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Draw a scene's frames: video, PNG frames, or one still");
   cmd->add_option("SCENE", o->scene, "Built-in scene name or a TOML scene file")->capture_default_str();
   cmd->add_option("--set", o->settings, "KEY=VALUE: a scene key or a model key, repeatable");
-  add_output_option(*cmd, o->output,
-                    "OUT.mp4|.webm|.mkv|.mov|.ogv|.gif|.yuv|.nut, PAGE.html (an interactive page, its MP4, WebM and CSV "
-                    "in PAGE_files/), frames/tmp_%04d.png or a directory, - for standard output or a pipe or device "
-                    "(with --format), or a still .png/.svg/.pdf with --at (default: SCENE.mp4); missing folders are "
-                    "made");
-  cmd->add_option("--size", o->size, "Frame size WxH, e.g. 1920x1080");
-  cmd->add_option("--fps", o->fps, "Frames per second");
-  cmd->add_option("--speed", o->speed, "Simulated time units per second of video");
-  cmd->add_flag("--frame-per-step", o->frame_per_step, "One frame per solver step (the book's animation)");
-  cmd->add_option("--slow", o->slow,
-                  "T0-T1:FACTOR: simulated times T0 to T1 play FACTOR times slower (2-4:4 is a quarter speed; 0.5 "
-                  "twice as fast); repeatable, ranges may not overlap");
-  cmd->add_option("--pause", o->pauses, "T:SECONDS: hold simulated time T for SECONDS of video (3:1); repeatable");
-  cmd->add_option("--layout", o->layout,
-                  "fbd (the diagram alone), fbd+plot, plot (any model's moving plot), or grid (a panel per compared run)");
-  cmd->add_option("--compare", o->compare,
-                  "KEY=V1,V2,...: one run per value (up to 8) of scheme, dt, steps_per_period or a model key, drawn "
-                  "together: the first solid, the others as ghosts in their own colours, a curve each in every panel");
-  cmd->add_option("--window", o->window, "Plot window: a time or N periods (8periods); default the whole run");
-  cmd->add_option("--window-mode", o->window_mode, "drawing, movement (default) or jumps");
-  cmd->add_option("--panels", o->panels,
-                  "Panels beside the diagram, top to bottom (layout fbd+plot): the model's columns, phase (the main "
-                  "quantity against its velocity), energy ((E - E0)/|E0|), error (against the exact solution), period "
-                  "(each measured period against the exact one); default: the system's own");
-  cmd->add_flag("--energy-bars", o->energy_bars,
-                "Kinetic, potential and dissipated energy as bars beside the diagram, on one scale over the run");
-  cmd->add_option("--annotate", o->annotate,
-                  "Marks of the book's figures on the diagram: geometry (the pendulum's unit vectors i_r and i_theta, "
-                  "its pivot (x0, y0) and length L, Fig 1.21)");
-  cmd->add_option("--exaggerate", o->exaggerate,
-                  "F: the bumpy road's heights (road and body) drawn F times larger, said under the diagram; default: "
-                  "chosen from the run when its motion is too small to see, 1 for true scale");
-  cmd->add_option("--title", o->title, "A title across the top of the frame (text; $math$ in the LaTeX subset)");
-  cmd->add_flag("--equation", o->equation,
-                "The model's equation of motion typeset under the title; with --compare scheme=..., each scheme's "
-                "update formula under its legend entry");
-  cmd->add_option("--note", o->notes,
-                  "\"T0-T1: TEXT\": a callout shown for T0 <= t <= T1 (TEXT may hold $math$; \"... @PANEL\" points at "
-                  "that panel's curve at T0, e.g. @theta or @2); repeatable");
+  add_output_option(
+      *cmd, o->output,
+      "OUT.mp4|.webm|.mkv|.mov|.ogv|.gif|.yuv|.nut, PAGE.html (an interactive page, its MP4, WebM and CSV "
+      "in PAGE_files/), frames/tmp_%04d.png or a directory, - for standard output or a pipe or device "
+      "(with --format), or a still .png/.svg/.pdf with --at (default: SCENE.mp4); missing folders are "
+      "made");
+  add_scene_flags(*cmd, *o);
   cmd->add_flag("--frames-player", o->frames_player, "With -o PAGE.html: PNG frames and a page that steps through them");
   cmd->add_option("--every", o->every, "With -o PAGE.html: the CSV beside the page keeps every K-th step (and the last)")
       ->check(ranged("--every"));
   cmd->add_option("--at", o->at, "Render one still at this time (a number or an expression, e.g. 3.2 or pi/2)");
-  cmd->add_option("--codec", o->video.codec, "Video codec: h264, vp9, vp8, theora, gif (default from the extension)");
-  cmd->add_option("--quality", o->video.quality,
-                  "draft, medium, high, or lossless (H.264 or VP9: decodes to exactly the frames drawn)")
-      ->capture_default_str();
-  cmd->add_option("--crf", o->video.crf, "Constant rate factor (overrides --quality)")->check(ranged("--crf"));
-  cmd->add_option("--preset", o->video.preset, "x264 preset, e.g. veryfast, medium");
+  add_video_flags(*cmd, o->video);
   cmd->add_option("--threads", o->video.threads, "Threads for PNG compression and the encoder (default: one per core)")
       ->check(ranged("--threads"));
   cmd->add_option("--segment", o->segment,
@@ -207,12 +224,6 @@ void add_render_command(CLI::App& app) {
                 "Do nothing when the output (or this segment) is already complete at its final path");
   cmd->add_flag("--force", o->force,
                 "Replace a page's PAGE_files/ folder, or a segment's file, that vibra did not write for this output");
-  cmd->add_option("--format", o->video.format,
-                  "With -o - (standard output), a pipe or a device: y4m (raw frames, for ffplay -), nut or matroska "
-                  "(H.264)");
-  cmd->add_flag("--transparent", o->video.transparent,
-                "No background: PNG with alpha, .webm (VP9 with alpha), .mov (ProRes 4444), SVG/PDF without the "
-                "background rectangle");
   add_allow_unstable_flag(*cmd);
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or messages");
   cmd->footer(scene_keys_help());
