@@ -1,5 +1,6 @@
 // Frames of an earlier run are removed only when vibra's ledger proves it wrote them (render/output/frame_ledger.hpp).
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 #include <cstdio>
@@ -102,6 +103,22 @@ TEST_CASE("a ledger vibra did not write is neither trusted nor replaced", "[outp
     CHECK_THAT(r.err, Catch::Contains("kept 1 files named like frames"));
   }
   CHECK(read_file(dir.path / frame(9)) == "the user's frame");
+}
+
+TEST_CASE("a frame given to another user stays, though the ledger lists it unchanged", "[output][ledger]") {
+  ScratchDirectory dir;
+  const std::string pattern = dir / "f_%04d.png";
+  REQUIRE(run_vibra("render" + kShort + "0.5 -o " + pattern).exit_code == 0);
+  if (::geteuid() != 0 || ::lchown((dir.path / frame(12)).c_str(), 65534, 65534) != 0) {
+    WARN("skipped: giving a file to another user needs root");
+    return;
+  }
+  const std::string before = read_file(dir.path / frame(12));
+  const auto r = run_vibra("render --size 160x90 --set periods=0.1 -o " + pattern);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.err, Catch::Contains("removed 23 frames of an earlier run") && Catch::Contains("kept 1 files"));
+  CHECK(read_file(dir.path / frame(12)) == before);
 }
 
 TEST_CASE("segments keep ledgers of their own, which a whole run folds into its ledger", "[output][ledger][segment]") {
