@@ -18,6 +18,7 @@
 #include "core/quoted_value.hpp"
 #include "render/draw/canvas.hpp"
 #include "render/draw/text.hpp"
+#include "render/encode/output_kind.hpp"
 #include "render/encode/png_sequence.hpp"
 #include "render/encode/video_concat.hpp"
 #include "render/output/output_error.hpp"
@@ -42,11 +43,6 @@
 namespace vibra::scenes {
 
 namespace {
-std::string extension_of(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(c));
-  return ext;
-}
 
 /// A hash (FNV-1a) of everything that shapes a render's frames and their
 /// coding, so that segments of different renders are told apart. Threads are
@@ -143,7 +139,7 @@ bool frames_complete(const std::string& pattern, const render::FrameSegment& seg
 bool already_complete(const RenderRequest& r, const Outputs& outputs, const render::FrameSegment& segment) {
   std::error_code ec;
   if (r.at) return fs::is_regular_file(r.output, ec);
-  if (extension_of(r.output) == ".html") {
+  if (render::lower_extension_of(r.output) == ".html") {
     const fs::path folder = companion_folder(r.output);
     const std::string stem = fs::path(r.output).stem().string();
     if (!fs::is_regular_file(r.output, ec) || !fs::is_regular_file(folder / (stem + ".csv"), ec)) return false;
@@ -210,7 +206,7 @@ std::string page_html(const RenderRequest& r, const Outputs& outputs, const Fram
     media.kind = render::PageMedia::Kind::video;
     for (const auto& link : outputs.links) {
       media.videos.push_back(link);
-      page.downloads.push_back({extension_of(link) == ".mp4" ? "MP4 video" : "WebM video", link});
+      page.downloads.push_back({render::lower_extension_of(link) == ".mp4" ? "MP4 video" : "WebM video", link});
     }
   }
   page.downloads.push_back({"CSV of the run", csv_link});
@@ -238,7 +234,7 @@ std::string page_written(const RenderRequest& r, const render::OutputTarget& tar
 
 /// Writes one picture at the request's time: PNG, SVG or PDF.
 void write_still(const RenderRequest& r, const render::OutputTarget& target, Scene& scene, std::span<const double> row) {
-  const std::string ext = extension_of(r.output);
+  const std::string ext = render::lower_extension_of(r.output);
   render::TemporaryFile file(target.file);
   const int w = r.scene.width, h = r.scene.height;
   if (ext == ".png") {
@@ -381,7 +377,8 @@ PreparedRender::PreparedRender(const RenderRequest& request) : state_(std::make_
 bool PreparedRender::check_output_kind() {
   State& s = *state_;
   const RenderRequest& r = s.r;
-  const std::string ext = extension_of(r.output);
+  const std::string ext = render::lower_extension_of(r.output);
+  const render::OutputKind kind = render::classify_output(r.output);
   const bool still = r.at.has_value();
   if (still && !std::isfinite(*r.at))
     throw UsageError("--at " + std::string(std::isnan(*r.at) ? "nan" : "inf") +
@@ -390,20 +387,18 @@ bool PreparedRender::check_output_kind() {
     throw UsageError("--at renders one still: give -o FILE.png, FILE.svg or FILE.pdf");
   if (!still && (ext == ".svg" || ext == ".pdf"))
     throw UsageError("-o " + r.output + " is one picture: add --at T to choose its time");
-  const bool page = s.page = ext == ".html";
-  // A frame pattern or folder names frames; anything else one file or a stream.
-  const bool frames = !still && !page && !render::is_video_path(r.output) && r.output != "-" &&
-                      !r.output.empty() && render::is_frame_pattern(r.output);
-  s.target.named = r.output;  // frames: their names are checked one by one later
+  const bool page = s.page = kind == render::OutputKind::page;
+  const bool frames = !still && kind == render::OutputKind::frames;  // their names are checked one by one later
+  s.target.named = r.output;
   if (!frames) s.target = render::resolve_output(r.output, still || page ? render::kNeedsAFile : "");
-  const bool stream = s.stream = s.target.stream;
+  const bool stream = s.stream = s.target.stream;  // "-", or a pipe or device
   if (r.frames_player && !page) throw UsageError("--frames-player writes a page: give -o PLAYER.html");
   if (r.csv_every < 1) throw UsageError("--every must be at least 1: the page's CSV keeps every K-th step");
   if (r.csv_every != 1 && !page) throw UsageError("--every thins the CSV beside a page: give -o PAGE.html, or drop --every");
   if (r.video.transparent && page && !r.frames_player)
     throw UsageError("a page's MP4 cannot be transparent: add --frames-player (PNG frames), or write .webm or .mov");
   render::check_output_settings(r.output, stream, r.video);
-  if (!still && !page && !stream && !frames && !render::is_video_path(r.output)) {
+  if (!still && !page && !stream && !frames && kind != render::OutputKind::video) {
     if (ext == ".png")
       throw UsageError("-o " + r.output + " is one picture: add --at T, or give a pattern such as frames/tmp_%04d.png");
     throw UsageError("cannot tell what to write from -o " + r.output +

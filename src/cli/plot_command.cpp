@@ -12,6 +12,7 @@
 #include "cli/wrote_message.hpp"
 #include "core/error.hpp"
 #include "core/error_column.hpp"
+#include "render/encode/output_kind.hpp"
 #include "render/output/output_path.hpp"
 #include "render/output/stop_signal.hpp"
 #include "render/page/html_page.hpp"
@@ -136,7 +137,7 @@ void run_plot(const PlotOptions& o) {
   }
   if (o.output.empty())
     throw UsageError("vibra plot needs an output file: add -o FILE.png, FILE.svg, FILE.pdf or FILE.html");
-  const bool page = std::filesystem::path(o.output).extension() == ".html";
+  const bool page = render::classify_output(o.output) == render::OutputKind::page;
   if (page && !o.annotate.empty())
     throw UsageError("--annotate marks a picture; a page's plots are zoomable: give -o FILE.png, .svg or .pdf");
   if (page && o.transparent)
