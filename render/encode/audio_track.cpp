@@ -13,14 +13,18 @@ extern "C" {
 namespace vibra::render {
 
 namespace {
-/// The codec per container, and its bit rate for mono speech.
+/// The codec per container, its bit rate for mono speech, and an encoder
+/// option. FFmpeg's AAC coder "fast" took half the CPU of its default
+/// "twoloop" on the narrated example's 24 s of speech (0.09 s against 0.21 s),
+/// which is most of narration's cost to a render.
 struct AudioCodec {
   const char* encoder;
   const char* label;
   int bit_rate;
+  const char *option, *value;  ///< nullptr: none
 };
-constexpr AudioCodec kMp4Audio = {"aac", "AAC", 96'000};
-constexpr AudioCodec kWebmAudio = {"libopus", "Opus", 64'000};
+constexpr AudioCodec kMp4Audio = {"aac", "AAC", 96'000, "aac_coder", "fast"};
+constexpr AudioCodec kWebmAudio = {"libopus", "Opus", 64'000, nullptr, nullptr};  // libopus's defaults
 
 /// The encoder's float format: planar or packed is the same for one channel.
 AVSampleFormat float_format(const AVCodec* encoder) {
@@ -46,7 +50,11 @@ AudioTrack::AudioTrack(MuxedOutput& out, const AudioClip& sound, bool mp4) : out
   codec_->bit_rate = kind.bit_rate;
   codec_->time_base = AVRational{1, AudioClip::kRate};
   if (out.format->oformat->flags & AVFMT_GLOBALHEADER) codec_->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-  out.check(avcodec_open2(codec_, encoder, nullptr), std::string("opening the ") + kind.label + " encoder");
+  AVDictionary* options = nullptr;
+  if (kind.option) av_dict_set(&options, kind.option, kind.value, 0);
+  const int opened = avcodec_open2(codec_, encoder, &options);
+  av_dict_free(&options);
+  out.check(opened, std::string("opening the ") + kind.label + " encoder");
   stream_ = avformat_new_stream(out.format, nullptr);
   if (!stream_) out.check(AVERROR(ENOMEM), "setting up the sound");
   out.check(avcodec_parameters_from_context(stream_->codecpar, codec_), "setting up the sound");
