@@ -1,7 +1,10 @@
 // Narrated lectures: flite's speech and recorded takes decoded back from the MP4 and WebM (codec, rate, length, energy where each shot speaks, loudness), shots timed to their speech, and bad narration refused before any work.
 #include <catch2/catch.hpp>
 
+#include <csignal>
+#include <chrono>
 #include <cmath>
+#include <thread>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -9,6 +12,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <sys/wait.h>
 
 #include "cli_support.hpp"
 #include "render/encode/audio_source.hpp"
@@ -280,4 +285,37 @@ TEST_CASE("a narrated lecture's page plays its sound: the video is not muted", "
   CHECK(video.find("muted") == std::string::npos);
   for (const char* file : {"page_files/page.mp4", "page_files/page.webm"})
     CHECK_FALSE(probe(dir / file, "-select_streams a -show_entries stream=codec_name").empty());
+}
+
+TEST_CASE("Ctrl-C while the speech is made stops the lecture at once, and nothing is written", "[narration][signals]") {
+  ScratchDirectory dir, logs;
+  std::string story = "size = \"320x180\"\nfps = 10\n";
+  for (int shot = 1; shot <= 400; ++shot)  // about 50 ms of flite a shot: 10 s of speech to make on two cores
+    story += "[[shot]]\ncard = \"Card\"\nsay = \"Shot " + std::to_string(shot) + " says a sentence of some length.\"\n";
+  write(dir / "story.toml", story);
+  const pid_t pid = vibra::test::spawn_vibra({"lecture", dir / "story.toml", "-q", "-o", dir / "talk.mp4"}, logs / "out",
+                                             logs / "err");
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  ::kill(pid, SIGINT);
+  const auto sent = std::chrono::steady_clock::now();
+  int status = 0;
+  for (int i = 0; i < 1000 && ::waitpid(pid, &status, WNOHANG) == 0; ++i)  // at most 10 s: a hang is killed
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+  if (seconds >= 10) ::kill(pid, SIGKILL), ::waitpid(pid, &status, 0);
+  INFO(read_file(logs / "err"));
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 128 + SIGINT);
+  CHECK(seconds < 5);  // a bound for a hang on a loaded machine: the speech stops within a sentence
+  CHECK(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()) == 1);  // the storyboard alone
+}
+
+TEST_CASE("a full disk while a narrated lecture is joined names the lecture and leaves nothing", "[narration]") {
+  ScratchDirectory at;
+  write(at / "talk.toml", "size = \"640x360\"\n[[shot]]\ncard = \"A\"\nsay = \"A card that speaks.\"\n"
+                          "[[shot]]\nscene = \"pendulum\"\nseconds = 20\nsay = \"The pendulum swings.\"\n");
+  const auto r = run_vibra("lecture talk.toml -q -o talk.mp4", "cd '" + at.path.string() + "' && trap '' XFSZ && ulimit -f 100 && ");
+  vibra::test::check_refusal(r, "cannot write video to 'talk.mp4'");
+  CHECK(r.err.find("vibra-tmp") == std::string::npos);
+  CHECK(std::distance(fs::directory_iterator(at.path), fs::directory_iterator()) == 1);  // the storyboard alone
 }
