@@ -224,6 +224,14 @@ TEST_CASE("shots timed to their speech: seconds too short refused with both dura
   const std::vector<Cue> cues = vtt_cues(read_file(dir / "long.vtt"));
   REQUIRE(cues.size() == 1);
   CHECK(chapter_ends(dir / "long.mp4").front() == Approx(cues[0].end + 0.75).margin(0.051));
+  // A scene shot stretched: its run of T = 2 slowed to last the speech, not refused.
+  write(dir / "scene.toml", "size = \"320x180\"\nfps = 10\n[[shot]]\nscene = \"spring\"\nset = { T = 2 }\n"
+                            "seconds = 0.5\nfit = \"stretch\"\n" + words);
+  REQUIRE(run_vibra("lecture " + (dir / "scene.toml") + " -q -o " + (dir / "scene.mp4")).exit_code == 0);
+  const double end = chapter_ends(dir / "scene.mp4").front();
+  CHECK(end == Approx(vtt_cues(read_file(dir / "scene.vtt")).front().end + 0.75).margin(0.051));
+  CHECK(probe(dir / "scene.mp4", "-count_frames -select_streams v:0 -show_entries stream=nb_read_frames") ==
+        std::to_string(std::lround(end * 10)) + "\n");
 }
 
 TEST_CASE("bad narration: one line naming the file, shot and key, exit 2, nothing written", "[narration]") {
