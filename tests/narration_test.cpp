@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 
 #include "cli_support.hpp"
+#include "stop_support.hpp"
 #include "render/encode/audio_source.hpp"
 #include "render/encode/loudness.hpp"
 
@@ -301,19 +302,10 @@ TEST_CASE("Ctrl-C while the speech is made stops the lecture at once, and nothin
   for (int shot = 1; shot <= 400; ++shot)  // about 50 ms of flite a shot: 10 s of speech to make on two cores
     story += "[[shot]]\ncard = \"Card\"\nsay = \"Shot " + std::to_string(shot) + " says a sentence of some length.\"\n";
   write(dir / "story.toml", story);
-  const pid_t pid = vibra::test::spawn_vibra({"lecture", dir / "story.toml", "-q", "-o", dir / "talk.mp4"}, logs / "out",
-                                             logs / "err");
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
-  ::kill(pid, SIGINT);
-  const auto sent = std::chrono::steady_clock::now();
-  int status = 0;
-  for (int i = 0; i < 1000 && ::waitpid(pid, &status, WNOHANG) == 0; ++i)  // at most 10 s: a hang is killed
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
-  if (seconds >= 10) ::kill(pid, SIGKILL), ::waitpid(pid, &status, 0);
+  const auto [code, seconds] = vibra::test::stopped_after({"lecture", dir / "story.toml", "-q", "-o", dir / "talk.mp4"},
+                                                          logs, SIGINT, 1.5);
   INFO(read_file(logs / "err"));
-  CHECK(WIFEXITED(status));
-  CHECK(WEXITSTATUS(status) == 128 + SIGINT);
+  CHECK(code == 128 + SIGINT);
   CHECK(seconds < 5);  // a bound for a hang on a loaded machine: the speech stops within a sentence
   CHECK(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()) == 1);  // the storyboard alone
 }
