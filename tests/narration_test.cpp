@@ -259,6 +259,8 @@ TEST_CASE("bad narration: one line naming the file, shot and key, exit 2, nothin
        "runs past the shot's end at 4.00 s"},
       {head + spring + "notes = [{ at = \"1-2\", words = \"x\" }]\n", "shot 1, notes: a note takes at, text and say, not 'words'"},
       {head + "[[shot]]\ncard = \"A\"\nsay = 3\n", "shot 1, say: must be a string"},
+      {head + "[[shot]]\ncard = \"A\"\nsay = \"" + std::string(1001, 'a') + "\"\n",
+       "story.toml:5: shot 1, say: a sentence of 1001 characters is more than flite speaks at once (1000)"},
   };
   for (const Case& c : cases) {
     SECTION(c.expected) {

@@ -25,6 +25,8 @@ namespace vibra::render {
 
 namespace {
 constexpr double kLongestClip = 3600;  // seconds: a shot's longest
+/// flite speaks a text in one call, deaf to Ctrl-C: a sentence's longest (about a minute of speech).
+constexpr std::size_t kLongestSentence = 1000;
 
 struct GraphFree {
   void operator()(AVFilterGraph* g) const { avfilter_graph_free(&g); }
@@ -107,6 +109,9 @@ std::string voice_problem(const std::string& voice) {
 
 AudioClip speak(const std::string& text, const std::string& voice) {
   if (const std::string problem = voice_problem(voice); !problem.empty()) throw UsageError(problem);
+  if (text.size() > kLongestSentence)
+    throw UsageError("a sentence of " + std::to_string(text.size()) + " characters is more than flite speaks at once (" +
+                     std::to_string(kLongestSentence) + "): break it with full stops");
   if (std::none_of(text.begin(), text.end(), [](unsigned char c) { return std::isalnum(c); }))
     throw UsageError("flite cannot speak \"" + short_text(text) + "\": it has no words (flite reads English letters and digits)");
   AudioClip clip = run_graph("flite", {{"text", text}, {"voice", voice}}, "flite's speech of \"" + short_text(text) + "\"");

@@ -39,7 +39,7 @@ bool read_speech_key(ShotSpeech& speech, const std::string& key, const toml::nod
                      const std::string& folder) {
   const int line = int(value.source().begin.line);
   if (key == "say") {
-    speech.say = render::rich_text_plain(words(value, where, "say = \"Drag takes energy out\""));
+    speech.say = words(value, where, "say = \"Drag takes energy out\"");  // plain words: flite reads no math
     speech.line = speech.line ? speech.line : line;
   } else if (key == "voice") {
     speech.voice = read_voice(value, where);
@@ -57,16 +57,21 @@ bool read_speech_key(ShotSpeech& speech, const std::string& key, const toml::nod
   return true;
 }
 
-std::string read_note_table(const toml::table& note, const std::string& where, ShotSpeech& speech) {
+std::string read_note_table(const toml::table& note, ShotSpeech& speech) {
   const toml::node* at = note.get("at");
   const toml::node* text = note.get("text");
   const toml::node* say = note.get("say");
   for (auto&& [key, value] : note)
     if (key.str() != "at" && key.str() != "text" && key.str() != "say")
-      refuse(where, "a note takes at, text and say, not '" + std::string(key.str()) + "'");
-  if (!at || !text) refuse(where, "a note needs at and text, e.g. { at = \"1-3\", text = \"...\", say = true }");
-  if (say && !say->is_boolean()) refuse(where, "a note's say is true or false, e.g. say = true");
-  const std::string spec = words(*at, where, "at = \"1-3\"") + ": " + words(*text, where, "text = \"...\"");
+      throw UsageError("a note takes at, text and say, not '" + std::string(key.str()) + "'");
+  if (!at || !text) throw UsageError("a note needs at and text, e.g. { at = \"1-3\", text = \"...\", say = true }");
+  if (say && !say->is_boolean()) throw UsageError("a note's say is true or false, e.g. say = true");
+  const auto part = [](const toml::node& value, const char* example) {
+    const auto words = value.value<std::string>();
+    if (!value.is_string() || !words) throw UsageError(std::string("must be a string, e.g. ") + example);
+    return *words;
+  };
+  const std::string spec = part(*at, "at = \"1-3\"") + ": " + part(*text, "text = \"...\"");
   const Note parsed = parse_note(spec);  // checks the times and the text's math
   if (say && say->value_or(false))
     speech.notes.push_back({parsed.from, render::rich_text_plain(parsed.text), int(say->source().begin.line)});

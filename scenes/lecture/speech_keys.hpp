@@ -24,7 +24,7 @@ std::string read_voice(const toml::node& value, const std::string& where);
 
 /// A note written as a table, { at = "1-3", text = "...", say = true }: its
 /// "T0-T1: text" spec (as render --note takes), recorded in `speech` as
-/// spoken when `say` is true.
-std::string read_note_table(const toml::table& note, const std::string& where, ShotSpeech& speech);
+/// spoken when `say` is true. Throws UsageError (the caller names the place).
+std::string read_note_table(const toml::table& note, ShotSpeech& speech);
 
 }  // namespace vibra::scenes

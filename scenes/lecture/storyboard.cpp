@@ -169,7 +169,7 @@ Shot scene_shot(const toml::table& table, const std::string& file, const std::st
       for (const toml::node& note : *notes) {
         try {
           // A note is the scene's callout (render --note); a subtitle only when no frame shows it.
-          const std::string spec = note.is_table() ? read_note_table(*note.as_table(), at.text(), shot.speech)
+          const std::string spec = note.is_table() ? read_note_table(*note.as_table(), shot.speech)
                                                    : text_value(note, at);
           (void)parse_note(spec);
           shot.scene.notes.push_back(spec);
