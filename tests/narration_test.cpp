@@ -321,3 +321,17 @@ TEST_CASE("a full disk while a narrated lecture is joined names the lecture and 
   CHECK(r.err.find("vibra-tmp") == std::string::npos);
   CHECK(std::distance(fs::directory_iterator(at.path), fs::directory_iterator()) == 1);  // the storyboard alone
 }
+
+TEST_CASE("a spoken note that no frame shows is one subtitle, timed as it is spoken", "[narration]") {
+  ScratchDirectory dir;
+  // At 10 fps and speed 1, frames show t = 1.0 and 1.1: none shows 1.02-1.08, so the note is a subtitle.
+  write(dir / "story.toml", "size = \"320x180\"\nfps = 10\n[[shot]]\nscene = \"spring\"\nset = { T = 3, dt = 0.05 }\n"
+                            "seconds = 3.1\nnotes = [{ at = \"1.02-1.08\", text = \"between frames\", say = true }]\n");
+  REQUIRE(run_vibra("lecture story.toml -q -o talk.mp4", "cd " + dir.path.string() + " && ").exit_code == 0);
+  const std::vector<Cue> cues = vtt_cues(read_file(dir / "talk.vtt"));
+  REQUIRE(cues.size() == 1);
+  CHECK(cues[0].text == "between frames");
+  CHECK(cues[0].start == Approx(1.02).margin(0.002));
+  const std::vector<float> sound = decoded_sound(dir / "talk.mp4");
+  CHECK(rms(sound, cues[0].start, cues[0].end) > 0.02);
+}
