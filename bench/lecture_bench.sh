@@ -16,14 +16,7 @@ WORK=$(mktemp -d /dev/shm/vibra_lecture_bench.XXXXXX 2>/dev/null || mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 X264=(-c:v libx264 -preset veryfast -x264-params bframes=0:me=dia:subme=1:8x8dct=0 -crf 23 -g 150 -profile:v high -threads 2)
 
-seconds() {  # seconds COMMAND...: wall time of one run
-  local start end
-  start=$(date +%s.%N)
-  "$@" >/dev/null 2>"$WORK/err" || { echo "$1: FAILED" >&2; cat "$WORK/err" >&2; exit 1; }
-  end=$(date +%s.%N)
-  echo "$end - $start" | bc -l
-}
-median() { tr ' ' '\n' | grep . | sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
+source bench/wall_time.sh  # seconds, median
 
 ours_run() { "$VIBRA" lecture "$STORY" --size "$DIMS" -q -o "$WORK/lecture.mp4"; }
 ours_run >/dev/null 2>&1 || { "$VIBRA" lecture "$STORY" --size "$DIMS" -q -o "$WORK/lecture.mp4"; exit 1; }

@@ -23,12 +23,14 @@
 
 #include "app/ascii_plot.hpp"
 #include "cli_support.hpp"
+#include "stop_support.hpp"
 
 using vibra::test::check_refused;
 using vibra::test::read_file;
 using vibra::test::check_refusal;
 using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;
+using vibra::test::stopped_after;
 namespace fs = std::filesystem;
 
 namespace {
@@ -565,22 +567,6 @@ std::string storyboard_with_notes(int count) {
   return "size = \"640x360\"\n[[shot]]\nscene = \"pendulum\"\nseconds = 60\nnotes = [" + notes + "]\n";
 }
 
-/// Starts `vibra ARGS`, sends `signal` after `after` s, and returns its exit
-/// code and the seconds from the signal to its end (a run that goes on for
-/// 10 s is killed).
-std::pair<int, double> stopped_after(const std::vector<std::string>& args, const ScratchDirectory& logs, int signal,
-                                     double after) {
-  const pid_t pid = vibra::test::spawn_vibra(args, logs / "out", logs / "err");
-  std::this_thread::sleep_for(std::chrono::duration<double>(after));
-  ::kill(pid, signal);
-  const auto sent = std::chrono::steady_clock::now();
-  int status = 0;
-  for (int i = 0; i < 1000 && ::waitpid(pid, &status, WNOHANG) == 0; ++i)  // at most 10 s: a hang is killed
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
-  if (seconds >= 10) ::kill(pid, SIGKILL), ::waitpid(pid, &status, 0);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status), seconds};
-}
 }  // namespace
 
 TEST_CASE("adversarial: more notes at once than a frame shows are refused with the limit, before any work",

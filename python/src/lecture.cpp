@@ -15,7 +15,7 @@ void bind_lecture(py::module_& m) {
   m.def(
       "lecture",
       [](const std::string& storyboard, const std::string& output, std::optional<int> shot, const std::string& codec,
-         const std::string& quality, int crf, const std::string& preset, int threads, bool force, bool quiet) {
+         const std::string& quality, int crf, const std::string& preset, int threads, bool force, bool quiet, bool mute) {
         PythonStop stop;  // first: a Ctrl-C from here on stops the call, and leaves nothing
         forget_input_files();  // each call is a run of its own
         if (crf != -1) in_range("--crf", crf, std::to_string(crf));
@@ -27,11 +27,12 @@ void bind_lecture(py::module_& m) {
         request.video = render::VideoSettings{codec, quality, crf, preset, threads, false, ""};
         request.force = force;
         request.quiet = quiet;
+        request.mute = mute;
         py::gil_scoped_release release;
         scenes::run_lecture(request);
       },
       py::arg("storyboard"), py::arg("output"), py::arg("shot"), py::arg("codec"), py::arg("quality"), py::arg("crf"),
-      py::arg("preset"), py::arg("threads"), py::arg("force"), py::arg("quiet"));
+      py::arg("preset"), py::arg("threads"), py::arg("force"), py::arg("quiet"), py::arg("mute"));
 }
 
 }  // namespace vibra::python

@@ -64,3 +64,21 @@ def test_slow_and_pause_pace_a_render(in_tmp):
         vibra.render("spring", out="bad.mp4", slow=["2-4:4", "3-5:2"])
     with pytest.raises(ValueError, match="is not"):
         vibra.render("spring", out="bad.mp4", pause=(1, 2, 3))
+
+
+SPOKEN = """size = "320x180"
+fps = 10
+[[shot]]
+card = "Springs"
+say = "A spring swings."
+"""
+
+
+def test_a_narrated_lecture_speaks_unless_muted(in_tmp):
+    (in_tmp / "story.toml").write_text(SPOKEN)
+    spoken = probe(vibra.lecture("story.toml", output="spoken.mp4"), "stream=codec_type,codec_name:chapter=end_time")
+    muted = probe(vibra.lecture("story.toml", output="muted.mp4", mute=True), "stream=codec_type,codec_name:chapter=end_time")
+    assert [s["codec_name"] for s in spoken["streams"] if s["codec_type"] == "audio"] == ["aac"]
+    assert [s for s in muted["streams"] if s["codec_type"] == "audio"] == []
+    assert spoken["chapters"] == muted["chapters"]  # the card lasts its speech either way
+    assert float(spoken["chapters"][0]["end_time"]) > 1  # 0.25 s, the words, a 0.75 s tail

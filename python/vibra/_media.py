@@ -132,18 +132,19 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
 
 
 def lecture(storyboard, output=None, *, shot=None, codec="", quality="medium", crf=-1, preset="", threads=0,
-            force=False, quiet=True):
+            force=False, quiet=True, mute=False):
     """Plays a storyboard's shots into one video as `vibra lecture` does:
     output="name.mp4" or .webm (default: the storyboard's name .mp4), with
     name.vtt (subtitles) beside it, a chapter per shot and a subtitle track;
     or "page.html" (a page with a chapter list; returned as a Path). shot=N
-    renders shot N alone. Returns a Video.
+    renders shot N alone. Shots with say = "..." speak (AAC or Opus in the
+    video); mute=True leaves the sound track out, as --mute. Returns a Video.
     """
     storyboard = path_text("lecture", "storyboard", storyboard)
     if output is None:
         output = Path(storyboard).stem + ".mp4"
     output = path_text("lecture", "output", output)
-    native("lecture")(storyboard, output, shot, codec, quality, crf, preset, threads, force, quiet)
+    native("lecture")(storyboard, output, shot, codec, quality, crf, preset, threads, force, quiet, bool(mute))
     if Path(output).suffix.lower() in VIDEO_TYPES:
         return Video(output)
     return Path(output)

@@ -11,6 +11,7 @@ extern "C" {
 #include <memory>
 #include <optional>
 
+#include "render/encode/audio_track.hpp"
 #include "render/encode/av_error.hpp"
 #include "render/output/stop_signal.hpp"
 #include "render/encode/remux_files.hpp"
@@ -117,6 +118,10 @@ struct SubtitleTrack {
   }
 };
 
+/// How far the sound runs ahead of the frames in the file: the muxer
+/// interleaves within it, and players buffer it.
+constexpr double kSoundLead = 0.5;  // seconds
+
 void add_chapters(MuxedOutput& out, const std::vector<VideoChapter>& chapters, int fps) {
   if (chapters.empty()) return;
   auto** list = static_cast<AVChapter**>(av_calloc(chapters.size(), sizeof(AVChapter*)));
@@ -138,7 +143,7 @@ void add_chapters(MuxedOutput& out, const std::vector<VideoChapter>& chapters, i
 
 void join_clips(const std::vector<ClipFile>& files, const fs::path& output, int fps,
                 const std::vector<VideoChapter>& chapters, const std::vector<SubtitleCue>& cues,
-                const std::map<std::string, std::string>& metadata) {
+                const std::map<std::string, std::string>& metadata, const AudioClip* sound) {
   av_log_set_level(AV_LOG_QUIET);  // every failure is reported in our words, with FFmpeg's reason
   if (files.empty()) throw OutputError("a lecture needs at least one shot to join");
   std::vector<Clip> clips;
@@ -161,6 +166,8 @@ void join_clips(const std::vector<ClipFile>& files, const fs::path& output, int 
   video->avg_frame_rate = AVRational{fps, 1};
   std::optional<SubtitleTrack> subtitles;
   if (!cues.empty()) subtitles.emplace(out, std::strcmp(muxer->name, "mp4") == 0);
+  std::optional<AudioTrack> audio;
+  if (sound) audio.emplace(out, *sound, std::strcmp(muxer->name, "mp4") == 0);
   add_chapters(out, chapters, fps);
   for (const auto& [key, value] : metadata) av_dict_set(&out.format->metadata, key.c_str(), value.c_str(), 0);
   out.write_header();
@@ -190,7 +197,9 @@ void join_clips(const std::vector<ClipFile>& files, const fs::path& output, int 
       av_packet_rescale_ts(packet.get(), clip.stream->time_base, video->time_base);
       packet->stream_index = video->index;
       packet->pos = -1;
+      const double shown = double(packet->pts) * av_q2d(video->time_base);  // in the joined video; the write takes the packet
       out.check(av_interleaved_write_frame(out.format, packet.get()), "writing a frame");
+      if (audio) audio->write_until(shown + kSoundLead);
       if ((++frames & 0xff) == 0) throw_if_stop_requested();
     }
     if (frames != expected)
@@ -198,6 +207,7 @@ void join_clips(const std::vector<ClipFile>& files, const fs::path& output, int 
                             (files.size() == 1 ? " of the lecture" : " of its shot"));
     offset += frames;
   }
+  if (audio) audio->finish();
   out.finish_and_commit();
 }
 

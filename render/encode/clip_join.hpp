@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "render/encode/audio_clip.hpp"
 #include "render/encode/subtitle_cue.hpp"
 
 namespace vibra::render {
@@ -30,8 +31,10 @@ struct ClipFile {
 /// MP4, WebVTT in WebM. `fps` is the clips' frame rate. Throws OutputError
 /// naming the clip (one that does not hold its frames) or the output; the
 /// output is written under a temporary name and renamed when complete.
+/// `sound`, when given, is encoded as an audio track from the video's start
+/// (AAC in MP4, Opus in WebM: audio_track.hpp), interleaved with the frames.
 void join_clips(const std::vector<ClipFile>& clips, const std::filesystem::path& output, int fps,
                 const std::vector<VideoChapter>& chapters, const std::vector<SubtitleCue>& cues,
-                const std::map<std::string, std::string>& metadata);
+                const std::map<std::string, std::string>& metadata, const AudioClip* sound = nullptr);
 
 }  // namespace vibra::render

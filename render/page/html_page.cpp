@@ -30,7 +30,8 @@ std::string media_html(const PageMedia& m) {
       return "<div id=\"media\"><img id=\"frames\"" + size + " alt=\"a frame of the animation\"></div>";
     case PageMedia::Kind::video: break;
   }
-  std::string out = "<div id=\"media\"><video id=\"video\" preload=\"auto\" playsinline muted loop" + size + ">\n";
+  const std::string playing = m.sound ? "" : " muted loop";  // a silent animation loops; a lecture speaks, once
+  std::string out = "<div id=\"media\"><video id=\"video\" preload=\"auto\" playsinline" + playing + size + ">\n";
   for (const auto& s : m.videos) out += "  <source src=\"" + href(s) + "\" type=\"" + mime_type(s) + "\">\n";
   if (!m.subtitles.empty())
     out += "  <track kind=\"subtitles\" label=\"Notes\" srclang=\"en\" src=\"" + href(m.subtitles) + "\" default>\n";

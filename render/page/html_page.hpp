@@ -33,6 +33,8 @@ struct PageMedia {
   std::vector<TimePiece> time_map;
   /// Subtitles (WebVTT) relative to the page, shown by the video ("": none).
   std::string subtitles;
+  /// The video speaks (a narrated lecture): played with its sound and controls, not muted and looped.
+  bool sound = false;
 };
 
 /// A chapter of a lecture page's video: its title and where it starts.

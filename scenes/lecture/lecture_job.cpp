@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <optional>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -30,6 +33,7 @@
 #include "render/output/temporary_file.hpp"
 #include "render/page/html_page.hpp"
 #include "render/typeset/formula_text.hpp"
+#include "scenes/lecture/narration.hpp"
 #include "scenes/lecture/storyboard.hpp"
 #include "scenes/lecture/title_card.hpp"
 #include "scenes/note.hpp"
@@ -50,6 +54,8 @@ struct PlannedShot {
   long long frames = 0;
   std::vector<render::SubtitleCue> cues;
   std::string tag;  ///< the shot file's description: which lecture shot, which render
+  std::vector<double> spoken_at;    ///< its spoken notes' video times, from the shot's start
+  std::vector<SpokenPiece> speech;  ///< what it says, when
 };
 
 std::string lower_extension(const std::string& path) {
@@ -157,16 +163,30 @@ PlannedShot plan_scene(const Storyboard& board, const Shot& shot) {
     }
   }
   refuse_crowded_notes(notes, p.scene.width, p.scene.height);
+  for (const SpokenNote& spoken : shot.speech.notes) p.spoken_at.push_back(map.first_video_time(spoken.at));
   p.cues = note_cues(notes, clock, map, double(p.frames) / board.fps);
   return p;
 }
 
+/// A shot's speech placed, and its words as its subtitles: a card that
+/// speaks shows its words rather than its text.
+void add_speech(const Storyboard& board, PlannedShot& p, const ShotNarration& narration) {
+  p.speech = shot_pieces(board, *p.shot, narration, p.spoken_at, double(p.frames) / board.fps);
+  if (p.speech.empty()) return;
+  if (p.shot->is_card && !p.shot->speech.say.empty()) p.cues.clear();
+  for (const render::SubtitleCue& c : speech_cues(p.speech)) p.cues.push_back(c);
+  std::stable_sort(p.cues.begin(), p.cues.end(), [](const auto& a, const auto& b) { return a.start < b.start; });
+  for (std::size_t i = 0; i + 1 < p.cues.size(); ++i) p.cues[i].end = std::min(p.cues[i].end, p.cues[i + 1].start);
+}
+
 /// Every shot planned, or the first problem as one line naming the file and shot.
-std::vector<PlannedShot> plan_lecture(const Storyboard& board, const render::VideoSettings& video) {
+std::vector<PlannedShot> plan_lecture(const Storyboard& board, const render::VideoSettings& video,
+                                      const std::vector<ShotNarration>& narration) {
   std::vector<PlannedShot> plan;
   for (const Shot& shot : board.shots) {
     try {
       plan.push_back(shot.is_card ? plan_card(board, shot) : plan_scene(board, shot));
+      add_speech(board, plan.back(), narration[plan.size() - 1]);
     } catch (const UsageError& e) {
       const std::string message = e.what();
       if (message.rfind(board.file, 0) == 0) throw;
@@ -175,6 +195,31 @@ std::vector<PlannedShot> plan_lecture(const Storyboard& board, const render::Vid
     plan.back().tag = shot_tag(board, shot, video);
   }
   return plan;
+}
+
+/// The chosen shots' sound, one after the other; none when none speaks.
+std::optional<render::AudioClip> sound_of(const std::vector<const PlannedShot*>& shots, double fps) {
+  std::vector<const std::vector<SpokenPiece>*> pieces;
+  std::vector<double> starts;
+  long long frame = 0;
+  bool speaks = false;
+  for (const PlannedShot* p : shots) {
+    pieces.push_back(&p->speech);
+    starts.push_back(double(frame) / fps);
+    frame += p->frames;
+    speaks = speaks || !p->speech.empty();
+  }
+  if (!speaks) return std::nullopt;
+  return lecture_sound(pieces, starts, double(frame) / fps);
+}
+
+/// --script: the narration to record from, on standard output.
+void write_script(const Storyboard& board, const std::vector<PlannedShot>& plan) {
+  std::vector<double> seconds;
+  for (const PlannedShot& p : plan) seconds.push_back(double(p.frames) / board.fps);
+  const std::string script = narration_script(board, seconds);
+  if (std::fwrite(script.data(), 1, script.size(), stdout) != script.size() || std::fflush(stdout) != 0)
+    throw render::OutputError("writing the script to standard output failed: " + std::string(std::strerror(errno)));
 }
 
 /// The text of a container's "description" ("" when unreadable): a shot file's tag.
@@ -315,7 +360,10 @@ void make_lecture(const LectureRequest& r) {
     throw UsageError("--shot " + std::to_string(*r.shot) + ": " + r.storyboard + " has shots 1.." +
                      std::to_string(board.shots.size()));
   render::start_loading_fonts();
-  const std::vector<PlannedShot> plan = plan_lecture(board, r.video);  // every shot checked before any work
+  const std::vector<ShotNarration> narration = narrate_lecture(board);  // speech made before any frame
+  fit_shots_to_speech(board, narration);
+  const std::vector<PlannedShot> plan = plan_lecture(board, r.video, narration);  // every shot checked before any work
+  if (r.script) return write_script(board, plan);
   std::vector<const PlannedShot*> chosen;
   for (const PlannedShot& p : plan)
     if (r.shot ? p.shot->number == *r.shot
@@ -356,6 +404,7 @@ void make_lecture(const LectureRequest& r) {
   std::vector<render::VideoChapter> chapters;
   std::vector<render::SubtitleCue> cues;
   lay_out(chosen, board.fps, chapters, cues);
+  const std::optional<render::AudioClip> sound = r.mute ? std::nullopt : sound_of(chosen, board.fps);
 
   // The shots: reused from a cluster's shot files where complete, else rendered into a temporary folder.
   render::TemporaryDirectory clips(final_video.parent_path(), stem + "_shots");
@@ -422,7 +471,7 @@ void make_lecture(const LectureRequest& r) {
     render::TemporaryFile subtitles(vtt);
     render::write_text(subtitles, render::web_vtt(cues, shown_path(r.storyboard)));
     const fs::path joined = clips.path() / final_video.filename();
-    render::join_clips(clip_files[0], joined, fps, chapters, cues, metadata);
+    render::join_clips(clip_files[0], joined, fps, chapters, cues, metadata, sound ? &*sound : nullptr);
     render::place_together({{joined, final_video}, {subtitles.path(), subtitles.final_path()}});
     if (!r.quiet)
       std::fprintf(stderr, "vibra: wrote %s (%zu shot%s, %lld frames, %.1f s, %zu chapters) and %s\n",
@@ -435,7 +484,8 @@ void make_lecture(const LectureRequest& r) {
   const std::string folder = companions.filename().string() + "/";
   render::write_text_file(staged.path() / (stem + ".vtt"), render::web_vtt(cues, shown_path(r.storyboard)));
   for (std::size_t i = 0; i < kinds.size(); ++i)
-    render::join_clips(clip_files[i], staged.path() / (stem + kinds[i]), fps, chapters, cues, metadata);
+    render::join_clips(clip_files[i], staged.path() / (stem + kinds[i]), fps, chapters, cues, metadata,
+                       sound ? &*sound : nullptr);
   render::LecturePage lecture;
   lecture.title = render::rich_text_plain(board.title);
   render::PageMedia& media = lecture.media;
@@ -446,6 +496,7 @@ void make_lecture(const LectureRequest& r) {
   media.frame_interval = 1 / board.fps;
   media.videos = {folder + stem + ".mp4", folder + stem + ".webm"};
   media.subtitles = folder + stem + ".vtt";
+  media.sound = sound.has_value();
   for (const auto& c : chapters) lecture.chapters.push_back({c.title, double(c.first_frame) / board.fps});
   lecture.downloads = {{"MP4 video", folder + stem + ".mp4"}, {"WebM video", folder + stem + ".webm"},
                        {"Subtitles (WebVTT)", folder + stem + ".vtt"}};

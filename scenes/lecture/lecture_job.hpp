@@ -23,6 +23,8 @@ struct LectureRequest {
   /// Replace subtitles or shot files that vibra did not write for this lecture.
   bool force = false;
   bool quiet = false;
+  bool mute = false;    ///< no sound track: the shots keep the lengths their speech gives them
+  bool script = false;  ///< write the narration script (shot, title, length, words) to standard output instead
   std::string command_line;  ///< shown on a page
 };
 

@@ -20,6 +20,7 @@
 #include "render/typeset/formula_parser.hpp"
 #include "render/typeset/formula_text.hpp"
 #include "scenes/note.hpp"
+#include "scenes/lecture/speech_keys.hpp"
 #include "scenes/scene_table.hpp"
 
 namespace fs = std::filesystem;
@@ -71,9 +72,17 @@ double seconds_value(const toml::node& node, const Place& at) {
 /// A key the shot may not have: names the keys it may.
 [[noreturn]] void refuse_key(const Place& at, const std::vector<std::string>& allowed, const std::string& kind) {
   std::vector<std::string> candidates = allowed;
+  const std::vector<std::string>& spoken = allowed == kTopKeys ? kTopSpeechKeys : kShotSpeechKeys;
+  candidates.insert(candidates.end(), spoken.begin(), spoken.end());
   const std::string near = closest_match(at.key, candidates);
   at.refuse("is not a key of " + kind + (near.empty() ? "" : " (did you mean '" + near + "'?)") + ": it takes " +
-            list_of(allowed));
+            list_of(candidates));
+}
+
+/// A key list with the narration keys (speech_keys.hpp) added.
+std::vector<std::string> with_speech_keys(std::vector<std::string> keys) {
+  keys.insert(keys.end(), kShotSpeechKeys.begin(), kShotSpeechKeys.end());
+  return keys;
 }
 
 std::string source_text(const toml::table& shot) {
@@ -98,12 +107,14 @@ std::string typeset_value(const toml::node& node, const Place& at, bool math) {
   return text;
 }
 
-Shot card_shot(const toml::table& table, const std::string& file, int number) {
+Shot card_shot(const toml::table& table, const std::string& file, const std::string& folder, int number) {
   Shot shot;
   shot.number = number;
   shot.is_card = true;
+  shot.timed = table.contains("seconds");
   for (auto&& [key, node] : table) {
     const Place at{file, number, std::string(key.str()), int(node.source().begin.line)};
+    if (read_speech_key(shot.speech, at.key, node, at.text(), folder)) continue;
     if (at.key == "card") shot.card = typeset_value(node, at, false);
     else if (at.key == "equation") shot.equation = typeset_value(node, at, true);
     else if (at.key == "title") shot.title = render::rich_text_plain(typeset_value(node, at, false));
@@ -136,6 +147,7 @@ SceneConfig shot_scene(const std::string& name, const std::string& folder, const
 Shot scene_shot(const toml::table& table, const std::string& file, const std::string& folder, int number) {
   Shot shot;
   shot.number = number;
+  shot.timed = table.contains("seconds") || table.contains("speed") || table.contains("frame_per_step");
   const toml::node* scene = table.get("scene");
   const Place scene_at{file, number, "scene", scene ? int(scene->source().begin.line) : 0};
   if (!scene)
@@ -145,7 +157,7 @@ Shot scene_shot(const toml::table& table, const std::string& file, const std::st
   std::vector<const toml::table*> model_keys;
   for (auto&& [key, node] : table) {
     const Place at{file, number, std::string(key.str()), int(node.source().begin.line)};
-    if (at.key == "scene") continue;
+    if (at.key == "scene" || read_speech_key(shot.speech, at.key, node, at.text(), folder)) continue;
     if (at.key == "title") shot.title = render::rich_text_plain(typeset_value(node, at, false));
     else if (at.key == "seconds") shot.seconds = seconds_value(node, at);
     else if (at.key == "set") {
@@ -157,7 +169,8 @@ Shot scene_shot(const toml::table& table, const std::string& file, const std::st
       for (const toml::node& note : *notes) {
         try {
           // A note is the scene's callout (render --note); a subtitle only when no frame shows it.
-          const std::string spec = text_value(note, at);
+          const std::string spec = note.is_table() ? read_note_table(*note.as_table(), shot.speech)
+                                                   : text_value(note, at);
           (void)parse_note(spec);
           shot.scene.notes.push_back(spec);
         } catch (const UsageError& e) {
@@ -170,7 +183,7 @@ Shot scene_shot(const toml::table& table, const std::string& file, const std::st
       at.refuse("belongs to a title card, not a scene shot: put it in a shot of its own");
     }
   }
-  const std::vector<Setting> settings = table_settings(table, file, where, kShotKeys);  // the scene keys
+  const std::vector<Setting> settings = table_settings(table, file, where, with_speech_keys(kShotKeys));  // the scene keys
   for (const Setting& s : settings)  // the model first: the other keys are checked against it
     if (s.key == "model") apply_setting(shot.scene, s);
   for (const Setting& s : settings)
@@ -214,6 +227,8 @@ Storyboard parse_storyboard(const std::string& text, const std::string& file, co
       if (!fps || !(*fps >= 1 && *fps <= 240) || *fps != std::floor(*fps))
         at.refuse("must be a whole number of frames per second, 1..240, e.g. fps = 30");
       board.fps = *fps;
+    } else if (at.key == "voice") {
+      board.voice = read_voice(node, at.text());
     } else if (at.key != "shot") {
       refuse_key(at, kTopKeys, "a storyboard");
     }
@@ -228,7 +243,7 @@ Storyboard parse_storyboard(const std::string& text, const std::string& file, co
     ++number;
     const toml::table* shot = node.as_table();
     if (!shot) Place{file, number, "", int(node.source().begin.line)}.refuse("is not a table: write [[shot]] and its keys");
-    Shot s = shot->contains("card") || shot->contains("equation") ? card_shot(*shot, file, number)
+    Shot s = shot->contains("card") || shot->contains("equation") ? card_shot(*shot, file, folder, number)
                                                                    : scene_shot(*shot, file, folder, number);
     s.scene.width = board.width, s.scene.height = board.height, s.scene.fps = board.fps;
     s.source = source_text(*shot);

@@ -1,6 +1,7 @@
 // Storyboard: a lecture's shots (scenes and title cards) read from a TOML file.
 #pragma once
 #include <optional>
+#include "scenes/lecture/shot_speech.hpp"  // say, voice, audio, fit: narration
 #include <string>
 #include <vector>
 
@@ -14,6 +15,8 @@ struct Shot {
   int number = 0;      ///< 1, 2, ... in the storyboard's order
   std::string title;   ///< the chapter's title: the shot's `title`, its card, or its scene
   bool is_card = false;
+  ShotSpeech speech;   ///< what the shot says: flite's speech or a recorded take, and spoken notes
+  bool timed = false;  ///< the storyboard gave `seconds`: speech must fit them (or fit = "stretch")
   std::string card, equation;  ///< a card's text and equation (the LaTeX subset)
   SceneConfig scene;           ///< a scene shot's scene, its keys applied
   std::optional<double> seconds;  ///< the shot's length of video; a scene shot derives its speed from it
@@ -26,6 +29,7 @@ struct Storyboard {
   std::string title;  ///< the lecture's title ("" = the file's stem)
   int width = 1280, height = 720;
   double fps = 30;
+  std::string voice = "slt";  ///< flite's voice for shots that name none
   std::vector<Shot> shots;
 };
 

@@ -22,6 +22,7 @@ struct LectureOptions {
   std::string segment, size;
   bool force = false;
   bool quiet = false;
+  bool mute = false, script = false;
   render::VideoSettings video;
 };
 
@@ -35,6 +36,8 @@ void run(const LectureOptions& o) {
   request.video = o.video;
   request.force = o.force;
   request.quiet = o.quiet;
+  request.mute = o.mute;
+  request.script = o.script;
   request.command_line = command_line();
   quiet_long_work(o.quiet);
   scenes::run_lecture(request);
@@ -61,12 +64,18 @@ void add_lecture_command(CLI::App& app) {
   cmd->add_option("--threads", o->video.threads, "Encoder threads (default: one per core)")->check(ranged("--threads"));
   cmd->add_flag("--force", o->force,
                 "Replace OUT.vtt, PAGE_files/ or a shot file that vibra did not write for this lecture");
+  cmd->add_flag("--mute", o->mute, "No sound track: the shots keep the lengths their speech (say, audio) gives them");
+  cmd->add_flag("--script", o->script,
+                "Write the narration script (each shot's number, start, length, title and words) to standard output "
+                "and render nothing: to record takes from");
   add_allow_unstable_flag(*cmd);
   cmd->add_flag("-q,--quiet", o->quiet, "No progress or messages");
   cmd->footer(
       "\nA shot is a title card (card = \"text\", equation = \"LaTeX\", seconds = 3) or a scene (scene = NAME or a\n"
       "scene file, set = { KEY = VALUE }, any key vibra render takes: compare, panels, layout, slow, pause, ...;\n"
       "seconds = the shot's length, or speed; notes = [\"T0-T1: text\"] become subtitles). Each shot is a chapter.\n"
+      "say = \"words\" on a shot speaks them (flite, offline; voice = \"slt\"), audio = \"take.wav\" plays a recording;\n"
+      "a shot without seconds lasts as long as its speech.\n"
       "The whole storyboard is checked before anything is rendered. docs/lecture.md has a complete example.\n"
       "Examples:\n"
       "  vibra lecture examples/damped_pendulum_lecture.toml -o lecture.mp4\n"
