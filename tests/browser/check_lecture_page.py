@@ -351,6 +351,20 @@ def check_frames_player(browser, page, fps):
           "ArrowRight steps the frames player one frame: " + src.rsplit("/", 1)[-1])
 
 
+def find_chromium(unchecked):
+    """Chromium's path and 0, or None and the exit code to return: SKIP on a developer's machine, 1 with CI=true
+    (scripts/setup installs Chromium there). `unchecked` says what then goes unchecked."""
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    if chromium:
+        return chromium, 0
+    if os.environ.get("CI") == "true":
+        print("FAIL: chromium is not installed: install the Debian package chromium (scripts/setup does);"
+              " CI=true, so the browser test must run, not skip")
+        return None, 1
+    print("SKIPPED: chromium is not installed (scripts/setup installs it); " + unchecked)
+    return None, SKIP
+
+
 def main():
     args = sys.argv[1:]
     if not args:
@@ -358,14 +372,9 @@ def main():
         return 2
     vibra = args[0]
     screenshot = Path(args[args.index("--screenshot") + 1]) if "--screenshot" in args else None
-    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    chromium, missing = find_chromium("the page was not checked in a browser")
     if not chromium:
-        if os.environ.get("CI") == "true":
-            print("FAIL: chromium is not installed: install the Debian package chromium (scripts/setup does);"
-                  " CI=true, so the browser test must run, not skip")
-            return 1
-        print("SKIPPED: chromium is not installed (scripts/setup installs it); the page was not checked in a browser")
-        return SKIP
+        return missing
     work = Path(tempfile.mkdtemp(prefix="vibra_page_"))
     keep = "--keep" in args
     try:
