@@ -25,7 +25,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from check_lecture_page import Chromium, check, failures, find_chromium, run  # noqa: E402
+from check_lecture_page import Chromium, check, check_no_problems, find_chromium, run, verdict  # noqa: E402
 
 # The storyboard the C++ tests use too (tests/lecture_present_test.cpp): 10 fps, shots of 1, 2, 3 and 0.5 s;
 # a card that holds, a scene that goes on by itself, one that plays 1 s once and loops the rest, a card that loops.
@@ -218,16 +218,10 @@ def main():
             errors, fetched = browser.problems()
         finally:
             browser.close()
-        check(not errors, "no console errors" + ("" if not errors else ": " + " | ".join(errors)))
-        remote = [u for u in fetched if not u.startswith(("file:", "data:", "blob:"))]
-        check(not remote, f"nothing fetched but files ({len(fetched)} requests)" + ("" if not remote else ": " + ", ".join(remote)))
+        check_no_problems(errors, fetched)
     finally:
         shutil.rmtree(work, ignore_errors=True)
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    print("all presentation checks passed")
-    return 0
+    return verdict("all presentation checks passed")
 
 
 def take_example_screenshots(browser, page, folder):
