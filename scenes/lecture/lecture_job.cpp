@@ -304,8 +304,9 @@ void lay_out(const std::vector<const PlannedShot*>& shots, double fps, std::vect
 }
 /// What the speaker view shows of a shot: a card's text, a scene's notes.
 std::vector<std::string> speaker_notes(const Shot& shot) {
-  if (shot.is_card) {
-    std::vector<std::string> notes = {render::rich_text_plain(shot.card)};
+  if (shot.is_card) {  // a card has a text, an equation, or both
+    std::vector<std::string> notes;
+    if (!shot.card.empty()) notes.push_back(render::rich_text_plain(shot.card));
     if (!shot.equation.empty()) notes.push_back(render::formula_plain_text(shot.equation));
     return notes;
   }

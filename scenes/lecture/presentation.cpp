@@ -2,6 +2,7 @@
 #include "scenes/lecture/presentation.hpp"
 
 #include "render/output/output_error.hpp"
+#include "render/output/stop_signal.hpp"
 
 namespace fs = std::filesystem;
 
@@ -37,6 +38,7 @@ render::Presentation stage_presentation(const std::string& title, int width, int
   page.width = width + (width & 1), page.height = height + (height & 1);  // videos are even-sized
   page.fps = fps;
   for (const PresentedShot& shot : shots) {
+    render::throw_if_stop_requested();
     const std::string stem = shot_file_stem(shot, shots.size());
     const std::string video = stem + shot.video.extension().string(), still = stem + ".png";
     move_file(shot.video, staged / video);
