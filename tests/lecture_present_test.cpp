@@ -190,7 +190,7 @@ TEST_CASE("lecture --shots-dir: each shot as its own video and PNG, index.md and
   CHECK_FALSE(fs::exists(dir.path / "other.mp4"));
 }
 
-TEST_CASE("--present and --shots-dir in one run: the shots rendered once, the same files in both folders",
+TEST_CASE("one run with --present and --shots-dir: the shots rendered once, the same files in both folders",
           "[lecture][present][video]") {
   ScratchDirectory dir;
   fs::copy_file(kStoryFile, dir.path / "story.toml");
