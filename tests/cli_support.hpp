@@ -75,6 +75,14 @@ inline std::string read_file(const std::filesystem::path& path) {
   return bytes;
 }
 
+/// Writes `text` to `path` (a test's own file), failing the test if it cannot.
+inline void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  REQUIRE(f);
+  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  REQUIRE((std::fclose(f) == 0 && written));
+}
+
 /// In a forked child: becomes `vibra ARGS` (exit 127 if that fails).
 [[noreturn]] inline void exec_vibra(const std::vector<std::string>& args) {
   std::vector<char*> argv{const_cast<char*>(VIBRA_EXE)};

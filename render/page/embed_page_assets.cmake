@@ -3,6 +3,7 @@
 # its file name, so pages are written from any directory and need no network.
 set(body "")
 foreach(asset "${PAGE_DIR}/lecture.html.in" "${PAGE_DIR}/page.js" "${PAGE_DIR}/page.css"
+              "${PAGE_DIR}/present.html.in" "${PAGE_DIR}/present.js" "${PAGE_DIR}/present.css"
               "${UPLOT_DIR}/uPlot.iife.min.js" "${UPLOT_DIR}/uPlot.min.css")
   get_filename_component(name "${asset}" NAME)
   file(READ "${asset}" text)

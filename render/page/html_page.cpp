@@ -7,6 +7,7 @@
 #include "render/output/output_error.hpp"
 #include "render/output/temporary_file.hpp"
 #include "render/page/page_assets.hpp"
+#include "render/page/page_parts.hpp"
 #include "render/page/web_text.hpp"
 
 namespace vibra::render {
@@ -20,8 +21,6 @@ std::string mime_type(const std::string& source) {
   return "video/x-matroska";
 }
 
-std::string href(const std::string& file) { return html_escape(url_path_escape(file)); }
-
 std::string media_html(const PageMedia& m) {
   const std::string size = " width=\"" + std::to_string(m.width) + "\" height=\"" + std::to_string(m.height) + "\"";
   switch (m.kind) {
@@ -32,29 +31,13 @@ std::string media_html(const PageMedia& m) {
   }
   const std::string playing = m.sound ? "" : " muted loop";  // a silent animation loops; a lecture speaks, once
   std::string out = "<div id=\"media\"><video id=\"video\" preload=\"auto\" playsinline" + playing + size + ">\n";
-  for (const auto& s : m.videos) out += "  <source src=\"" + href(s) + "\" type=\"" + mime_type(s) + "\">\n";
+  for (const auto& s : m.videos) out += "  <source src=\"" + page_href(s) + "\" type=\"" + mime_type(s) + "\">\n";
   if (!m.subtitles.empty())
-    out += "  <track kind=\"subtitles\" label=\"Notes\" srclang=\"en\" src=\"" + href(m.subtitles) + "\" default>\n";
+    out += "  <track kind=\"subtitles\" label=\"Notes\" srclang=\"en\" src=\"" + page_href(m.subtitles) + "\" default>\n";
   if (!m.videos.empty())
-    out += "  Your browser plays none of these videos: download <a href=\"" + href(m.videos.front()) + "\">" +
+    out += "  Your browser plays none of these videos: download <a href=\"" + page_href(m.videos.front()) + "\">" +
            html_escape(m.videos.front()) + "</a>.\n";
   return out + "</video></div>";
-}
-
-std::string number(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", x);
-  return text;
-}
-
-/// ,"map":[[video, simulated, rate], ...] for a paced clock; nothing for a steady one.
-std::string time_map_json(const std::vector<PageMedia::TimePiece>& pieces) {
-  if (pieces.empty()) return "";
-  std::string out = ",\"map\":[";
-  for (std::size_t i = 0; i < pieces.size(); ++i)
-    out += (i ? ",[" : "[") + number(pieces[i].video) + "," + number(pieces[i].simulated) + "," +
-           number(pieces[i].rate) + "]";
-  return out + "]";
 }
 
 /// The lecture's chapters: links that seek the video to each shot.
@@ -64,7 +47,7 @@ std::string chapters_html(const std::vector<PageChapter>& chapters) {
   for (const PageChapter& c : chapters) {
     char start[32];
     std::snprintf(start, sizeof start, "%d:%04.1f", int(c.start) / 60, c.start - 60 * (int(c.start) / 60));
-    out += "<li><a href=\"#\" data-start=\"" + number(c.start) + "\">" + html_escape(c.title) + "</a> <span>" + start +
+    out += "<li><a href=\"#\" data-start=\"" + json_number(c.start) + "\">" + html_escape(c.title) + "</a> <span>" + start +
            "</span></li>\n";
   }
   return out + "</ol>";
@@ -82,8 +65,8 @@ std::string data_json(const LecturePage& page) {
       break;
   }
   if (m.kind != PageMedia::Kind::none)
-    out += ",\"clock\":{\"fps\":" + number(m.fps) + ",\"frames\":" + std::to_string(m.frames) +
-           ",\"interval\":" + number(m.frame_interval) + time_map_json(m.time_map) + "}";
+    out += ",\"clock\":{\"fps\":" + json_number(m.fps) + ",\"frames\":" + std::to_string(m.frames) +
+           ",\"interval\":" + json_number(m.frame_interval) + page_time_map_json(m.time_map) + "}";
   return out + ",\"plots\":" + page_plots_json(page.panels, kPagePlotBudgetBytes) + "}";
 }
 
@@ -94,36 +77,6 @@ std::string facts_rows(const PageFacts& facts) {
   return out;
 }
 
-std::string downloads_html(const std::vector<PageDownload>& downloads) {
-  if (downloads.empty()) return "";
-  std::string out = "<p class=\"downloads\">Download:";
-  for (size_t i = 0; i < downloads.size(); ++i)
-    out += std::string(i ? " &middot;" : "") + " <a href=\"" + href(downloads[i].file) + "\" download>" +
-           html_escape(downloads[i].label) + "</a>";
-  return out + "</p>";
-}
-
-/// Replaces each @NAME@ of the template by its value, in one pass: values
-/// (scripts, data) are never searched for names themselves.
-std::string fill(std::string_view text, const std::map<std::string, std::string>& values) {
-  std::string out;
-  size_t at = 0;
-  while (true) {
-    const size_t open = text.find('@', at);
-    const size_t close = open == std::string_view::npos ? open : text.find('@', open + 1);
-    if (close == std::string_view::npos) break;
-    const auto value = values.find(std::string(text.substr(open + 1, close - open - 1)));
-    if (value == values.end()) {
-      out += text.substr(at, close - at);
-      at = close;
-      continue;
-    }
-    out += text.substr(at, open - at);
-    out += value->second;
-    at = close + 1;
-  }
-  return out += text.substr(at);
-}
 }  // namespace
 
 std::string lecture_page_html(const LecturePage& page) {
@@ -134,7 +87,7 @@ std::string lecture_page_html(const LecturePage& page) {
                   "a double-click shows the whole run."
                 : "Click in a plot to mark a time. The wheel zooms the time axis; Shift+drag, or a drag on the time "
                   "axis, pans; a double-click shows the whole run.";
-  return fill(page_asset("lecture.html.in"),
+  return fill_page_template(page_asset("lecture.html.in"),
               {{"TITLE", html_escape(page.title)},
                {"UPLOT_CSS", std::string(page_asset("uPlot.min.css"))},
                {"PAGE_CSS", std::string(page_asset("page.css"))},
@@ -143,7 +96,7 @@ std::string lecture_page_html(const LecturePage& page) {
                {"HINT", hint},
                {"FACTS", facts_rows(page.facts)},
                {"COMMAND", html_escape(page.command_line)},
-               {"DOWNLOADS", downloads_html(page.downloads)},
+               {"DOWNLOADS", page_downloads_html(page.downloads)},
                {"DATA", data_json(page)},
                {"UPLOT_JS", std::string(page_asset("uPlot.iife.min.js"))},
                {"PAGE_JS", std::string(page_asset("page.js"))}});

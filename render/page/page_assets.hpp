@@ -6,7 +6,8 @@
 namespace vibra::render {
 
 /// A file the lecture page is made of, compiled in at build time by name:
-/// lecture.html.in (the template), page.js, page.css (render/page/), and
+/// lecture.html.in (the template), page.js, page.css (render/page/);
+/// present.html.in, present.js, present.css (the presentation page); and
 /// uPlot.iife.min.js, uPlot.min.css (third_party/uplot/). Throws
 /// std::logic_error for any other name.
 std::string_view page_asset(std::string_view name);

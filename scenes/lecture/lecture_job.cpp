@@ -23,6 +23,7 @@
 #include "render/draw/canvas.hpp"
 #include "render/draw/text.hpp"
 #include "render/encode/clip_join.hpp"
+#include "render/encode/first_frame_sink.hpp"
 #include "render/encode/subtitle_cue.hpp"
 #include "render/encode/video_concat.hpp"
 #include "render/output/output_error.hpp"
@@ -34,6 +35,8 @@
 #include "render/page/html_page.hpp"
 #include "render/typeset/formula_text.hpp"
 #include "scenes/lecture/narration.hpp"
+#include "scenes/lecture/presentation.hpp"
+#include "scenes/lecture/shots_folder.hpp"
 #include "scenes/lecture/storyboard.hpp"
 #include "scenes/lecture/title_card.hpp"
 #include "scenes/note.hpp"
@@ -56,6 +59,8 @@ struct PlannedShot {
   std::string tag;  ///< the shot file's description: which lecture shot, which render
   std::vector<double> spoken_at;    ///< its spoken notes' video times, from the shot's start
   std::vector<SpokenPiece> speech;  ///< what it says, when
+  double interval = 0;  ///< a scene's simulated time from frame to frame (0: a card)
+  std::vector<render::PageMedia::TimePiece> time_map;  ///< a scene's pacing, as a page shows its clock
 };
 
 std::string lower_extension(const std::string& path) {
@@ -165,6 +170,14 @@ PlannedShot plan_scene(const Storyboard& board, const Shot& shot) {
   refuse_crowded_notes(notes, p.scene.width, p.scene.height);
   for (const SpokenNote& spoken : shot.speech.notes) p.spoken_at.push_back(map.first_video_time(spoken.at));
   p.cues = note_cues(notes, clock, map, double(p.frames) / board.fps);
+  p.interval = clock.interval();
+  if (clock.time_map()) {  // the pieces, then the run's last time, held (as a render's page has them)
+    for (const TimePiece& piece : clock.time_map()->pieces()) p.time_map.push_back({piece.video, piece.simulated, piece.rate});
+    p.time_map.push_back({clock.time_map()->duration(), clock.time_map()->end(), 0});
+  }
+  ShotEnding ending = shot.ending;  // an intro against the frames the pacing made
+  const std::string problem = settle_ending(ending, double(p.frames) / board.fps);
+  if (!problem.empty()) throw UsageError("intro " + problem);
   return p;
 }
 
@@ -334,6 +347,69 @@ void lay_out(const std::vector<const PlannedShot*>& shots, double fps, std::vect
     frame += p->frames;
   }
 }
+/// What the speaker view shows of a shot: a card's text, a scene's notes.
+std::vector<std::string> speaker_notes(const Shot& shot) {
+  if (shot.is_card) {  // a card has a text, an equation, or both
+    std::vector<std::string> notes;
+    if (!shot.card.empty()) notes.push_back(render::rich_text_plain(shot.card));
+    if (!shot.equation.empty()) notes.push_back(render::formula_plain_text(shot.equation));
+    return notes;
+  }
+  std::vector<std::string> notes;
+  for (const std::string& spec : shot.scene.notes) {
+    const Note note = parse_note(spec);
+    notes.push_back("t = " + short_number(note.from) + " to " + short_number(note.to) + ": " +
+                    render::rich_text_plain(note.text));
+  }
+  return notes;
+}
+
+/// Each shot rendered into its own video (`files`, in the shots' order) and first frame, for slides.
+std::vector<PresentedShot> presented_shots(const std::vector<const PlannedShot*>& shots,
+                                           const std::vector<render::ClipFile>& files, const fs::path& folder,
+                                           double fps) {
+  std::vector<PresentedShot> out;
+  for (std::size_t i = 0; i < shots.size(); ++i) {
+    const PlannedShot& p = *shots[i];
+    PresentedShot shot;
+    shot.number = p.shot->number;
+    shot.title = p.shot->title;
+    shot.video = files.at(i).path;
+    shot.still = folder / ("still-" + std::to_string(shot.number) + ".png");
+    shot.frames = p.frames;
+    shot.seconds = double(p.frames) / fps;
+    shot.ending = p.shot->ending;
+    shot.notes = speaker_notes(*p.shot);
+    shot.interval = p.interval;
+    shot.time_map = p.time_map;
+    out.push_back(std::move(shot));
+  }
+  return out;
+}
+
+/// --shots-dir's folder as a path with a name of its own ("shots/" -> "shots").
+fs::path shots_folder_path(const std::string& option) {
+  if (option.empty()) return {};
+  fs::path dir = fs::path(option).lexically_normal();
+  if (!dir.has_filename()) dir = dir.parent_path();
+  const std::string name = dir.filename().string();
+  if (name.empty() || name == "." || name == "..")
+    throw UsageError("--shots-dir " + quoted_value(option, 80) + ": name a folder of its own for the shots, e.g. "
+                     "--shots-dir shots");
+  return dir;
+}
+
+/// The shots folder built and sealed beside its final place, or nullptr when none is asked for.
+std::unique_ptr<render::TemporaryDirectory> staged_shots_folder(const fs::path& dir, const Storyboard& board,
+                                                                const std::vector<PresentedShot>& shots,
+                                                                const LectureRequest& r) {
+  if (dir.empty()) return nullptr;
+  auto staged = std::make_unique<render::TemporaryDirectory>(dir.parent_path(), dir.filename().string());
+  stage_shots_folder(render::rich_text_plain(board.title), shown_path(r.storyboard), shots, staged->path());
+  staged->seal();
+  check_companion_folder(dir, r.force);  // again: the user may have put a file there meanwhile
+  return staged;
+}
 }  // namespace
 
 namespace {
@@ -342,6 +418,12 @@ void make_lecture(const LectureRequest& r) {
   if (ext != ".mp4" && ext != ".webm" && ext != ".html")
     throw UsageError("-o " + quoted_value(r.output, 80) + ": a lecture is written as .mp4, .webm or .html (a page)");
   const bool page = ext == ".html";
+  const bool per_shot = r.present || !r.shots_dir.empty();  // each shot a video of its own, and its first frame
+  if (r.present && !page) throw UsageError("--present makes a page of slides: give -o TALK.html");
+  if (per_shot && (r.segment || r.shot))
+    throw UsageError(std::string(r.present ? "--present" : "--shots-dir") + " takes every shot: drop " +
+                     (r.segment ? "--segment" : "--shot"));
+  const fs::path shots_dir = shots_folder_path(r.shots_dir);
   if (r.segment && page)
     throw UsageError("--segment renders shot files to join later: give -o LECTURE.mp4 or .webm, not a page");
   if (r.segment && r.shot) throw UsageError("--shot and --segment both choose shots: give one of them");
@@ -400,6 +482,11 @@ void make_lecture(const LectureRequest& r) {
   const fs::path vtt = page ? fs::path() : final_video.parent_path() / (stem + ".vtt");
   if (page) check_companion_folder(companions, r.force);
   else check_subtitles_file(vtt, r.force);
+  if (!shots_dir.empty()) {
+    if (page && fs::absolute(shots_dir) == fs::absolute(companions))
+      throw UsageError("--shots-dir " + shots_dir.string() + " is the page's own folder: choose another");
+    check_companion_folder(shots_dir, r.force);
+  }
 
   std::vector<render::VideoChapter> chapters;
   std::vector<render::SubtitleCue> cues;
@@ -408,7 +495,8 @@ void make_lecture(const LectureRequest& r) {
 
   // The shots: reused from a cluster's shot files where complete, else rendered into a temporary folder.
   render::TemporaryDirectory clips(final_video.parent_path(), stem + "_shots");
-  const std::vector<std::string> kinds = page ? std::vector<std::string>{".mp4", ".webm"} : std::vector<std::string>{ext};
+  const std::vector<std::string> kinds = page && !r.present ? std::vector<std::string>{".mp4", ".webm"}
+                                                            : std::vector<std::string>{page ? ".mp4" : ext};
   // Shots rendered here in a row share one encoder, which starts and drains
   // once for them and runs on across their starts; a kept shot file ends the
   // row and is joined as it is.
@@ -425,7 +513,7 @@ void make_lecture(const LectureRequest& r) {
   // Which shots a cluster left complete beside the output (read once: each is a file to open).
   std::vector<bool> kept(chosen.size());
   for (std::size_t i = 0; i < chosen.size(); ++i)
-    kept[i] = !page && description_of(shot_file(r.output, chosen[i]->shot->number, plan.size())) == chosen[i]->tag;
+    kept[i] = !page && !per_shot && description_of(shot_file(r.output, chosen[i]->shot->number, plan.size())) == chosen[i]->tag;
   // While a card plays (drawn once, then only encoded), the scene shot after
   // it is solved and laid out on a helper thread, so the encoder does not
   // wait for it at the cut. Each thread draws on canvases of its own, with
@@ -443,14 +531,19 @@ void make_lecture(const LectureRequest& r) {
       clip_files[0].push_back({shot_file(r.output, p->shot->number, plan.size()), p->frames});
       continue;
     }
+    if (per_shot) end_row();  // a file a shot, which its slide plays
     if (!row) {
       row_files.clear();
       for (const std::string& kind : kinds)
         row_files.push_back(clips.path() / ("from-shot-" + std::to_string(p->shot->number) + kind));
-      row = sink_for(board, row_files, total_frames(chosen), r, "");
+      row = sink_for(board, row_files, per_shot ? p->frames : total_frames(chosen), r, "");
+      if (per_shot)
+        row = std::make_unique<render::FirstFrameSink>(
+            std::move(row), clips.path() / ("still-" + std::to_string(p->shot->number) + ".png"), board.width,
+            board.height);
       row_frames = 0;
     }
-    if (p->shot->is_card && i + 1 < chosen.size() && !chosen[i + 1]->shot->is_card && !kept[i + 1])
+    if (!per_shot && p->shot->is_card && i + 1 < chosen.size() && !chosen[i + 1]->shot->is_card && !kept[i + 1])
       next_scene = std::async(std::launch::async,
                               [request = shot_request(board, *chosen[i + 1], *row, row_files.front(), r)] {
                                 return std::make_unique<PreparedRender>(request);
@@ -459,6 +552,12 @@ void make_lecture(const LectureRequest& r) {
     row_frames += p->frames;
   }
   end_row();
+  const std::vector<PresentedShot> presented =
+      per_shot ? presented_shots(chosen, clip_files[0], clips.path(), board.fps) : std::vector<PresentedShot>{};
+  // Copied before the page's folder takes the shots' files: rendered once, for both.
+  const std::unique_ptr<render::TemporaryDirectory> shots_stage = staged_shots_folder(shots_dir, board, presented, r);
+  const std::string shots_said =
+      shots_stage ? ", and " + std::to_string(presented.size()) + " shots in " + one_line_message(shots_dir.string(), 4096) : "";
 
   const std::map<std::string, std::string> metadata = {{"title", render::rich_text_plain(board.title)},
                                                        {"comment", "vibra lecture " + shown_path(r.storyboard)}};
@@ -472,11 +571,13 @@ void make_lecture(const LectureRequest& r) {
     render::write_text(subtitles, render::web_vtt(cues, shown_path(r.storyboard)));
     const fs::path joined = clips.path() / final_video.filename();
     render::join_clips(clip_files[0], joined, fps, chapters, cues, metadata, sound ? &*sound : nullptr);
-    render::place_together({{joined, final_video}, {subtitles.path(), subtitles.final_path()}});
+    std::vector<render::Placement> placements = {{joined, final_video}, {subtitles.path(), subtitles.final_path()}};
+    if (shots_stage) placements.push_back({shots_stage->path(), shots_dir});
+    render::place_together(placements);
     if (!r.quiet)
-      std::fprintf(stderr, "vibra: wrote %s (%zu shot%s, %lld frames, %.1f s, %zu chapters) and %s\n",
+      std::fprintf(stderr, "vibra: wrote %s (%zu shot%s, %lld frames, %.1f s, %zu chapters) and %s%s\n",
                    one_line_message(target.shown(), 4096).c_str(), chosen.size(), chosen.size() == 1 ? "" : "s",
-                   frames, seconds, chapters.size(), one_line_message(vtt.string(), 4096).c_str());
+                   frames, seconds, chapters.size(), one_line_message(vtt.string(), 4096).c_str(), shots_said.c_str());
     return;
   }
   render::TemporaryDirectory staged(companions.parent_path(), companions.filename().string());
@@ -486,6 +587,13 @@ void make_lecture(const LectureRequest& r) {
   for (std::size_t i = 0; i < kinds.size(); ++i)
     render::join_clips(clip_files[i], staged.path() / (stem + kinds[i]), fps, chapters, cues, metadata,
                        sound ? &*sound : nullptr);
+  if (r.present) {  // the slides, and the one-file video and subtitles to download
+    render::Presentation show = stage_presentation(
+        render::rich_text_plain(board.title), board.width, board.height, board.fps, presented, staged.path(), folder,
+        {{"The whole lecture (MP4)", folder + stem + ".mp4"}, {"Subtitles (WebVTT)", folder + stem + ".vtt"}});
+    show.command_line = r.command_line;
+    render::write_text(page_file, render::presentation_html(show));
+  }
   render::LecturePage lecture;
   lecture.title = render::rich_text_plain(board.title);
   render::PageMedia& media = lecture.media;
@@ -506,14 +614,16 @@ void make_lecture(const LectureRequest& r) {
                                   std::to_string(int(std::lround(seconds))) + " s of video)"},
                    {"size", std::to_string(board.width) + "x" + std::to_string(board.height)}};
   lecture.command_line = r.command_line;
-  render::write_text(page_file, render::lecture_page_html(lecture));
+  if (!r.present) render::write_text(page_file, render::lecture_page_html(lecture));
   staged.seal();
   check_companion_folder(companions, r.force);  // again: the user may have put a file there meanwhile
-  render::place_together({{staged.path(), companions}, {page_file.path(), page_file.final_path()}});
+  std::vector<render::Placement> placements = {{staged.path(), companions}, {page_file.path(), page_file.final_path()}};
+  if (shots_stage) placements.push_back({shots_stage->path(), shots_dir});
+  render::place_together(placements);
   if (!r.quiet)
-    std::fprintf(stderr, "vibra: wrote %s and %s (%zu chapters, %lld frames, %.1f s)\n",
+    std::fprintf(stderr, "vibra: wrote %s and %s (%zu %s, %lld frames, %.1f s)%s\n",
                  one_line_message(target.shown(), 4096).c_str(), one_line_message(companions.string(), 4096).c_str(),
-                 chapters.size(), frames, seconds);
+                 chapters.size(), r.present ? "slides" : "chapters", frames, seconds, shots_said.c_str());
 }
 
 }  // namespace

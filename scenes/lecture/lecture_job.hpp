@@ -20,6 +20,12 @@ struct LectureRequest {
   render::VideoSettings video;
   /// WxH instead of the storyboard's size ("" = the storyboard's): drafts, previews.
   std::string size;
+  /// OUT.html is a presentation: a slide a shot, each shot's video and first
+  /// frame in OUT_files/, the shots waiting for the presenter's keys.
+  bool present = false;
+  /// A folder for every shot as its own video and first-frame PNG, with
+  /// index.md and beamer.tex ("" = none); rendered once with the other outputs.
+  std::string shots_dir;
   /// Replace subtitles or shot files that vibra did not write for this lecture.
   bool force = false;
   bool quiet = false;

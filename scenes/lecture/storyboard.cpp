@@ -32,8 +32,10 @@ constexpr double kLongestShot = 3600;  ///< seconds of video
 constexpr std::size_t kMostShots = 1000;
 
 const std::vector<std::string> kTopKeys = {"title", "size", "fps", "shot"};
-const std::vector<std::string> kCardKeys = {"card", "equation", "seconds", "title"};
-const std::vector<std::string> kShotKeys = {"scene", "set", "seconds", "notes", "title"};
+const std::vector<std::string> kCardKeys = {"card", "equation", "seconds", "title",
+                                           "then", "intro"};  // then, intro: presenting (shot_ending.hpp)
+const std::vector<std::string> kShotKeys = {"scene", "set", "seconds", "notes", "title",
+                                           "then", "intro"};
 
 /// Where a value sits: "story.toml:12: shot 2, key" (line 0: unknown).
 struct Place {
@@ -85,6 +87,20 @@ std::vector<std::string> with_speech_keys(std::vector<std::string> keys) {
   return keys;
 }
 
+/// A shot's then or intro (how it ends when presented), refused at its line.
+void ending_value(Shot& shot, const toml::node& node, const Place& at) {
+  const KeyValue value{node.value<std::string>(),
+                       node.is_integer() || node.is_floating_point() ? node.value<double>() : std::nullopt};
+  const std::string problem = read_ending_key(shot.ending, at.key, value, at.line);
+  if (!problem.empty()) at.refuse(problem);
+}
+
+/// The shot's then and intro checked together, at intro's line.
+void settle_shot_ending(Shot& shot, const std::string& file) {
+  const std::string problem = settle_ending(shot.ending, shot.seconds);
+  if (!problem.empty()) Place{file, shot.number, "intro", shot.ending.intro_line}.refuse(problem);
+}
+
 std::string source_text(const toml::table& shot) {
   std::ostringstream out;
   out << shot;
@@ -119,6 +135,7 @@ Shot card_shot(const toml::table& table, const std::string& file, const std::str
     else if (at.key == "equation") shot.equation = typeset_value(node, at, true);
     else if (at.key == "title") shot.title = render::rich_text_plain(typeset_value(node, at, false));
     else if (at.key == "seconds") shot.seconds = seconds_value(node, at);
+    else if (is_ending_key(at.key)) ending_value(shot, node, at);
     else refuse_key(at, kCardKeys, "a title card (a scene key belongs to a shot with scene = ...)");
   }
   if (shot.card.empty() && shot.equation.empty())
@@ -127,6 +144,7 @@ Shot card_shot(const toml::table& table, const std::string& file, const std::str
     shot.title = first_line(shot.card.empty() ? render::formula_plain_text(shot.equation)
                                               : render::rich_text_plain(shot.card));
   if (!shot.seconds) shot.seconds = 3;
+  settle_shot_ending(shot, file);
   return shot;
 }
 
@@ -160,6 +178,7 @@ Shot scene_shot(const toml::table& table, const std::string& file, const std::st
     if (at.key == "scene" || read_speech_key(shot.speech, at.key, node, at.text(), folder)) continue;
     if (at.key == "title") shot.title = render::rich_text_plain(typeset_value(node, at, false));
     else if (at.key == "seconds") shot.seconds = seconds_value(node, at);
+    else if (is_ending_key(at.key)) ending_value(shot, node, at);
     else if (at.key == "set") {
       if (!node.is_table()) at.refuse("must be a table of keys, e.g. set = { Theta = 40, alpha = 0.8 }");
       model_keys.push_back(node.as_table());
@@ -195,6 +214,7 @@ Shot scene_shot(const toml::table& table, const std::string& file, const std::st
   if (shot.seconds && shot.scene.frame_per_step)
     Place{file, number, "seconds", 0}.refuse("and frame_per_step both set the shot's pace: give one of them");
   if (shot.title.empty()) shot.title = shot.scene.name + (shot.scene.compare.empty() ? "" : ": " + shot.scene.compare);
+  settle_shot_ending(shot, file);
   return shot;
 }
 }  // namespace

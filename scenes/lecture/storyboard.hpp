@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "scenes/lecture/shot_ending.hpp"
 #include "scenes/scene_config.hpp"
 
 namespace vibra::scenes {
@@ -20,6 +21,7 @@ struct Shot {
   std::string card, equation;  ///< a card's text and equation (the LaTeX subset)
   SceneConfig scene;           ///< a scene shot's scene, its keys applied
   std::optional<double> seconds;  ///< the shot's length of video; a scene shot derives its speed from it
+  ShotEnding ending;   ///< presented (--present): what the shot does at its end
   std::string source;  ///< the shot as written (canonical TOML), for telling renders apart
 };
 

@@ -20,6 +20,8 @@ struct LectureOptions {
   std::string output;
   std::optional<int> shot;
   std::string segment, size;
+  bool present = false;
+  std::string shots_dir;
   bool force = false;
   bool quiet = false;
   bool mute = false, script = false;
@@ -34,6 +36,8 @@ void run(const LectureOptions& o) {
   request.size = o.size;
   if (!o.segment.empty()) request.segment = parse_segment_option(o.segment, [](const char* name) { return std::getenv(name); });
   request.video = o.video;
+  request.present = o.present;
+  request.shots_dir = o.shots_dir;
   request.force = o.force;
   request.quiet = o.quiet;
   request.mute = o.mute;
@@ -57,6 +61,13 @@ void add_lecture_command(CLI::App& app) {
   cmd->add_option("--segment", o->segment,
                   "K/N: render only the shots S with (S-1) mod N = K into OUT.shot-S.EXT beside the output, for a "
                   "cluster; a run without --segment then joins them (auto, auto/N: as vibra render --segment)");
+  cmd->add_flag("--present", o->present,
+                "With -o TALK.html: a presentation, a slide a shot, each shot waiting for the presenter's keys "
+                "(then = hold, loop or next; intro = seconds played once before a loop), a speaker view (S), "
+                "each shot's video and first frame in TALK_files/");
+  cmd->add_option("--shots-dir", o->shots_dir,
+                  "DIR: every shot as its own video and first-frame PNG (NN-title.mp4, NN-title.png), with "
+                  "index.md and beamer.tex, for slide programs; rendered once with the other outputs");
   cmd->add_option("--codec", o->video.codec, "Video codec: h264 (.mp4) or vp9, vp8 (.webm); default from the extension");
   cmd->add_option("--quality", o->video.quality, "draft, medium or high")->capture_default_str();
   cmd->add_option("--crf", o->video.crf, "Constant rate factor (overrides --quality)")->check(ranged("--crf"));
@@ -80,6 +91,7 @@ void add_lecture_command(CLI::App& app) {
       "Examples:\n"
       "  vibra lecture examples/damped_pendulum_lecture.toml -o lecture.mp4\n"
       "  vibra lecture examples/damped_pendulum_lecture.toml -o lecture.html\n"
+      "  vibra lecture examples/damped_pendulum_lecture.toml -o talk.html --present\n"
       "  vibra lecture examples/damped_pendulum_lecture.toml --shot 2 -o shot2.webm\n");
   cmd->callback([o] { run(*o); });
 }

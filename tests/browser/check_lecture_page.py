@@ -351,6 +351,37 @@ def check_frames_player(browser, page, fps):
           "ArrowRight steps the frames player one frame: " + src.rsplit("/", 1)[-1])
 
 
+def check_no_problems(errors, fetched):
+    """No console errors, and nothing fetched but file: and data: URLs (the page needs no network)."""
+    check(not errors, "no console errors" + ("" if not errors else ": " + " | ".join(errors)))
+    remote = [u for u in fetched if not u.startswith(("file:", "data:", "blob:"))]
+    check(not remote, f"nothing fetched from the network ({len(fetched)} requests, all file: or data:)"
+          + ("" if not remote else ": " + ", ".join(remote)))
+
+
+def verdict(passed):
+    """The exit status: 1 when a check failed (saying how many), else 0 (saying `passed`)."""
+    if failures:
+        print(f"{len(failures)} check(s) failed")
+        return 1
+    print(passed)
+    return 0
+
+
+def find_chromium(unchecked):
+    """Chromium's path and 0, or None and the exit code to return: SKIP on a developer's machine, 1 with CI=true
+    (scripts/setup installs Chromium there). `unchecked` says what then goes unchecked."""
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    if chromium:
+        return chromium, 0
+    if os.environ.get("CI") == "true":
+        print("FAIL: chromium is not installed: install the Debian package chromium (scripts/setup does);"
+              " CI=true, so the browser test must run, not skip")
+        return None, 1
+    print("SKIPPED: chromium is not installed (scripts/setup installs it); " + unchecked)
+    return None, SKIP
+
+
 def main():
     args = sys.argv[1:]
     if not args:
@@ -358,14 +389,9 @@ def main():
         return 2
     vibra = args[0]
     screenshot = Path(args[args.index("--screenshot") + 1]) if "--screenshot" in args else None
-    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    chromium, missing = find_chromium("the page was not checked in a browser")
     if not chromium:
-        if os.environ.get("CI") == "true":
-            print("FAIL: chromium is not installed: install the Debian package chromium (scripts/setup does);"
-                  " CI=true, so the browser test must run, not skip")
-            return 1
-        print("SKIPPED: chromium is not installed (scripts/setup installs it); the page was not checked in a browser")
-        return SKIP
+        return missing
     work = Path(tempfile.mkdtemp(prefix="vibra_page_"))
     keep = "--keep" in args
     try:
@@ -390,20 +416,13 @@ def main():
             errors, fetched = browser.problems()
         finally:
             browser.close()
-        check(not errors, "no console errors" + ("" if not errors else ": " + " | ".join(errors)))
-        remote = [u for u in fetched if not u.startswith(("file:", "data:", "blob:"))]
-        check(not remote, f"nothing fetched from the network ({len(fetched)} requests, all file: or data:)"
-              + ("" if not remote else ": " + ", ".join(remote)))
+        check_no_problems(errors, fetched)
     finally:
         if keep:
             print("kept " + str(work))
         else:
             shutil.rmtree(work, ignore_errors=True)
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    print("all browser checks passed")
-    return 0
+    return verdict("all browser checks passed")
 
 
 if __name__ == "__main__":
