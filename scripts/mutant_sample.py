@@ -79,8 +79,9 @@ def run_suite(suite, spec, timeout, log):
     """'KILLED' or 'SURVIVED', and the failing test's name where Catch2 printed it."""
     with open(log, "w") as out:
         try:
+            # From the suite's folder, as ctest runs it.
             rc = subprocess.run([str(suite), "--abort", spec], stdout=out, stderr=subprocess.STDOUT,
-                                timeout=timeout).returncode
+                                cwd=Path(suite).parent, timeout=timeout).returncode
         except subprocess.TimeoutExpired:
             return "KILLED", f"timed out after {timeout:.0f} s"
     if rc == 0:

@@ -5,8 +5,9 @@ A site is one edit of one line: an operator swapped (+ -, * /, < <=, == !=,
 && ||), a constant changed (+1, -1, x2), two arguments of a call swapped, a
 statement dropped, an if's condition negated, a unary minus removed, true and
 false exchanged. Comments, string and character literals and preprocessor
-lines are skipped; '<' and '>' count as comparisons only with spaces on both
-sides (the project's format), so template brackets are never mutated.
+lines are skipped; a binary operator counts only with spaces on both sides
+(the project's format), so template brackets and pointer or reference
+types (T* p, auto&& x) are never mutated.
 
 Each site has a stable id, FILE:HASH:OPERATOR:N, from the file, a hash of the
 line's text (stripped), the operator and its index among that operator's
@@ -24,7 +25,7 @@ TOKEN = re.compile(r"""
   | (?P<raw>R"(?P<delim>[^(\s]*)\(.*?\)(?P=delim)")
   | (?P<string>"(?:\\.|[^"\\\n])*")
   | (?P<char>'(?:\\.|[^'\\\n])+')
-  | (?P<number>(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?[uUlLfF]*)
+  | (?P<number>0[xXbB][0-9a-fA-F']+[uUlL]*|(?:\d[\d']*\.?[\d']*|\.\d+)(?:[eE][+-]?\d+)?[uUlLfF]*)
   | (?P<word>[A-Za-z_]\w*)
   | (?P<op><<=|>>=|->|::|\+\+|--|\+=|-=|\*=|/=|==|!=|<=|>=|&&|\|\||<<|>>|.)
 """, re.S | re.X)
@@ -74,7 +75,6 @@ def tokens(text):
 # Policy as tables: each operator's replacement.
 SWAPPED = {"+": "-", "-": "+", "*": "/", "/": "*", "<": "<=", "<=": "<", ">": ">=", ">=": ">",
            "==": "!=", "!=": "==", "&&": "||", "||": "&&", "+=": "-=", "-=": "+=", "*=": "/=", "/=": "*="}
-SPACED_ONLY = {"<", ">", "<=", ">="}  # template brackets have no space before them
 NOT_OPERANDS = {"return", "case", "throw", "else", "do", "co_return", "new", "delete", "sizeof"}
 STATEMENT_STARTERS = {"=", "+=", "-=", "*=", "/=", "++", "--", "(", ".", "->", "["}
 TYPE_WORDS = {"return", "if", "for", "while", "switch", "case", "break", "continue", "goto", "throw", "using",
@@ -95,6 +95,7 @@ def changed_constants(literal):
     """The literal +1, -1 and x2, as C++ text (one of them may equal another)."""
     body = literal.rstrip("uUlLfF")
     suffix = literal[len(body):]
+    body = body.replace("'", "")  # digit separators (3'600'000)
     try:
         value = int(body) if re.fullmatch(r"\d+", body) else float(body)
     except ValueError:
@@ -108,13 +109,10 @@ def changed_constants(literal):
 
 def operator_sites(text, toks):
     for i, tok in enumerate(toks):
-        if tok.kind != "op" or tok.text not in SWAPPED or i == 0:
-            continue
-        if not is_operand_end(toks[i - 1]) or (tok.text in SPACED_ONLY and not spaced(text, tok)):
-            continue
-        if tok.text in ("*", "-", "+") and toks[i - 1].kind == "word" and i + 1 < len(toks) and toks[i + 1].text in (")", ",", ">"):
-            continue  # a pointer type (T*) or the like, not arithmetic
-        yield "operator", tok.start, tok.text, SWAPPED[tok.text]
+        # Binary operators stand between spaces in the project's format; a
+        # pointer or reference type (T* p, auto&& x) and template brackets do not.
+        if tok.kind == "op" and tok.text in SWAPPED and i > 0 and is_operand_end(toks[i - 1]) and spaced(text, tok):
+            yield "operator", tok.start, tok.text, SWAPPED[tok.text]
 
 
 def constant_sites(toks):

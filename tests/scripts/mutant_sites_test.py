@@ -14,6 +14,8 @@ SOURCE = '''// A comment with a + b and 3 < 4.
 /* block: a - b */
 double f(double a, double b) {
   std::vector<int> v;
+  const double* p = &a;
+  for (auto&& x : v) x;
   const char* s = "a + b < 3";
   if (a < b) return a * 2.5;
   total += scale(a, b);
@@ -40,13 +42,18 @@ class Sites(unittest.TestCase):
         self.assertIn(("operator", "*", "/"), ops)
         self.assertIn(("operator", "+", "-"), ops)
         self.assertIn(("operator", "+=", "-="), ops)
-        # std::vector<int> and the #include's <vector> give no site: one '<' only.
+        # std::vector<int> and the #include's <vector> give no site: one '<' only;
+        # neither do the pointer type and the forwarding reference.
         self.assertEqual(sum(1 for s in mutant_sites.sites("x.cpp", SOURCE) if s.old == "<"), 1)
+        self.assertEqual(sum(1 for s in mutant_sites.sites("x.cpp", SOURCE) if s.old in ("*", "&&")), 1)  # a * 2.5
 
     def test_constants_change_by_one_and_double(self):
         self.assertEqual(edits("x = 2.5;", "constant"), {("constant", "2.5", "3.5"), ("constant", "2.5", "1.5"),
                                                          ("constant", "2.5", "5.0")})
         self.assertEqual(edits("x = 0;", "constant"), {("constant", "0", "1")})
+        self.assertEqual(edits("x = 3'600;", "constant"), {("constant", "3'600", "3601"), ("constant", "3'600", "3599"),
+                                                          ("constant", "3'600", "7200")})
+        self.assertEqual(edits("x = 0x1fULL;", "constant"), set())  # hexadecimal: left alone
         self.assertEqual(edits("x = 3u;", "constant"), {("constant", "3u", "4u"), ("constant", "3u", "2u"),
                                                         ("constant", "3u", "6u")})
 
