@@ -100,3 +100,26 @@ TEST_CASE("plain text, table-driven: scripts, fractions, function names, Greek l
   CHECK(rich_text_plain(R"(friction $-\mu\,\mathrm{sign}(u')$ opposes the motion)") ==
         "friction −μ sign(u′) opposes the motion");
 }
+
+TEST_CASE("plain text: every character Unicode has as a sub- or superscript, each to its own", "[typeset]") {
+  // The characters, typed from Unicode's Superscripts and Subscripts block
+  // (U+2070-U+209C) and the phonetic letters (U+1D62-U+1D65, U+2C7C, U+2071):
+  // a typo in one entry of the table maps one script to a wrong character.
+  struct Case {
+    const char *source, *text;
+  };
+  const Case cases[] = {
+      {R"(x_{0123456789})", "x₀₁₂₃₄₅₆₇₈₉"},
+      {R"(x_{+})", "x₊"}, {R"(x_{-})", "x₋"}, {R"(x_{=})", "x₌"}, {R"(x_{(n)})", "x₍ₙ₎"},
+      {R"(x_{aeoxhklm})", "xₐₑₒₓₕₖₗₘ"},
+      {R"(x_{npstijruv})", "xₙₚₛₜᵢⱼᵣᵤᵥ"},
+      {R"(x^{0123456789})", "x⁰¹²³⁴⁵⁶⁷⁸⁹"},
+      {R"(x^{+})", "x⁺"}, {R"(x^{-})", "x⁻"}, {R"(x^{=})", "x⁼"}, {R"(x^{(n)})", "x⁽ⁿ⁾"}, {R"(x^{i})", "xⁱ"},
+      {R"(x_{b})", "x_b"},  // no subscript b: written out
+      {R"(x^{k})", "x^k"},  // no superscript k in the table: written out
+  };
+  for (const Case& c : cases) {
+    INFO(c.source);
+    CHECK(formula_plain_text(c.source) == c.text);
+  }
+}

@@ -162,3 +162,16 @@ TEST_CASE("every simulated time's video time is the pacing integral plus the pau
     CHECK(map.duration() == Approx(expected.back() + held_at_end).margin(1e-9));
   }
 }
+
+TEST_CASE("adjacent slow-motion ranges: the second's factor from where the first ends, a pause between them", "[pacing]") {
+  // T = 6 at 1 unit per second: t = 1-3 twice slower (4 s), 1 s held at t = 3,
+  // t = 3-5 four times slower (8 s): 1 + 4 + 1 + 8 + 1 = 15 s.
+  const TimeMap map(6, 1, pacing({"1-3:2", "3-5:4"}, {"3:1"}));
+  CHECK(map.duration() == Approx(15));
+  CHECK(map.first_video_time(2) == Approx(3));
+  CHECK(map.first_video_time(3) == Approx(5));  // the pause's start
+  CHECK(map.simulated(5.5) == 3);
+  CHECK(map.first_video_time(4) == Approx(1 + 4 + 1 + 4));
+  CHECK(map.simulated(12) == Approx(3 + (12 - 6) / 4.0));
+  CHECK(map.first_video_time(5.5) == Approx(14.5));
+}

@@ -1,0 +1,171 @@
+# scripts/mutants --sample N: generated mutants, sampled across the source folders, scored per folder.
+"""Runs a sample of generated mutants (scripts/mutant_sites.py) in the
+mutants' copy of the tree and prints the mutation score per folder with the
+survivors as diffs (docs/contributing.md, "Mutants").
+
+Each mutant is one edit of one .cpp file (with --headers, .hpp too: each
+rebuilds every file that includes it). vibra and vibra_tests are rebuilt
+(ccache; ninja compiles the one object and relinks), then the fast suite
+runs as one process, Catch2's --abort ending it at the first failure, under
+a time limit of a few times the unmutated suite's. KILLED: a test failed or
+the time ran out; SURVIVED: all passed; INVALID: it does not compile (not
+scored; another site of its folder is drawn instead). The file is restored
+after each mutant whatever happens, also on Ctrl-C or SIGTERM.
+
+Equivalent mutants (no program can tell them from the original) are triaged
+once into scripts/mutants-equivalent.txt, one stable id a line with the
+reason, and never drawn again.
+"""
+import difflib
+import random
+import re
+import signal
+import subprocess
+import sys
+import time
+from collections import defaultdict
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import mutant_sites  # noqa: E402
+
+SOURCE_FOLDERS = ["src/core", "src/cli", "src/app", "render", "scenes"]  # scored separately
+EQUIVALENTS = Path(__file__).resolve().parent / "mutants-equivalent.txt"
+
+
+def folder_of(path):
+    return next(f for f in SOURCE_FOLDERS if path.startswith(f + "/"))
+
+
+def load_equivalents(path=EQUIVALENTS):
+    """The triaged ids: one a line, the reason after them; # starts a comment line."""
+    if not path.exists():
+        return set()
+    lines = (line.split()[0] for line in path.read_text().splitlines() if line.strip() and not line.startswith("#"))
+    return set(lines)
+
+
+def all_sites(tree, headers, equivalents):
+    """Every site of every source file, by folder, the triaged equivalents left out."""
+    by_folder = defaultdict(list)
+    suffixes = (".cpp", ".hpp") if headers else (".cpp",)
+    for folder in SOURCE_FOLDERS:
+        for path in sorted((tree / folder).rglob("*")):
+            if path.suffix in suffixes:
+                rel = str(path.relative_to(tree))
+                by_folder[folder] += [s for s in mutant_sites.sites(rel, path.read_text()) if s.id not in equivalents]
+    return by_folder
+
+
+def draw_order(by_folder, seed):
+    """Sites in the order they are tried: each folder's shuffled, the folders taken in turn."""
+    rng = random.Random(seed)
+    queues = {f: rng.sample(sites, len(sites)) for f, sites in sorted(by_folder.items())}
+    longest = max((len(q) for q in queues.values()), default=0)
+    for i in range(longest):
+        for folder, queue in queues.items():
+            if i < len(queue):
+                yield folder, queue[i]
+
+
+def diff_of(site, original, mutated):
+    line = site.line
+    before, after = original.split("\n")[line - 1], mutated.split("\n")[line - 1]
+    return "".join(difflib.unified_diff([before + "\n"], [after + "\n"], f"a/{site.file}", f"b/{site.file}",
+                                        lineterm="\n", n=0)).replace("@@ -1 +1 @@", f"@@ line {line} @@")
+
+
+def run_suite(suite, spec, timeout, log):
+    """'KILLED' or 'SURVIVED', and the failing test's name where Catch2 printed it."""
+    with open(log, "w") as out:
+        try:
+            # From the suite's folder, as ctest runs it.
+            rc = subprocess.run([str(suite), "--abort", spec], stdout=out, stderr=subprocess.STDOUT,
+                                cwd=Path(suite).parent, timeout=timeout).returncode
+        except subprocess.TimeoutExpired:
+            return "KILLED", f"timed out after {timeout:.0f} s"
+    if rc == 0:
+        return "SURVIVED", ""
+    # Catch2 prints a failure under a rule of dashes: the test case's name.
+    failed = re.search(r"^-{20,}\n(.+)$", Path(log).read_text(errors="replace"), re.M)
+    return "KILLED", f"by {failed.group(1)[:100]}" if failed else f"exit {rc}"
+
+
+def restore_on_signals():
+    """SIGTERM and SIGHUP end the run through the finally blocks, as Ctrl-C does."""
+    def stop(signum, _frame):
+        raise SystemExit(f"mutants: stopped by signal {signum}; the copy's sources restored")
+    for s in (signal.SIGTERM, signal.SIGHUP):
+        signal.signal(s, stop)
+
+
+def try_site(site, tree, build_ok, suite, spec, timeout, logs):
+    """Plants one site, builds, runs the suite; restores the file whatever happens."""
+    path = tree / site.file
+    original = path.read_text()
+    mutated = site.apply(original)
+    name = site.id.replace("/", "_").replace(":", "_")
+    try:
+        path.write_text(mutated)
+        if not build_ok(logs / f"{name}-build.log"):
+            return "INVALID", "does not compile", ""
+        outcome, detail = run_suite(suite, spec, timeout, logs / f"{name}-tests.log")
+        return outcome, detail, diff_of(site, original, mutated)
+    finally:
+        path.write_text(original)
+
+
+def print_scores(results):
+    by_folder = defaultdict(lambda: [0, 0])
+    for folder, site, outcome, _, _ in results:
+        if outcome != "INVALID":
+            by_folder[folder][0] += outcome == "KILLED"
+            by_folder[folder][1] += 1
+    print("\nfolder        killed / scored   score")
+    for folder in SOURCE_FOLDERS:
+        killed, scored = by_folder.get(folder, (0, 0))
+        score = f"{100 * killed / scored:5.1f}%" if scored else "    -"
+        print(f"{folder:12} {killed:7} / {scored:<8} {score}")
+    killed = sum(k for k, _ in by_folder.values())
+    scored = sum(n for _, n in by_folder.values())
+    print(f"{'all':12} {killed:7} / {scored:<8} {100 * killed / max(scored, 1):5.1f}%")
+    return killed, scored
+
+
+def run_sample(args, tree, build_ok, suite, logs):
+    """The --sample run; exit status 0 when no mutant survived."""
+    restore_on_signals()
+    equivalents = load_equivalents()
+    by_folder = all_sites(tree, args.headers, equivalents)
+    total = sum(len(s) for s in by_folder.values())
+    print(f"mutants: {total} sites in {', '.join(SOURCE_FOLDERS)} ({len(equivalents)} triaged as equivalent); "
+          f"sampling {args.sample} with seed {args.seed}")
+    start = time.time()
+    if not build_ok(logs / "baseline-build.log"):
+        sys.exit(f"mutants: the unmutated copy does not build: {logs / 'baseline-build.log'}")
+    outcome, detail = run_suite(suite, args.spec, None, logs / "baseline-tests.log")
+    if outcome != "SURVIVED":
+        sys.exit(f"mutants: the unmutated copy fails the fast suite ({detail}): {logs / 'baseline-tests.log'}")
+    suite_seconds = time.time() - start
+    timeout = max(60.0, 3 * suite_seconds)
+    print(f"mutants: baseline built and passed '{args.spec}' in {suite_seconds:.0f} s; {timeout:.0f} s per mutant")
+
+    results, scored, tried = [], 0, 0
+    for folder, site in draw_order(by_folder, args.seed):
+        if scored >= args.sample or tried >= 3 * args.sample:  # bounded: invalid mutants draw again, not forever
+            break
+        tried += 1
+        t0 = time.time()
+        outcome, detail, diff = try_site(site, tree, build_ok, suite, args.spec, timeout, logs)
+        scored += outcome != "INVALID"
+        results.append((folder, site, outcome, detail, diff))
+        print(f"  [{scored}/{args.sample}] {outcome:8} {site.id} ({time.time() - t0:.0f} s) {detail}", flush=True)
+
+    killed, scored = print_scores(results)
+    survivors = [r for r in results if r[2] == "SURVIVED"]
+    if survivors:
+        print(f"\n{len(survivors)} survived (a test to add, or an id for {EQUIVALENTS.name} with the reason):")
+        for _, site, _, _, diff in survivors:
+            print(f"\n{site.id}\n{diff}", end="")
+    build_ok(logs / "restored-build.log")  # leave the copy built as the tree is
+    return 0 if killed == scored else 1
