@@ -32,6 +32,7 @@
 #include "render/output/progress.hpp"
 #include "render/output/stop_signal.hpp"
 #include "render/output/temporary_file.hpp"
+#include "render/encode/output_kind.hpp"
 #include "render/page/html_page.hpp"
 #include "render/typeset/formula_text.hpp"
 #include "scenes/lecture/narration.hpp"
@@ -62,12 +63,6 @@ struct PlannedShot {
   double interval = 0;  ///< a scene's simulated time from frame to frame (0: a card)
   std::vector<render::PageMedia::TimePiece> time_map;  ///< a scene's pacing, as a page shows its clock
 };
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
 
 std::string file_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -414,10 +409,10 @@ std::unique_ptr<render::TemporaryDirectory> staged_shots_folder(const fs::path& 
 
 namespace {
 void make_lecture(const LectureRequest& r) {
-  const std::string ext = lower_extension(r.output);
-  if (ext != ".mp4" && ext != ".webm" && ext != ".html")
+  const std::string ext = render::lower_extension_of(r.output);
+  const bool page = render::classify_output(r.output) == render::OutputKind::page;
+  if (ext != ".mp4" && ext != ".webm" && !page)
     throw UsageError("-o " + quoted_value(r.output, 80) + ": a lecture is written as .mp4, .webm or .html (a page)");
-  const bool page = ext == ".html";
   const bool per_shot = r.present || !r.shots_dir.empty();  // each shot a video of its own, and its first frame
   if (r.present && !page) throw UsageError("--present makes a page of slides: give -o TALK.html");
   if (per_shot && (r.segment || r.shot))
