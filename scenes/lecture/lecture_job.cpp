@@ -408,26 +408,23 @@ std::unique_ptr<render::TemporaryDirectory> staged_shots_folder(const fs::path& 
 }  // namespace
 
 namespace {
-void make_lecture(const LectureRequest& r) {
+/// Refuses options that do not go together, before anything is read.
+void check_lecture_options(const LectureRequest& r, bool page, bool per_shot) {
   const std::string ext = render::lower_extension_of(r.output);
-  const bool page = render::classify_output(r.output) == render::OutputKind::page;
   if (ext != ".mp4" && ext != ".webm" && !page)
     throw UsageError("-o " + quoted_value(r.output, 80) + ": a lecture is written as .mp4, .webm or .html (a page)");
-  const bool per_shot = r.present || !r.shots_dir.empty();  // each shot a video of its own, and its first frame
   if (r.present && !page) throw UsageError("--present makes a page of slides: give -o TALK.html");
   if (per_shot && (r.segment || r.shot))
     throw UsageError(std::string(r.present ? "--present" : "--shots-dir") + " takes every shot: drop " +
                      (r.segment ? "--segment" : "--shot"));
-  const fs::path shots_dir = shots_folder_path(r.shots_dir);
   if (r.segment && page)
     throw UsageError("--segment renders shot files to join later: give -o LECTURE.mp4 or .webm, not a page");
   if (r.segment && r.shot) throw UsageError("--shot and --segment both choose shots: give one of them");
   if (r.video.transparent) throw UsageError("a lecture cannot be transparent: drop --transparent");
-  note_input_file(r.storyboard, "the storyboard");  // before the outputs are checked: never written over
-  const render::OutputTarget target = render::resolve_output(r.output, render::kNeedsAFile);
-  render::refuse_input_as_output(target.file);
-  render::check_output_settings(page ? "x.mp4" : r.output, false, r.video);
+}
 
+/// The storyboard, at --size if given, with --shot checked against it.
+Storyboard load_board(const LectureRequest& r) {
   Storyboard board = load_storyboard(r.storyboard);
   if (!r.size.empty()) {
     parse_size(r.size, board.width, board.height);
@@ -436,66 +433,70 @@ void make_lecture(const LectureRequest& r) {
   if (r.shot && (*r.shot < 1 || *r.shot > int(board.shots.size())))
     throw UsageError("--shot " + std::to_string(*r.shot) + ": " + r.storyboard + " has shots 1.." +
                      std::to_string(board.shots.size()));
-  render::start_loading_fonts();
-  const std::vector<ShotNarration> narration = narrate_lecture(board);  // speech made before any frame
-  fit_shots_to_speech(board, narration);
-  const std::vector<PlannedShot> plan = plan_lecture(board, r.video, narration);  // every shot checked before any work
-  if (r.script) return write_script(board, plan);
+  return board;
+}
+
+/// --segment: the chosen shots as shot files beside the output, for a later run to join.
+void write_shot_files(const Storyboard& board, const std::vector<PlannedShot>& plan,
+                      const std::vector<const PlannedShot*>& chosen, const LectureRequest& r) {
+  if (chosen.empty())
+    throw UsageError("--segment " + std::to_string(r.segment->index) + "/" + std::to_string(r.segment->count) +
+                     " has no shots: the storyboard has " + std::to_string(plan.size()) + ", so use at most that many");
+  for (const PlannedShot* p : chosen) {
+    const fs::path file = shot_file(r.output, p->shot->number, plan.size());
+    render::resolve_output_file(file);
+    std::error_code ec;
+    if (!r.force && fs::exists(file, ec) && description_of(file).rfind("vibra lecture shot ", 0) != 0)
+      throw render::OutputError("'" + file.string() + "' exists and was not written by vibra lecture: move it "
+                                "away, or add --force to overwrite it");
+  }
+  for (const PlannedShot* p : chosen) {
+    const fs::path file = shot_file(r.output, p->shot->number, plan.size());
+    if (description_of(file) == p->tag) continue;  // already rendered
+    render_shot(board, *p, {file}, r);
+  }
+  if (!r.quiet)
+    std::fprintf(stderr, "vibra: wrote %zu shot file(s) beside %s: join them with vibra lecture %s -o %s\n",
+                 chosen.size(), r.output.c_str(), r.storyboard.c_str(), r.output.c_str());
+}
+
+/// One lecture's run past its checks: what it renders and where it goes.
+struct LectureRun {
+  const LectureRequest& r;
+  const Storyboard& board;
+  const std::vector<PlannedShot>& plan;
   std::vector<const PlannedShot*> chosen;
-  for (const PlannedShot& p : plan)
-    if (r.shot ? p.shot->number == *r.shot
-               : !r.segment || (p.shot->number - 1) % r.segment->count == r.segment->index)
-      chosen.push_back(&p);
-
-  if (r.segment) {  // shot files for a cluster, kept beside the output
-    if (chosen.empty())
-      throw UsageError("--segment " + std::to_string(r.segment->index) + "/" + std::to_string(r.segment->count) +
-                       " has no shots: the storyboard has " + std::to_string(plan.size()) + ", so use at most that many");
-    for (const PlannedShot* p : chosen) {
-      const fs::path file = shot_file(r.output, p->shot->number, plan.size());
-      render::resolve_output_file(file);
-      std::error_code ec;
-      if (!r.force && fs::exists(file, ec) && description_of(file).rfind("vibra lecture shot ", 0) != 0)
-        throw render::OutputError("'" + file.string() + "' exists and was not written by vibra lecture: move it "
-                                  "away, or add --force to overwrite it");
-    }
-    for (const PlannedShot* p : chosen) {
-      const fs::path file = shot_file(r.output, p->shot->number, plan.size());
-      if (description_of(file) == p->tag) continue;  // already rendered
-      render_shot(board, *p, {file}, r);
-    }
-    if (!r.quiet)
-      std::fprintf(stderr, "vibra: wrote %zu shot file(s) beside %s: join them with vibra lecture %s -o %s\n",
-                   chosen.size(), r.output.c_str(), r.storyboard.c_str(), r.output.c_str());
-    return;
-  }
-
-  // Every path the run writes, checked before any work.
-  const fs::path final_video = target.file;
-  const std::string stem = fs::path(r.output).stem().string();
-  const fs::path companions = page ? companion_folder(r.output) : fs::path();
-  const fs::path vtt = page ? fs::path() : final_video.parent_path() / (stem + ".vtt");
-  if (page) check_companion_folder(companions, r.force);
-  else check_subtitles_file(vtt, r.force);
-  if (!shots_dir.empty()) {
-    if (page && fs::absolute(shots_dir) == fs::absolute(companions))
-      throw UsageError("--shots-dir " + shots_dir.string() + " is the page's own folder: choose another");
-    check_companion_folder(shots_dir, r.force);
-  }
-
+  bool page = false, per_shot = false;
+  render::OutputTarget target;
+  fs::path shots_dir, companions, vtt;  ///< vtt: beside a video; companions: a page's folder
+  std::string stem;
+  std::vector<std::string> kinds;  ///< the joined videos' extensions
   std::vector<render::VideoChapter> chapters;
   std::vector<render::SubtitleCue> cues;
-  lay_out(chosen, board.fps, chapters, cues);
-  const std::optional<render::AudioClip> sound = r.mute ? std::nullopt : sound_of(chosen, board.fps);
+  std::optional<render::AudioClip> sound;
+  long long frames = 0;
+  std::map<std::string, std::string> metadata;
+};
 
-  // The shots: reused from a cluster's shot files where complete, else rendered into a temporary folder.
-  render::TemporaryDirectory clips(final_video.parent_path(), stem + "_shots");
-  const std::vector<std::string> kinds = page && !r.present ? std::vector<std::string>{".mp4", ".webm"}
-                                                            : std::vector<std::string>{page ? ".mp4" : ext};
-  // Shots rendered here in a row share one encoder, which starts and drains
-  // once for them and runs on across their starts; a kept shot file ends the
-  // row and is joined as it is.
-  std::vector<std::vector<render::ClipFile>> clip_files(kinds.size());
+/// Every path the run writes, checked before any work.
+void check_lecture_paths(const LectureRun& run) {
+  if (run.page) check_companion_folder(run.companions, run.r.force);
+  else check_subtitles_file(run.vtt, run.r.force);
+  if (run.shots_dir.empty()) return;
+  if (run.page && fs::absolute(run.shots_dir) == fs::absolute(run.companions))
+    throw UsageError("--shots-dir " + run.shots_dir.string() + " is the page's own folder: choose another");
+  check_companion_folder(run.shots_dir, run.r.force);
+}
+
+/// The shots' clips, one list per kind: reused from a cluster's shot files
+/// where complete, else rendered into `clips`. Shots rendered here in a row
+/// share one encoder, which starts and drains once for them and runs on
+/// across their starts; a kept shot file ends the row and is joined as it
+/// is. With per_shot every shot is a file of its own, which its slide plays.
+std::vector<std::vector<render::ClipFile>> render_clips(const LectureRun& run, const fs::path& clips) {
+  const LectureRequest& r = run.r;
+  const std::vector<const PlannedShot*>& chosen = run.chosen;
+  std::vector<std::vector<render::ClipFile>> clip_files(run.kinds.size());
   std::unique_ptr<render::FrameSink> row;
   std::vector<fs::path> row_files;
   long long row_frames = 0;
@@ -503,12 +504,13 @@ void make_lecture(const LectureRequest& r) {
     if (!row) return;
     row->finish();
     row.reset();
-    for (std::size_t i = 0; i < kinds.size(); ++i) clip_files[i].push_back({row_files[i], row_frames});
+    for (std::size_t i = 0; i < run.kinds.size(); ++i) clip_files[i].push_back({row_files[i], row_frames});
   };
   // Which shots a cluster left complete beside the output (read once: each is a file to open).
   std::vector<bool> kept(chosen.size());
   for (std::size_t i = 0; i < chosen.size(); ++i)
-    kept[i] = !page && !per_shot && description_of(shot_file(r.output, chosen[i]->shot->number, plan.size())) == chosen[i]->tag;
+    kept[i] = !run.page && !run.per_shot &&
+              description_of(shot_file(r.output, chosen[i]->shot->number, run.plan.size())) == chosen[i]->tag;
   // While a card plays (drawn once, then only encoded), the scene shot after
   // it is solved and laid out on a helper thread, so the encoder does not
   // wait for it at the cut. Each thread draws on canvases of its own, with
@@ -523,102 +525,158 @@ void make_lecture(const LectureRequest& r) {
     std::unique_ptr<PreparedRender> prepared = next_scene.valid() ? next_scene.get() : nullptr;
     if (kept[i]) {
       end_row();
-      clip_files[0].push_back({shot_file(r.output, p->shot->number, plan.size()), p->frames});
+      clip_files[0].push_back({shot_file(r.output, p->shot->number, run.plan.size()), p->frames});
       continue;
     }
-    if (per_shot) end_row();  // a file a shot, which its slide plays
+    if (run.per_shot) end_row();
     if (!row) {
       row_files.clear();
-      for (const std::string& kind : kinds)
-        row_files.push_back(clips.path() / ("from-shot-" + std::to_string(p->shot->number) + kind));
-      row = sink_for(board, row_files, per_shot ? p->frames : total_frames(chosen), r, "");
-      if (per_shot)
+      for (const std::string& kind : run.kinds)
+        row_files.push_back(clips / ("from-shot-" + std::to_string(p->shot->number) + kind));
+      row = sink_for(run.board, row_files, run.per_shot ? p->frames : total_frames(chosen), r, "");
+      if (run.per_shot)
         row = std::make_unique<render::FirstFrameSink>(
-            std::move(row), clips.path() / ("still-" + std::to_string(p->shot->number) + ".png"), board.width,
-            board.height);
+            std::move(row), clips / ("still-" + std::to_string(p->shot->number) + ".png"), run.board.width,
+            run.board.height);
       row_frames = 0;
     }
-    if (!per_shot && p->shot->is_card && i + 1 < chosen.size() && !chosen[i + 1]->shot->is_card && !kept[i + 1])
+    if (!run.per_shot && p->shot->is_card && i + 1 < chosen.size() && !chosen[i + 1]->shot->is_card && !kept[i + 1])
       next_scene = std::async(std::launch::async,
-                              [request = shot_request(board, *chosen[i + 1], *row, row_files.front(), r)] {
+                              [request = shot_request(run.board, *chosen[i + 1], *row, row_files.front(), r)] {
                                 return std::make_unique<PreparedRender>(request);
                               });
-    render_shot_into(board, *p, *row, row_files.front(), r, std::move(prepared));
+    render_shot_into(run.board, *p, *row, row_files.front(), r, std::move(prepared));
     row_frames += p->frames;
   }
   end_row();
-  const std::vector<PresentedShot> presented =
-      per_shot ? presented_shots(chosen, clip_files[0], clips.path(), board.fps) : std::vector<PresentedShot>{};
-  // Copied before the page's folder takes the shots' files: rendered once, for both.
-  const std::unique_ptr<render::TemporaryDirectory> shots_stage = staged_shots_folder(shots_dir, board, presented, r);
-  const std::string shots_said =
-      shots_stage ? ", and " + std::to_string(presented.size()) + " shots in " + one_line_message(shots_dir.string(), 4096) : "";
+  return clip_files;
+}
 
-  const std::map<std::string, std::string> metadata = {{"title", render::rich_text_plain(board.title)},
-                                                       {"comment", "vibra lecture " + shown_path(r.storyboard)}};
-  long long frames = 0;
-  for (const auto& c : chapters) frames = c.end_frame;
-  const double seconds = double(frames) / board.fps;
-  const int fps = int(board.fps);
-  if (!page) {
-    // Both finished before either is placed, then placed together or not at all.
-    render::TemporaryFile subtitles(vtt);
-    render::write_text(subtitles, render::web_vtt(cues, shown_path(r.storyboard)));
-    const fs::path joined = clips.path() / final_video.filename();
-    render::join_clips(clip_files[0], joined, fps, chapters, cues, metadata, sound ? &*sound : nullptr);
-    std::vector<render::Placement> placements = {{joined, final_video}, {subtitles.path(), subtitles.final_path()}};
-    if (shots_stage) placements.push_back({shots_stage->path(), shots_dir});
-    render::place_together(placements);
-    if (!r.quiet)
-      std::fprintf(stderr, "vibra: wrote %s (%zu shot%s, %lld frames, %.1f s, %zu chapters) and %s%s\n",
-                   one_line_message(target.shown(), 4096).c_str(), chosen.size(), chosen.size() == 1 ? "" : "s",
-                   frames, seconds, chapters.size(), one_line_message(vtt.string(), 4096).c_str(), shots_said.c_str());
-    return;
-  }
-  render::TemporaryDirectory staged(companions.parent_path(), companions.filename().string());
-  render::TemporaryFile page_file(final_video);
-  const std::string folder = companions.filename().string() + "/";
-  render::write_text_file(staged.path() / (stem + ".vtt"), render::web_vtt(cues, shown_path(r.storyboard)));
-  for (std::size_t i = 0; i < kinds.size(); ++i)
-    render::join_clips(clip_files[i], staged.path() / (stem + kinds[i]), fps, chapters, cues, metadata,
-                       sound ? &*sound : nullptr);
-  if (r.present) {  // the slides, and the one-file video and subtitles to download
-    render::Presentation show = stage_presentation(
-        render::rich_text_plain(board.title), board.width, board.height, board.fps, presented, staged.path(), folder,
-        {{"The whole lecture (MP4)", folder + stem + ".mp4"}, {"Subtitles (WebVTT)", folder + stem + ".vtt"}});
-    show.command_line = r.command_line;
-    render::write_text(page_file, render::presentation_html(show));
-  }
+/// A video output: the joined video and its subtitles (and the shots folder) placed together.
+void write_lecture_video(const LectureRun& run, const std::vector<std::vector<render::ClipFile>>& clip_files,
+                         const fs::path& clips, const render::TemporaryDirectory* shots_stage, const std::string& shots_said) {
+  const LectureRequest& r = run.r;
+  // Both finished before either is placed, then placed together or not at all.
+  render::TemporaryFile subtitles(run.vtt);
+  render::write_text(subtitles, render::web_vtt(run.cues, shown_path(r.storyboard)));
+  const fs::path joined = clips / run.target.file.filename();
+  render::join_clips(clip_files[0], joined, int(run.board.fps), run.chapters, run.cues, run.metadata,
+                     run.sound ? &*run.sound : nullptr);
+  std::vector<render::Placement> placements = {{joined, run.target.file}, {subtitles.path(), subtitles.final_path()}};
+  if (shots_stage) placements.push_back({shots_stage->path(), run.shots_dir});
+  render::place_together(placements);
+  if (!r.quiet)
+    std::fprintf(stderr, "vibra: wrote %s (%zu shot%s, %lld frames, %.1f s, %zu chapters) and %s%s\n",
+                 one_line_message(run.target.shown(), 4096).c_str(), run.chosen.size(),
+                 run.chosen.size() == 1 ? "" : "s", run.frames, double(run.frames) / run.board.fps,
+                 run.chapters.size(), one_line_message(run.vtt.string(), 4096).c_str(), shots_said.c_str());
+}
+
+/// The lecture page's content: its video, chapters, downloads and facts.
+render::LecturePage lecture_page_of(const LectureRun& run, const std::string& folder) {
+  const Storyboard& board = run.board;
+  const std::string base = folder + run.stem;
   render::LecturePage lecture;
   lecture.title = render::rich_text_plain(board.title);
   render::PageMedia& media = lecture.media;
   media.kind = render::PageMedia::Kind::video;
   media.width = board.width + (board.width & 1), media.height = board.height + (board.height & 1);
-  media.frames = frames;
+  media.frames = run.frames;
   media.fps = board.fps;
   media.frame_interval = 1 / board.fps;
-  media.videos = {folder + stem + ".mp4", folder + stem + ".webm"};
-  media.subtitles = folder + stem + ".vtt";
-  media.sound = sound.has_value();
-  for (const auto& c : chapters) lecture.chapters.push_back({c.title, double(c.first_frame) / board.fps});
-  lecture.downloads = {{"MP4 video", folder + stem + ".mp4"}, {"WebM video", folder + stem + ".webm"},
-                       {"Subtitles (WebVTT)", folder + stem + ".vtt"}};
-  lecture.facts = {{"storyboard", shown_path(r.storyboard)},
-                   {"shots", std::to_string(chosen.size())},
-                   {"frames", std::to_string(frames) + " at " + std::to_string(fps) + " fps (" +
-                                  std::to_string(int(std::lround(seconds))) + " s of video)"},
+  media.videos = {base + ".mp4", base + ".webm"};
+  media.subtitles = base + ".vtt";
+  media.sound = run.sound.has_value();
+  for (const auto& c : run.chapters) lecture.chapters.push_back({c.title, double(c.first_frame) / board.fps});
+  lecture.downloads = {{"MP4 video", base + ".mp4"}, {"WebM video", base + ".webm"}, {"Subtitles (WebVTT)", base + ".vtt"}};
+  lecture.facts = {{"storyboard", shown_path(run.r.storyboard)},
+                   {"shots", std::to_string(run.chosen.size())},
+                   {"frames", std::to_string(run.frames) + " at " + std::to_string(int(board.fps)) + " fps (" +
+                                  std::to_string(int(std::lround(double(run.frames) / board.fps))) + " s of video)"},
                    {"size", std::to_string(board.width) + "x" + std::to_string(board.height)}};
-  lecture.command_line = r.command_line;
-  if (!r.present) render::write_text(page_file, render::lecture_page_html(lecture));
+  lecture.command_line = run.r.command_line;
+  return lecture;
+}
+
+/// A page output: its videos, subtitles and (--present) slides staged in
+/// PAGE_files/, then the folder, the page (and the shots folder) placed together.
+void write_lecture_page(const LectureRun& run, const std::vector<std::vector<render::ClipFile>>& clip_files,
+                        const std::vector<PresentedShot>& presented, const render::TemporaryDirectory* shots_stage,
+                        const std::string& shots_said) {
+  const LectureRequest& r = run.r;
+  render::TemporaryDirectory staged(run.companions.parent_path(), run.companions.filename().string());
+  render::TemporaryFile page_file(run.target.file);
+  const std::string folder = run.companions.filename().string() + "/";
+  render::write_text_file(staged.path() / (run.stem + ".vtt"), render::web_vtt(run.cues, shown_path(r.storyboard)));
+  for (std::size_t i = 0; i < run.kinds.size(); ++i)
+    render::join_clips(clip_files[i], staged.path() / (run.stem + run.kinds[i]), int(run.board.fps), run.chapters,
+                       run.cues, run.metadata, run.sound ? &*run.sound : nullptr);
+  if (r.present) {  // the slides, and the one-file video and subtitles to download
+    render::Presentation show = stage_presentation(
+        render::rich_text_plain(run.board.title), run.board.width, run.board.height, run.board.fps, presented,
+        staged.path(), folder,
+        {{"The whole lecture (MP4)", folder + run.stem + ".mp4"}, {"Subtitles (WebVTT)", folder + run.stem + ".vtt"}});
+    show.command_line = r.command_line;
+    render::write_text(page_file, render::presentation_html(show));
+  } else {
+    render::write_text(page_file, render::lecture_page_html(lecture_page_of(run, folder)));
+  }
   staged.seal();
-  check_companion_folder(companions, r.force);  // again: the user may have put a file there meanwhile
-  std::vector<render::Placement> placements = {{staged.path(), companions}, {page_file.path(), page_file.final_path()}};
-  if (shots_stage) placements.push_back({shots_stage->path(), shots_dir});
+  check_companion_folder(run.companions, r.force);  // again: the user may have put a file there meanwhile
+  std::vector<render::Placement> placements = {{staged.path(), run.companions}, {page_file.path(), page_file.final_path()}};
+  if (shots_stage) placements.push_back({shots_stage->path(), run.shots_dir});
   render::place_together(placements);
   if (!r.quiet)
     std::fprintf(stderr, "vibra: wrote %s and %s (%zu %s, %lld frames, %.1f s)%s\n",
-                 one_line_message(target.shown(), 4096).c_str(), one_line_message(companions.string(), 4096).c_str(),
-                 chapters.size(), r.present ? "slides" : "chapters", frames, seconds, shots_said.c_str());
+                 one_line_message(run.target.shown(), 4096).c_str(),
+                 one_line_message(run.companions.string(), 4096).c_str(), run.chapters.size(),
+                 r.present ? "slides" : "chapters", run.frames, double(run.frames) / run.board.fps, shots_said.c_str());
+}
+
+void make_lecture(const LectureRequest& r) {
+  const bool page = render::classify_output(r.output) == render::OutputKind::page;
+  const bool per_shot = r.present || !r.shots_dir.empty();  // each shot a video of its own, and its first frame
+  check_lecture_options(r, page, per_shot);
+  const fs::path shots_dir = shots_folder_path(r.shots_dir);
+  note_input_file(r.storyboard, "the storyboard");  // before the outputs are checked: never written over
+  const render::OutputTarget target = render::resolve_output(r.output, render::kNeedsAFile);
+  render::refuse_input_as_output(target.file);
+  render::check_output_settings(page ? "x.mp4" : r.output, false, r.video);
+
+  Storyboard board = load_board(r);
+  render::start_loading_fonts();
+  const std::vector<ShotNarration> narration = narrate_lecture(board);  // speech made before any frame
+  fit_shots_to_speech(board, narration);
+  const std::vector<PlannedShot> plan = plan_lecture(board, r.video, narration);  // every shot checked before any work
+  if (r.script) return write_script(board, plan);
+  LectureRun run{r, board, plan};
+  for (const PlannedShot& p : plan)
+    if (r.shot ? p.shot->number == *r.shot : !r.segment || (p.shot->number - 1) % r.segment->count == r.segment->index)
+      run.chosen.push_back(&p);
+  if (r.segment) return write_shot_files(board, plan, run.chosen, r);  // shot files for a cluster, beside the output
+
+  run.page = page, run.per_shot = per_shot, run.target = target, run.shots_dir = shots_dir;
+  run.stem = fs::path(r.output).stem().string();
+  run.companions = page ? companion_folder(r.output) : fs::path();
+  run.vtt = page ? fs::path() : target.file.parent_path() / (run.stem + ".vtt");
+  check_lecture_paths(run);
+  lay_out(run.chosen, board.fps, run.chapters, run.cues);
+  for (const auto& c : run.chapters) run.frames = c.end_frame;
+  run.sound = r.mute ? std::nullopt : sound_of(run.chosen, board.fps);
+  run.kinds = page && !r.present ? std::vector<std::string>{".mp4", ".webm"}
+                                 : std::vector<std::string>{page ? ".mp4" : render::lower_extension_of(r.output)};
+  run.metadata = {{"title", render::rich_text_plain(board.title)}, {"comment", "vibra lecture " + shown_path(r.storyboard)}};
+
+  render::TemporaryDirectory clips(target.file.parent_path(), run.stem + "_shots");
+  const std::vector<std::vector<render::ClipFile>> clip_files = render_clips(run, clips.path());
+  const std::vector<PresentedShot> presented =
+      per_shot ? presented_shots(run.chosen, clip_files[0], clips.path(), board.fps) : std::vector<PresentedShot>{};
+  // Copied before the page's folder takes the shots' files: rendered once, for both.
+  const std::unique_ptr<render::TemporaryDirectory> shots_stage = staged_shots_folder(shots_dir, board, presented, r);
+  const std::string shots_said =
+      shots_stage ? ", and " + std::to_string(presented.size()) + " shots in " + one_line_message(shots_dir.string(), 4096) : "";
+  if (page) write_lecture_page(run, clip_files, presented, shots_stage.get(), shots_said);
+  else write_lecture_video(run, clip_files, clips.path(), shots_stage.get(), shots_said);
 }
 
 }  // namespace
