@@ -15,7 +15,8 @@ void bind_lecture(py::module_& m) {
   m.def(
       "lecture",
       [](const std::string& storyboard, const std::string& output, std::optional<int> shot, const std::string& codec,
-         const std::string& quality, int crf, const std::string& preset, int threads, bool force, bool quiet, bool mute) {
+         const std::string& quality, int crf, const std::string& preset, int threads, bool force, bool quiet, bool mute,
+         bool present, const std::string& shots_dir) {
         PythonStop stop;  // first: a Ctrl-C from here on stops the call, and leaves nothing
         forget_input_files();  // each call is a run of its own
         if (crf != -1) in_range("--crf", crf, std::to_string(crf));
@@ -28,11 +29,14 @@ void bind_lecture(py::module_& m) {
         request.force = force;
         request.quiet = quiet;
         request.mute = mute;
+        request.present = present;
+        request.shots_dir = shots_dir;
         py::gil_scoped_release release;
         scenes::run_lecture(request);
       },
       py::arg("storyboard"), py::arg("output"), py::arg("shot"), py::arg("codec"), py::arg("quality"), py::arg("crf"),
-      py::arg("preset"), py::arg("threads"), py::arg("force"), py::arg("quiet"), py::arg("mute"));
+      py::arg("preset"), py::arg("threads"), py::arg("force"), py::arg("quiet"), py::arg("mute"),
+      py::arg("present"), py::arg("shots_dir"));
 }
 
 }  // namespace vibra::python

@@ -48,6 +48,23 @@ def test_a_lecture_is_a_video_with_chapters_and_subtitles(in_tmp):
     assert int(probe(one, "stream=nb_read_frames")["streams"][0]["nb_read_frames"]) == 31
 
 
+def test_a_presentation_and_a_folder_of_shots(in_tmp):
+    (in_tmp / "story.toml").write_text(STORY)
+    page = vibra.lecture("story.toml", output="talk.html", present=True, shots_dir="shots")
+    assert os.fspath(page) == "talk.html" and "present" in (in_tmp / "talk.html").read_text().lower()
+    shots = sorted(p.name for p in (in_tmp / "shots").iterdir())
+    assert [n for n in shots if n.endswith(".mp4")] == ["01-springs.mp4", "02-spring.mp4"]
+    assert "index.md" in shots and "beamer.tex" in shots
+    # Each shot's own video holds its own frames: 10 and 31.
+    frames = [int(probe(in_tmp / "shots" / n, "stream=nb_read_frames")["streams"][0]["nb_read_frames"])
+              for n in ("01-springs.mp4", "02-spring.mp4")]
+    assert frames == [10, 31]
+    with pytest.raises(ValueError, match="--present makes a page of slides"):
+        vibra.lecture("story.toml", output="talk.mp4", present=True)
+    with pytest.raises(TypeError):
+        vibra.lecture("story.toml", output="talk.html", shots_dir=3)
+
+
 def test_a_bad_storyboard_raises_with_the_shot_and_key(in_tmp):
     (in_tmp / "story.toml").write_text(STORY.replace("seconds = 3.1", "secnds = 3.1"))
     with pytest.raises(ValueError, match=r"shot 2, secnds: unknown key 'secnds'"):

@@ -132,19 +132,24 @@ def render(scene="pendulum", out=None, at=None, *, size=None, fps=None, layout=N
 
 
 def lecture(storyboard, output=None, *, shot=None, codec="", quality="medium", crf=-1, preset="", threads=0,
-            force=False, quiet=True, mute=False):
+            force=False, quiet=True, mute=False, present=False, shots_dir=None):
     """Plays a storyboard's shots into one video as `vibra lecture` does:
     output="name.mp4" or .webm (default: the storyboard's name .mp4), with
     name.vtt (subtitles) beside it, a chapter per shot and a subtitle track;
     or "page.html" (a page with a chapter list; returned as a Path). shot=N
     renders shot N alone. Shots with say = "..." speak (AAC or Opus in the
-    video); mute=True leaves the sound track out, as --mute. Returns a Video.
+    video); mute=True leaves the sound track out, as --mute. present=True
+    with output="talk.html" makes the slides of --present; shots_dir="shots"
+    writes every shot as its own MP4 and PNG with index.md and beamer.tex, as
+    --shots-dir. Returns a Video, or the page's Path.
     """
     storyboard = path_text("lecture", "storyboard", storyboard)
     if output is None:
         output = Path(storyboard).stem + ".mp4"
     output = path_text("lecture", "output", output)
-    native("lecture")(storyboard, output, shot, codec, quality, crf, preset, threads, force, quiet, bool(mute))
+    shots_dir = "" if shots_dir is None else path_text("lecture", "shots_dir", shots_dir)
+    native("lecture")(storyboard, output, shot, codec, quality, crf, preset, threads, force, quiet, bool(mute),
+                      bool(present), shots_dir)
     if Path(output).suffix.lower() in VIDEO_TYPES:
         return Video(output)
     return Path(output)
