@@ -335,3 +335,39 @@ TEST_CASE("a spoken note that no frame shows is one subtitle, timed as it is spo
   const std::vector<float> sound = decoded_sound(dir / "talk.mp4");
   CHECK(rms(sound, cues[0].start, cues[0].end) > 0.02);
 }
+
+TEST_CASE("a narrated presentation: each slide that speaks plays its own part of the speech, a silent one none",
+          "[narration][present]") {
+  ScratchDirectory dir;
+  write(dir / "story.toml", kStory);
+  const auto r = run_vibra("lecture story.toml -q -o talk.html --present --shots-dir shots", "cd " + dir.path.string() + " && ");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const std::vector<Cue> cues = vtt_cues(read_file(dir / "talk_files/talk.vtt"));
+  REQUIRE(cues.size() == 4);  // two sentences, the quiet card, the spoken note
+  const std::vector<double> ends = chapter_ends(dir / "talk_files/talk.mp4");
+  REQUIRE(ends.size() == 3);
+  const std::string spoken = dir / "talk_files/01-springs.mp4", quiet = dir / "talk_files/02-quiet.mp4",
+                    scene = dir / "talk_files/03-spring.mp4";
+  for (const std::string& file : {spoken, scene, std::string(dir / "shots/01-springs.mp4")}) {
+    INFO(file);
+    CHECK(probe(file, "-select_streams a -show_entries stream=codec_name,sample_rate,channels") == "aac,48000,1\n");
+  }
+  CHECK(probe(quiet, "-select_streams a -show_entries stream=codec_name").empty());
+  // Each shot's sound from its own start: the card's two sentences, the scene's note 2.5 s in.
+  const std::vector<float> first = decoded_sound(spoken), third = decoded_sound(scene);
+  CHECK(double(first.size()) / 48000 == Approx(ends[0]).margin(0.03));
+  CHECK(rms(first, cues[0].start, cues[1].end) > 0.02);
+  CHECK(rms(first, cues[1].end + 0.05, ends[0]) < 0.002);
+  CHECK(rms(third, 0, 2.45) < 0.002);
+  CHECK(rms(third, 2.5, 2.5 + (cues[3].end - cues[3].start)) > 0.02);
+  // The page plays the speaking slides unmuted, the silent one muted.
+  const std::string html = read_file(dir / "talk.html");
+  auto video_tag = [&](const std::string& file) {
+    const std::size_t at = html.rfind("<video", html.find("data-src=\"talk_files/" + file + "\""));
+    return html.substr(at, html.find('>', at) - at);
+  };
+  CHECK(video_tag("01-springs.mp4").find("muted") == std::string::npos);
+  CHECK(video_tag("02-quiet.mp4").find("muted") != std::string::npos);
+  CHECK(video_tag("03-spring.mp4").find("muted") == std::string::npos);
+}

@@ -13,6 +13,7 @@
   // lecture does not hold every video at once.
   const kNearby = 2;
   let current = -1, typed = '', loops = 0, speaker = null, shown = null;
+  let blocked = false;  // the current slide speaks, and waits for a key before it plays
   // The time of the frame on screen, as the browser presented it: a paused
   // video's currentTime may lie a frame before it.
   let presented = 0;
@@ -66,7 +67,11 @@
     v.loop = shot.then === 'loop' && !(shot.intro > 0);  // a whole loop seamlessly; an intro by 'ended'
     v.currentTime = 0;
     presented = 0;
-    v.play().catch(() => {});
+    blocked = false;
+    // A browser plays sound only after a key or a click on the page: a
+    // speaking first slide waits for P (or any slide's key) rather than
+    // playing on without its voice.
+    v.play().catch(() => { if (shot.sound) { blocked = true; showStatus(); } });
     history.replaceState(null, '', '#' + (i + 1));
     $('progress-bar').style.width = (100 * (i + 1) / count) + '%';
     showStatus();
@@ -87,12 +92,17 @@
     tellSpeaker();
   }));
 
-  const showStatus = () => { $('status').textContent = typed ? 'go to ' + typed : (current + 1) + ' / ' + count; };
+  const showStatus = () => {
+    $('status').textContent = typed ? 'go to ' + typed
+                                    : (current + 1) + ' / ' + count + (blocked ? ' · P plays it, with sound' : '');
+  };
   const toggle = id => { $(id).hidden = !$(id).hidden; };
   function pauseOrPlay() {
     const v = videos[current];
+    blocked = false;
     if (v.paused && !v.ended) v.play().catch(() => {});
     else v.pause();
+    showStatus();
     tellSpeaker();
   }
   function fullScreen() {

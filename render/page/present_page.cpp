@@ -16,7 +16,7 @@ std::string slides_html(const Presentation& p) {
   for (std::size_t i = 0; i < p.slides.size(); ++i) {
     const PresentSlide& s = p.slides[i];
     out += "<section class=\"slide\" id=\"slide-" + std::to_string(i + 1) + "\" aria-label=\"" + html_escape(s.title) +
-           "\" hidden><video muted playsinline preload=\"none\"" + size + " poster=\"" + page_href(s.still) +
+           "\" hidden><video" + (s.sound ? "" : " muted") + " playsinline preload=\"none\"" + size + " poster=\"" + page_href(s.still) +
            "\" data-src=\"" + page_href(s.video) + "\"></video></section>\n";
   }
   return out;
@@ -32,7 +32,8 @@ std::string notes_json(const std::vector<std::string>& notes) {
 std::string slide_json(const PresentSlide& s) {
   std::string out = "{\"title\":" + json_string(s.title) + ",\"still\":" + json_string(url_path_escape(s.still)) +
                     ",\"frames\":" + std::to_string(s.frames) + ",\"then\":" + json_string(s.then) +
-                    ",\"intro\":" + json_number(s.intro) + ",\"notes\":" + notes_json(s.notes);
+                    ",\"intro\":" + json_number(s.intro) + ",\"sound\":" + (s.sound ? "true" : "false") +
+                    ",\"notes\":" + notes_json(s.notes);
   if (s.interval > 0) out += ",\"clock\":{\"interval\":" + json_number(s.interval) + page_time_map_json(s.time_map) + "}";
   return out + "}";
 }

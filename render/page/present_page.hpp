@@ -19,6 +19,7 @@ struct PresentSlide {
   /// time_map's pieces when paced; interval 0: a card, no clock.
   double interval = 0;
   std::vector<PageMedia::TimePiece> time_map;
+  bool sound = false;  ///< the video speaks: played unmuted
 };
 
 /// A presentation: slides of one size and frame rate, its downloads and the command that made it.

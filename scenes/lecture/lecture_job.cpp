@@ -633,6 +633,22 @@ void write_lecture_page(const LectureRun& run, const std::vector<std::vector<ren
                  r.present ? "slides" : "chapters", run.frames, double(run.frames) / run.board.fps, shots_said.c_str());
 }
 
+/// A narrated lecture's presented shots each get their own part of the
+/// speech: a shot that speaks is joined again with its sound (packets
+/// copied, the audio encoded), so its slide and its file in the shots
+/// folder speak as the one-file video does.
+void voice_presented_shots(const LectureRun& run, std::vector<PresentedShot>& presented, const fs::path& clips) {
+  for (std::size_t i = 0; i < presented.size(); ++i) {
+    const std::optional<render::AudioClip> sound = sound_of({run.chosen[i]}, run.board.fps);
+    if (!sound) continue;  // a silent shot stays as it is
+    PresentedShot& shot = presented[i];
+    const fs::path voiced = clips / ("voiced-" + std::to_string(shot.number) + shot.video.extension().string());
+    render::join_clips({{shot.video, shot.frames}}, voiced, int(run.board.fps), {}, {}, run.metadata, &*sound);
+    shot.video = voiced;
+    shot.sound = true;
+  }
+}
+
 void make_lecture(const LectureRequest& r) {
   const bool page = render::classify_output(r.output) == render::OutputKind::page;
   const bool per_shot = r.present || !r.shots_dir.empty();  // each shot a video of its own, and its first frame
@@ -669,8 +685,9 @@ void make_lecture(const LectureRequest& r) {
 
   render::TemporaryDirectory clips(target.file.parent_path(), run.stem + "_shots");
   const std::vector<std::vector<render::ClipFile>> clip_files = render_clips(run, clips.path());
-  const std::vector<PresentedShot> presented =
+  std::vector<PresentedShot> presented =
       per_shot ? presented_shots(run.chosen, clip_files[0], clips.path(), board.fps) : std::vector<PresentedShot>{};
+  if (run.sound) voice_presented_shots(run, presented, clips.path());
   // Copied before the page's folder takes the shots' files: rendered once, for both.
   const std::unique_ptr<render::TemporaryDirectory> shots_stage = staged_shots_folder(shots_dir, board, presented, r);
   const std::string shots_said =

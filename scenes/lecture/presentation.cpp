@@ -26,6 +26,7 @@ render::PresentSlide slide_of(const PresentedShot& shot, const std::string& vide
   slide.notes = shot.notes;
   slide.interval = shot.interval;
   slide.time_map = shot.time_map;
+  slide.sound = shot.sound;
   return slide;
 }
 }  // namespace

@@ -22,6 +22,7 @@ struct PresentedShot {
   /// A scene's clock: frame k shows k * interval, or time_map's pieces when paced; 0 for a card.
   double interval = 0;
   std::vector<render::PageMedia::TimePiece> time_map;
+  bool sound = false;  ///< its video carries its narration (a slide then plays unmuted)
 };
 
 /// "01-drag-takes-energy-out": the shot's number (padded to the widest of

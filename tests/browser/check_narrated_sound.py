@@ -6,7 +6,8 @@ serves them over HTTP on 127.0.0.1 (so the page and its media share an
 origin: Web Audio reads nothing from a cross-origin file: video) and plays
 each video through an AudioContext analyser: the narrated MP4 and WebM must
 show signal (peak above 0.02), the muted one none. The page's own <video>
-must not be muted. Drives Chromium as check_lecture_page.py does.
+must not be muted; nor must the speaking slide of the same lecture given
+--present, whose own video must play and speak. Drives Chromium as check_lecture_page.py does.
 
 Usage: check_narrated_sound.py VIBRA
 Exit 77 (skipped) only when Chromium is not installed and CI is not true.
@@ -84,7 +85,7 @@ def main():
     work = Path(tempfile.mkdtemp(prefix="vibra_sound_"))
     try:
         (work / "story.toml").write_text(STORY)
-        for args in (["-o", "lecture.html"], ["--mute", "-o", "muted.mp4"]):
+        for args in (["-o", "lecture.html"], ["--mute", "-o", "muted.mp4"], ["--present", "-o", "talk.html"]):
             subprocess.run([vibra, "lecture", "story.toml", "-q"] + args, cwd=work, check=True)
         server = serve(work)
         base = "http://127.0.0.1:%d/" % server.server_address[1]
@@ -94,8 +95,20 @@ def main():
             browser.send("Page.navigate", {"url": base + "lecture.html"})
             browser.wait_event("Page.loadEventFired")
             check(browser.js("document.getElementById('video').muted") is False, "the page's video is not muted")
+            browser.send("Page.navigate", {"url": base + "talk.html#1"})
+            browser.wait_event("Page.loadEventFired")
+            playing = browser.js("""new Promise(done => {
+              const v = document.querySelector('#slide-1 video');
+              const t0 = performance.now();
+              (function look() {
+                if (v.currentTime > 0.3 || performance.now() - t0 > 5000) done([v.muted, v.paused, v.currentTime]);
+                else setTimeout(look, 50);
+              })();
+            })""")
+            check(playing[0] is False and playing[1] is False and playing[2] > 0.3,
+                  "the speaking slide plays unmuted (muted, paused, time: %s)" % (playing,))
             for name, heard in (("lecture_files/lecture.mp4", True), ("lecture_files/lecture.webm", True),
-                                ("muted.mp4", False)):
+                                ("muted.mp4", False), ("talk_files/01-springs.mp4", True)):
                 peak = browser.js(LISTEN % (base + name))
                 check(peak > 0.02 if heard else peak == 0,
                       "%s: the analyser's peak is %.4f (%s)" % (name, peak, "speech" if heard else "silence"))
