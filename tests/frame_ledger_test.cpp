@@ -13,6 +13,7 @@
 #include "render/output/frame_ledger.hpp"
 
 using vibra::test::read_file;
+using vibra::test::write_file;
 using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;
 namespace fs = std::filesystem;
@@ -21,7 +22,6 @@ namespace vr = vibra::render;
 namespace {
 const std::string kShort = " --size 160x90 -q --set periods=";  // periods=0.5: 31 frames, 0.1: 7
 
-void write(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
 std::string frame(int i, int digits = 4) {
   char name[32];
@@ -45,7 +45,7 @@ TEST_CASE("file listing: names of any bytes come back as written, and a listing 
   for (const char* bad : {"my own notes\n", "vibra manifest 1\n3 0000000000000001\n",
                           "vibra manifest 1\n1 0000000000000001 bad%G1.png\n", "vibra manifest 1\n1 01 cut%4\n"}) {
     INFO(bad);
-    write(dir.path / "bad", bad);
+    write_file(dir.path / "bad", bad);
     CHECK_FALSE(vr::read_file_listing(dir.path / "bad"));
   }
 }
@@ -56,11 +56,11 @@ TEST_CASE("a whole run removes only the earlier frames its ledger proves, and sa
   REQUIRE(run_vibra("render" + kShort + "0.5 -o " + pattern).exit_code == 0);  // 31 frames and their ledger
   REQUIRE(fs::exists(dir.path / ".vibra-frames"));
   // Since then: the user edited one frame, locked another, and put files of their own under the pattern's names.
-  write(dir.path / frame(20), read_file(dir.path / frame(20)) + "edited");
+  write_file(dir.path / frame(20), read_file(dir.path / frame(20)) + "edited");
   const std::string locked = read_file(dir.path / frame(25));
   fs::permissions(dir.path / frame(25), fs::perms::none);
-  write(dir.path / frame(40), "the user's own");
-  write(dir.path / frame(30, 5), "the user's own, five digits");
+  write_file(dir.path / frame(40), "the user's own");
+  write_file(dir.path / frame(30, 5), "the user's own, five digits");
 
   const auto r = run_vibra("render --size 160x90 --set periods=0.1 -o " + pattern);  // 7 frames
   INFO(r.err);
@@ -86,9 +86,9 @@ TEST_CASE("a whole run removes only the earlier frames its ledger proves, and sa
 
 TEST_CASE("a ledger vibra did not write is neither trusted nor replaced", "[output][ledger]") {
   ScratchDirectory dir;
-  write(dir.path / frame(9), "the user's frame");
+  write_file(dir.path / frame(9), "the user's frame");
   SECTION("the user's own file of that name") {
-    write(dir.path / ".vibra-frames", "my notes");
+    write_file(dir.path / ".vibra-frames", "my notes");
     const auto r = run_vibra("render --size 160x90 --set periods=0.1 -o " + (dir / "f_%04d.png"));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);

@@ -22,18 +22,13 @@
 
 using vibra::test::check_refused;
 using vibra::test::read_file;
+using vibra::test::write_file;
 using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;
 using vibra::test::shell;
 namespace fs = std::filesystem;
 
 namespace {
-void write(const std::string& path, const std::string& text) {
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  REQUIRE(f);
-  REQUIRE(std::fwrite(text.data(), 1, text.size(), f) == text.size());
-  REQUIRE(std::fclose(f) == 0);
-}
 
 /// A 16-bit mono WAV of `samples` at `rate`.
 void write_wav(const std::string& path, const std::vector<float>& samples, int rate) {
@@ -41,7 +36,7 @@ void write_wav(const std::string& path, const std::vector<float>& samples, int r
   const auto u16 = [](std::uint16_t v) { return std::string{char(v), char(v >> 8)}; };
   std::string data;
   for (float s : samples) data += u16(std::uint16_t(std::int16_t(std::lround(s * 32767))));
-  write(path, "RIFF" + u32(std::uint32_t(36 + data.size())) + "WAVEfmt " + u32(16) + u16(1) + u16(1) + u32(rate) +
+  write_file(path, "RIFF" + u32(std::uint32_t(36 + data.size())) + "WAVEfmt " + u32(16) + u16(1) + u16(1) + u32(rate) +
                   u32(rate * 2) + u16(2) + u16(16) + "data" + u32(std::uint32_t(data.size())) + data);
 }
 
@@ -126,7 +121,7 @@ notes = [{ at = "1.5-2", text = "it moves on", say = true }]
 TEST_CASE("a narrated lecture: its speech decoded from the MP4 and the WebM, where and as loud as it should be",
           "[narration][video]") {
   ScratchDirectory dir;
-  write(dir / "story.toml", kStory);
+  write_file(dir / "story.toml", kStory);
   for (const char* ext : {".mp4", ".webm"}) {
     SECTION(ext) {
       const std::string out = dir / (std::string("lecture") + ext);
@@ -166,7 +161,7 @@ TEST_CASE("a narrated lecture: its speech decoded from the MP4 and the WebM, whe
 
 TEST_CASE("lecture --mute: the same shots and chapters without a sound track", "[narration][video]") {
   ScratchDirectory dir;
-  write(dir / "story.toml", kStory);
+  write_file(dir / "story.toml", kStory);
   REQUIRE(run_vibra("lecture story.toml -q -o spoken.mp4", "cd " + dir.path.string() + " && ").exit_code == 0);
   REQUIRE(run_vibra("lecture story.toml -q --mute -o muted.mp4", "cd " + dir.path.string() + " && ").exit_code == 0);
   CHECK(probe(dir / "muted.mp4", "-select_streams a -show_entries stream=codec_name").empty());
@@ -184,7 +179,7 @@ TEST_CASE("a recorded take comes through as recorded, resampled to 48 kHz", "[na
     worst = std::max(worst, std::abs(double(take.samples[n]) - expected[n]));
   CHECK(worst < 0.005);  // 16-bit samples, resampled: no gain, no delay
   SECTION("in a lecture, it sets the shot's length and is heard at 440 Hz") {
-    write(dir / "story.toml", "size = \"320x180\"\nfps = 10\n[[shot]]\ncard = \"A tone\"\naudio = \"take.wav\"\nsay = \"A tone.\"\n");
+    write_file(dir / "story.toml", "size = \"320x180\"\nfps = 10\n[[shot]]\ncard = \"A tone\"\naudio = \"take.wav\"\nsay = \"A tone.\"\n");
     REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " -q -o " + (dir / "tone.mp4")).exit_code == 0);
     CHECK(chapter_ends(dir / "tone.mp4") == std::vector<double>{2.5});  // 0.25 + 1.5 + 0.75
     const std::vector<float> sound = decoded_sound(dir / "tone.mp4");
@@ -217,16 +212,16 @@ TEST_CASE("shots timed to their speech: seconds too short refused with both dura
   ScratchDirectory dir;
   const std::string head = "size = \"320x180\"\nfps = 10\n[[shot]]\ncard = \"A\"\nseconds = 0.5\n";
   const std::string words = "say = \"The pendulum swings and drag slows it down.\"\n";
-  write(dir / "story.toml", head + words);
+  write_file(dir / "story.toml", head + words);
   check_refused("lecture " + (dir / "story.toml") + " -o OUT.mp4", "story.toml:6: shot 1, say: the speech lasts ");
   check_refused("lecture " + (dir / "story.toml") + " -o OUT.mp4", " but the shot 0.50 s: give seconds = ");
-  write(dir / "story.toml", head + words + "fit = \"stretch\"\n");
+  write_file(dir / "story.toml", head + words + "fit = \"stretch\"\n");
   REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " -q -o " + (dir / "long.mp4")).exit_code == 0);
   const std::vector<Cue> cues = vtt_cues(read_file(dir / "long.vtt"));
   REQUIRE(cues.size() == 1);
   CHECK(chapter_ends(dir / "long.mp4").front() == Approx(cues[0].end + 0.75).margin(0.051));
   // A scene shot stretched: its run of T = 2 slowed to last the speech, not refused.
-  write(dir / "scene.toml", "size = \"320x180\"\nfps = 10\n[[shot]]\nscene = \"spring\"\nset = { T = 2 }\n"
+  write_file(dir / "scene.toml", "size = \"320x180\"\nfps = 10\n[[shot]]\nscene = \"spring\"\nset = { T = 2 }\n"
                             "seconds = 0.5\nfit = \"stretch\"\n" + words);
   REQUIRE(run_vibra("lecture " + (dir / "scene.toml") + " -q -o " + (dir / "scene.mp4")).exit_code == 0);
   const double end = chapter_ends(dir / "scene.mp4").front();
@@ -238,7 +233,7 @@ TEST_CASE("shots timed to their speech: seconds too short refused with both dura
 TEST_CASE("bad narration: one line naming the file, shot and key, exit 2, nothing written", "[narration]") {
   ScratchDirectory takes;
   write_wav(takes / "silent.wav", std::vector<float>(48000), 48000);
-  write(takes / "notes.wav", "not a recording");
+  write_file(takes / "notes.wav", "not a recording");
   const std::string head = "size = \"320x180\"\nfps = 10\n";
   const std::string spring = "[[shot]]\nscene = \"spring\"\nset = { T = 3 }\nseconds = 4\n";
   struct Case {
@@ -265,7 +260,7 @@ TEST_CASE("bad narration: one line naming the file, shot and key, exit 2, nothin
   for (const Case& c : cases) {
     SECTION(c.expected) {
       ScratchDirectory stories;
-      write(stories / "story.toml", c.story);
+      write_file(stories / "story.toml", c.story);
       check_refused("lecture " + (stories / "story.toml") + " -o OUT.mp4", c.expected);
     }
   }
@@ -274,7 +269,7 @@ TEST_CASE("bad narration: one line naming the file, shot and key, exit 2, nothin
 TEST_CASE("lecture --script: each shot's number, start, length, title and words, and nothing rendered",
           "[narration]") {
   ScratchDirectory dir;
-  write(dir / "story.toml", kStory);
+  write_file(dir / "story.toml", kStory);
   const auto r = run_vibra("lecture story.toml --script", "cd " + dir.path.string() + " && ");
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
@@ -289,7 +284,7 @@ TEST_CASE("lecture --script: each shot's number, start, length, title and words,
 
 TEST_CASE("a narrated lecture's page plays its sound: the video is not muted", "[narration][page]") {
   ScratchDirectory dir;
-  write(dir / "story.toml", kStory);
+  write_file(dir / "story.toml", kStory);
   REQUIRE(run_vibra("lecture story.toml -q -o page.html", "cd " + dir.path.string() + " && ").exit_code == 0);
   const std::string html = read_file(dir / "page.html");
   const std::string video = html.substr(html.find("<video"), html.find('>', html.find("<video")) - html.find("<video"));
@@ -303,7 +298,7 @@ TEST_CASE("Ctrl-C while the speech is made stops the lecture at once, and nothin
   std::string story = "size = \"320x180\"\nfps = 10\n";
   for (int shot = 1; shot <= 400; ++shot)  // about 50 ms of flite a shot: 10 s of speech to make on two cores
     story += "[[shot]]\ncard = \"Card\"\nsay = \"Shot " + std::to_string(shot) + " says a sentence of some length.\"\n";
-  write(dir / "story.toml", story);
+  write_file(dir / "story.toml", story);
   const auto [code, seconds] = vibra::test::stopped_after({"lecture", dir / "story.toml", "-q", "-o", dir / "talk.mp4"},
                                                           logs, SIGINT, 1.5);
   INFO(read_file(logs / "err"));
@@ -314,7 +309,7 @@ TEST_CASE("Ctrl-C while the speech is made stops the lecture at once, and nothin
 
 TEST_CASE("a full disk while a narrated lecture is joined names the lecture and leaves nothing", "[narration]") {
   ScratchDirectory at;
-  write(at / "talk.toml", "size = \"640x360\"\n[[shot]]\ncard = \"A\"\nsay = \"A card that speaks.\"\n"
+  write_file(at / "talk.toml", "size = \"640x360\"\n[[shot]]\ncard = \"A\"\nsay = \"A card that speaks.\"\n"
                           "[[shot]]\nscene = \"pendulum\"\nseconds = 20\nsay = \"The pendulum swings.\"\n");
   const auto r = run_vibra("lecture talk.toml -q -o talk.mp4", "cd '" + at.path.string() + "' && trap '' XFSZ && ulimit -f 100 && ");
   vibra::test::check_refusal(r, "cannot write video to 'talk.mp4'");
@@ -325,7 +320,7 @@ TEST_CASE("a full disk while a narrated lecture is joined names the lecture and 
 TEST_CASE("a spoken note that no frame shows is one subtitle, timed as it is spoken", "[narration]") {
   ScratchDirectory dir;
   // At 10 fps and speed 1, frames show t = 1.0 and 1.1: none shows 1.02-1.08, so the note is a subtitle.
-  write(dir / "story.toml", "size = \"320x180\"\nfps = 10\n[[shot]]\nscene = \"spring\"\nset = { T = 3, dt = 0.05 }\n"
+  write_file(dir / "story.toml", "size = \"320x180\"\nfps = 10\n[[shot]]\nscene = \"spring\"\nset = { T = 3, dt = 0.05 }\n"
                             "seconds = 3.1\nnotes = [{ at = \"1.02-1.08\", text = \"between frames\", say = true }]\n");
   REQUIRE(run_vibra("lecture story.toml -q -o talk.mp4", "cd " + dir.path.string() + " && ").exit_code == 0);
   const std::vector<Cue> cues = vtt_cues(read_file(dir / "talk.vtt"));
@@ -339,7 +334,7 @@ TEST_CASE("a spoken note that no frame shows is one subtitle, timed as it is spo
 TEST_CASE("a narrated presentation: each slide that speaks plays its own part of the speech, a silent one none",
           "[narration][present]") {
   ScratchDirectory dir;
-  write(dir / "story.toml", kStory);
+  write_file(dir / "story.toml", kStory);
   const auto r = run_vibra("lecture story.toml -q -o talk.html --present --shots-dir shots", "cd " + dir.path.string() + " && ");
   INFO(r.err);
   REQUIRE(r.exit_code == 0);

@@ -1,18 +1,9 @@
 // classify_output: the kind of output from its name, by the rules every command shares.
 #include "render/encode/output_kind.hpp"
 
-#include <cctype>
-#include <filesystem>
-
 #include "render/encode/frame_sink.hpp"
 
 namespace vibra::render {
-
-std::string lower_extension_of(const std::string& name) {
-  std::string ext = std::filesystem::path(name).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
 
 OutputKind classify_output(const std::string& name) {
   if (name == "-") return OutputKind::stream;

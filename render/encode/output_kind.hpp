@@ -2,6 +2,8 @@
 #pragma once
 #include <string>
 
+#include "render/output/output_path.hpp"  // lower_extension_of, for the callers of classify_output
+
 namespace vibra::render {
 
 /// The kinds of output vibra writes.
@@ -18,8 +20,5 @@ enum class OutputKind {
 /// in that order: "-", .html, a video extension, a pattern or folder, a
 /// picture extension.
 OutputKind classify_output(const std::string& name);
-
-/// The name's extension in lower case (".mp4"), or "".
-std::string lower_extension_of(const std::string& name);
 
 }  // namespace vibra::render

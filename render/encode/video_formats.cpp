@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/output/output_error.hpp"
+#include "render/output/output_path.hpp"
 
 namespace vibra::render {
 
@@ -88,14 +89,14 @@ constexpr AVPixelFormat kNoAlpha = AV_PIX_FMT_NONE;
 /// decode to exactly the YUV 4:2:0 frames they were given.
 constexpr Codec kCodecs[] = {
     // name, label, encoder, quality presets, crf range, pixels, with alpha, always alpha, even size, lossless, presets (whose), smooth fps, fallback, tuning
-    {"h264", "H.264", "libx264", {28, 23, 18}, 0, 51, AV_PIX_FMT_YUV420P, kNoAlpha, false, true, true, kX264Presets, "x264", true, 0, ".webm", tune_h264},
-    {"vp9", "VP9", "libvpx-vp9", {40, 32, 24}, 0, 63, AV_PIX_FMT_YUV420P, AV_PIX_FMT_YUVA420P, false, false, true, nullptr, "", false, 0, ".mp4", tune_vp9},
-    {"vp8", "VP8", "libvpx", {20, 10, 4}, 4, 63, AV_PIX_FMT_YUV420P, kNoAlpha, false, false, false, nullptr, "", false, 0, ".mp4", tune_vp8},
-    {"theora", "Theora", "libtheora", {5, 7, 9}, 0, 10, AV_PIX_FMT_YUV420P, kNoAlpha, false, false, false, nullptr, "", false, 0, ".mp4", tune_quantizer},
-    {"flv", "FLV1", "flv", {10, 5, 2}, 2, 31, AV_PIX_FMT_YUV420P, kNoAlpha, false, false, false, nullptr, "", false, 0, ".mp4", tune_quantizer},
-    {"gif", "GIF", "gif", {0, 0, 0}, 0, 0, AV_PIX_FMT_PAL8, kNoAlpha, false, false, false, nullptr, "", false, 50, ".mp4", tune_nothing},
-    {"raw", "raw YUV 4:2:0", "rawvideo", {0, 0, 0}, 0, 0, AV_PIX_FMT_YUV420P, kNoAlpha, false, false, false, nullptr, "", false, 0, ".mp4", tune_nothing},
-    {"prores", "ProRes 4444", "prores_ks", {0, 0, 0}, 0, 0, AV_PIX_FMT_YUVA444P10LE, AV_PIX_FMT_YUVA444P10LE, true, false, false, nullptr, "", false, 0, ".mp4", tune_prores},
+    {"h264", "H.264", "libx264", {28, 23, 18}, 0, 51, AV_PIX_FMT_YUV420P, kNoAlpha, false, true, true, kX264Presets, "x264", 0, ".webm", tune_h264},
+    {"vp9", "VP9", "libvpx-vp9", {40, 32, 24}, 0, 63, AV_PIX_FMT_YUV420P, AV_PIX_FMT_YUVA420P, false, false, true, nullptr, "", 0, ".mp4", tune_vp9},
+    {"vp8", "VP8", "libvpx", {20, 10, 4}, 4, 63, AV_PIX_FMT_YUV420P, kNoAlpha, false, false, false, nullptr, "", 0, ".mp4", tune_vp8},
+    {"theora", "Theora", "libtheora", {5, 7, 9}, 0, 10, AV_PIX_FMT_YUV420P, kNoAlpha, false, false, false, nullptr, "", 0, ".mp4", tune_quantizer},
+    {"flv", "FLV1", "flv", {10, 5, 2}, 2, 31, AV_PIX_FMT_YUV420P, kNoAlpha, false, false, false, nullptr, "", 0, ".mp4", tune_quantizer},
+    {"gif", "GIF", "gif", {0, 0, 0}, 0, 0, AV_PIX_FMT_PAL8, kNoAlpha, false, false, false, nullptr, "", 50, ".mp4", tune_nothing},
+    {"raw", "raw YUV 4:2:0", "rawvideo", {0, 0, 0}, 0, 0, AV_PIX_FMT_YUV420P, kNoAlpha, false, false, false, nullptr, "", 0, ".mp4", tune_nothing},
+    {"prores", "ProRes 4444", "prores_ks", {0, 0, 0}, 0, 0, AV_PIX_FMT_YUVA444P10LE, AV_PIX_FMT_YUVA444P10LE, true, false, false, nullptr, "", 0, ".mp4", tune_prores},
 };
 
 constexpr Container kContainers[] = {
@@ -129,8 +130,7 @@ const Codec& find_codec(const std::string& name) {
 }
 
 const Container* container_for(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = lower_extension_of(path);
   for (const Container& c : kContainers)
     if (ext == c.extension) return &c;
   return nullptr;
@@ -151,11 +151,17 @@ const Container* streaming_container(const std::string& format) {
 
 bool carries_alpha(const Codec& codec) { return codec.alpha_pixels != AV_PIX_FMT_NONE; }
 
-std::string codec_labels(bool Codec::*property) {
+std::string codec_labels(bool (*has)(const Codec&)) {
   std::vector<std::string> labels;
   for (const Codec& c : kCodecs)
-    if (c.*property) labels.push_back(c.label);
+    if (has(c)) labels.push_back(c.label);
   return spoken_list(labels);
+}
+
+std::string preset_names(const Codec& codec) {
+  std::vector<std::string> names;
+  for (const char* const* p = codec.presets; p && *p; ++p) names.push_back(*p);
+  return spoken_list(names);
 }
 
 }  // namespace vibra::render

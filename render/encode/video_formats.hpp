@@ -36,7 +36,6 @@ struct Codec {
   bool lossless;               ///< --quality lossless exists
   const char* const* presets;  ///< the encoder's own --preset names, nullptr-terminated; nullptr: none
   const char* presets_of;      ///< whose presets they are, for messages ("x264")
-  bool has_presets;
   int smooth_fps;              ///< viewers slow down faster frames (GIF); 0: no limit
   const char* fallback;        ///< the extension to suggest when the encoder is missing
   void (*tune)(const EncoderSetup&);
@@ -61,7 +60,9 @@ const Container& find_container(const std::filesystem::path&);
 const Container* streaming_container(const std::string& format);
 /// Whether the codec can carry alpha.
 bool carries_alpha(const Codec&);
-/// "A or B" of the labels of the codecs with `property`, for messages.
-std::string codec_labels(bool Codec::*property);
+/// "A or B" of the labels of the codecs that `has` something, for messages.
+std::string codec_labels(bool (*has)(const Codec&));
+/// "a, b or c": the codec's own --preset names.
+std::string preset_names(const Codec&);
 
 }  // namespace vibra::render

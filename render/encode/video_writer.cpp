@@ -326,14 +326,14 @@ void check_codec_options(const Codec& codec, const VideoOptions& o, std::vector<
   bool known_preset = false;
   for (const char* const* p = codec.presets; p && *p; ++p) known_preset |= o.preset == *p;
   if (!o.preset.empty() && codec.presets && !known_preset)
-    throw OutputError("unknown " + std::string(codec.presets_of) + " preset '" + o.preset +
-                      "': choose ultrafast, superfast, veryfast, faster, fast, medium, slow, slower or veryslow");
+    throw OutputError("unknown " + std::string(codec.presets_of) + " preset '" + o.preset + "': choose " +
+                      preset_names(codec));
   if (lossless && !codec.lossless)
-    throw OutputError("--quality lossless needs " + codec_labels(&Codec::lossless) + ", not " + codec.label +
+    throw OutputError("--quality lossless needs " + codec_labels([](const Codec& c) { return c.lossless; }) + ", not " + codec.label +
                       ": write .mp4, .mkv or .webm");
   if (lossless && o.crf >= 0) throw OutputError("--quality lossless and --crf exclude each other: give one of them");
   if (!o.preset.empty() && !codec.presets)
-    notes.push_back("the preset applies to " + codec_labels(&Codec::has_presets) + " only: ignored");
+    notes.push_back("the preset applies to " + codec_labels([](const Codec& c) { return c.presets != nullptr; }) + " only: ignored");
   if (!has_quality && o.crf >= 0) notes.push_back(std::string(codec.label) + " has no quality setting: crf ignored");
   if (o.transparent && !carries_alpha(codec))
     throw OutputError(std::string(codec.label) +

@@ -95,4 +95,10 @@ OutputTarget resolve_output(const std::string& named, const std::string& no_stre
 
 fs::path resolve_output_file(const fs::path& path) { return resolve_output(path.string()).file; }
 
+std::string lower_extension_of(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
 }  // namespace vibra::render

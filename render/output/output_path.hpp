@@ -48,4 +48,7 @@ std::filesystem::path resolve_output_file(const std::filesystem::path& path);
 /// Throws OutputError naming both when `output` is a file this run reads.
 void refuse_input_as_output(const std::filesystem::path& output);
 
+/// The path's extension in lower case (".mp4"), or "": how every output's kind is told.
+std::string lower_extension_of(const std::filesystem::path& path);
+
 }  // namespace vibra::render

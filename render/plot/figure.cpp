@@ -1,4 +1,5 @@
 // Figure: static panels of curves stacked on one canvas, for vibra plot and vibra analyze.
+#include "render/output/output_path.hpp"
 #include "render/plot/figure.hpp"
 
 #include <cairo.h>
@@ -16,12 +17,6 @@ namespace vibra::render {
 
 namespace {
 constexpr double kTickFont = 15, kLabelFont = 18, kTitleFont = 21, kLegendFont = 15;
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
 
 /// A panel placed on the canvas: its axes with their final ranges and its plot area.
 struct Placed {
@@ -337,7 +332,7 @@ void paint_panel(Canvas& canvas, const PanelView& panel, const Placed& p, const 
 }  // namespace
 
 void require_picture_extension(const std::filesystem::path& path) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = lower_extension_of(path);
   if (ext != ".png" && ext != ".svg" && ext != ".pdf")
     throw OutputError("cannot tell the picture format of '" + path.string() +
                       "': end the file name in .png, .svg or .pdf");
@@ -388,7 +383,7 @@ void Figure::draw(Canvas& canvas) const {
 
 void Figure::write(const std::filesystem::path& path) const {
   require_picture_extension(path);
-  const std::string ext = lower_extension(path);
+  const std::string ext = lower_extension_of(path);
   TemporaryFile file(path);
   if (ext == ".png") {
     Canvas canvas = Canvas::image(width_, height_);
