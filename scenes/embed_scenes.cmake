@@ -8,7 +8,7 @@ foreach(preset ${presets})
   string(APPEND body "      {\"${name}\", R\"vibra_toml(${text})vibra_toml\"},\n")
 endforeach()
 file(WRITE "${OUTPUT}.new" "// Generated from scenes/presets/*.toml by scenes/embed_scenes.cmake: do not edit.
-#include \"scenes/builtin_scenes.hpp\"
+#include \"scenes/config/builtin_scenes.hpp\"
 
 namespace vibra::scenes {
 const std::vector<std::pair<std::string, std::string>>& builtin_scenes() {

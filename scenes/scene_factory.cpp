@@ -6,7 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/models/model.hpp"
-#include "core/quoted_value.hpp"
+#include "core/input/quoted_value.hpp"
 #include "scenes/diagrams/comparison_diagram.hpp"
 #include "scenes/diagrams/comparison_labels.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"

@@ -6,7 +6,7 @@
 #include "core/comparison_trajectory.hpp"
 #include "core/trajectory.hpp"
 #include "scenes/scene.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 
 namespace vibra::scenes {
 

@@ -9,14 +9,14 @@
 #include "render/labels/drawing_record.hpp"
 #include "render/labels/label_placer.hpp"
 #include "scenes/diagrams/diagram.hpp"
-#include "scenes/frame_heading.hpp"
-#include "scenes/note_callouts.hpp"
+#include "scenes/overlays/frame_heading.hpp"
+#include "scenes/overlays/note_callouts.hpp"
 #include "scenes/panels/energy_bars.hpp"
 #include "scenes/panels/quantity_panels.hpp"
 #include "scenes/panels/scene_panel.hpp"
-#include "scenes/run_legend.hpp"
+#include "scenes/overlays/run_legend.hpp"
 #include "scenes/scene.hpp"
-#include "scenes/scene_style.hpp"
+#include "scenes/config/scene_style.hpp"
 #include "scenes/static_layer.hpp"
 
 namespace vibra::scenes {

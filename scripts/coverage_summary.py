@@ -11,7 +11,7 @@ from collections import defaultdict
 from pathlib import Path
 
 # Folders scored separately, most specific first (a file counts in the first that holds it).
-FOLDERS = ["src/core/schemes", "src/core/models", "src/core/analysis", "src/core", "src/cli", "src/app",
+FOLDERS = ["src/core/schemes", "src/core/models", "src/core/analysis", "src/core", "src/cli", "src/jobs",
            "render/draw", "render/encode", "render/labels", "render/output", "render/plot", "render/typeset",
            "render", "scenes/diagrams", "scenes/panels", "scenes/figures", "scenes/lecture", "scenes"]
 COUNTERS = {"LF": "lines", "LH": "lines_hit", "BRF": "branches", "BRH": "branches_hit"}

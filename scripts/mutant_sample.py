@@ -29,7 +29,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import mutant_sites  # noqa: E402
 
-SOURCE_FOLDERS = ["src/core", "src/cli", "src/app", "render", "scenes"]  # scored separately
+SOURCE_FOLDERS = ["src/core", "src/cli", "src/jobs", "render", "scenes"]  # scored separately
 EQUIVALENTS = Path(__file__).resolve().parent / "mutants-equivalent.txt"
 
 

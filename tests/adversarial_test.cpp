@@ -21,7 +21,7 @@
 #include <thread>
 #include <vector>
 
-#include "app/ascii_plot.hpp"
+#include "jobs/ascii_plot.hpp"
 #include "cli_support.hpp"
 #include "stop_support.hpp"
 

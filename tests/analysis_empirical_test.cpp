@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/analysis/empirical.hpp"
-#include "core/analysis/numerical_frequency.hpp"
+#include "core/analysis/frequency/numerical_frequency.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "cli_support.hpp"
-#include "core/analysis/numerical_frequency.hpp"
+#include "core/analysis/frequency/numerical_frequency.hpp"
 #include "core/error.hpp"
 
 using namespace vibra;

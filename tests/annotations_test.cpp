@@ -8,7 +8,7 @@
 #include "core/error.hpp"
 #include "png_compare.hpp"
 #include "render/plot/figure.hpp"
-#include "scenes/annotations.hpp"
+#include "scenes/overlays/annotations.hpp"
 #include "scenes/figures/mesh_marks.hpp"
 #include "test_support.hpp"
 

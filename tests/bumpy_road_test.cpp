@@ -7,7 +7,7 @@
 
 #include "cli_support.hpp"
 #include "core/error.hpp"
-#include "core/road_profile.hpp"
+#include "core/models/road_profile.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;

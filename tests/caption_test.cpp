@@ -6,7 +6,7 @@
 
 #include "core/models/model.hpp"
 #include "render/draw/caption.hpp"
-#include "scenes/run_caption.hpp"
+#include "scenes/overlays/run_caption.hpp"
 #include "scenes/scene_factory.hpp"
 #include "scenes/system_scene.hpp"
 #include "test_support.hpp"

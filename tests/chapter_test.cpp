@@ -14,10 +14,10 @@
 #include <thread>
 #include <vector>
 
-#include "cli/chapter_book_values.hpp"
-#include "cli/chapter_items.hpp"
-#include "cli/chapter_jobs.hpp"
-#include "cli/chapter_tables.hpp"
+#include "cli/chapter/chapter_book_values.hpp"
+#include "cli/chapter/chapter_items.hpp"
+#include "cli/chapter/chapter_jobs.hpp"
+#include "cli/chapter/chapter_tables.hpp"
 #include "cli_support.hpp"
 #include "core/error.hpp"
 

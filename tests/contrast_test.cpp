@@ -13,7 +13,7 @@
 #include "render/draw/color.hpp"
 #include "render/draw/contrast.hpp"
 #include "scene_run_support.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 #include "scenes/scene_factory.hpp"
 
 using vibra::render::Color;

@@ -14,7 +14,7 @@
 #include "core/models/model.hpp"
 #include "render/draw/canvas.hpp"
 #include "render/draw/damage.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 #include "scenes/scene_factory.hpp"
 
 using vibra::render::Canvas;

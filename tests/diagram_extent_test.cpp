@@ -9,8 +9,8 @@
 #include "render/draw/canvas.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "scene_run_support.hpp"
-#include "scenes/diagrams/force_scale.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/diagrams/forces/force_scale.hpp"
+#include "scenes/config/scene_config.hpp"
 #include "scenes/scene_factory.hpp"
 #include "scenes/system_scene.hpp"
 

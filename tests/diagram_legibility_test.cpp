@@ -15,8 +15,8 @@
 #include "render/plot/plot_panel.hpp"
 #include "cli_support.hpp"
 #include "png_compare.hpp"
-#include "scenes/diagrams/force_key.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/diagrams/forces/force_key.hpp"
+#include "scenes/config/scene_config.hpp"
 #include "scene_run_support.hpp"
 #include "scenes/scene_factory.hpp"
 

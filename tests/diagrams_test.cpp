@@ -8,7 +8,7 @@
 #include "core/models/model.hpp"
 #include "core/models/sliding_box_law.hpp"
 #include "core/models/vibration_law.hpp"
-#include "core/road_profile.hpp"
+#include "core/models/road_profile.hpp"
 #include "render/draw/canvas.hpp"
 #include "scenes/diagrams/bouncing_ball_diagram.hpp"
 #include "scenes/diagrams/bumpy_road_diagram.hpp"

@@ -11,7 +11,7 @@
 #include "render/draw/canvas.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "scene_run_support.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 #include "scenes/scene_factory.hpp"
 
 using vibra::render::OutlineKind;

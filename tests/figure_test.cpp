@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "cli_support.hpp"
-#include "render/draw/decimated_path.hpp"
+#include "render/draw/polyline/decimated_path.hpp"
 #include "render/output/output_error.hpp"
 #include "render/plot/axis.hpp"
 #include "render/plot/figure.hpp"

@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/error.hpp"
-#include "scenes/frame_clock.hpp"
+#include "scenes/timing/frame_clock.hpp"
 
 using vibra::scenes::FrameClock;
 

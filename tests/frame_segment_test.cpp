@@ -2,7 +2,7 @@
 // carries, and the segment file's name.
 #include <catch2/catch.hpp>
 
-#include "render/encode/frame_segment.hpp"
+#include "render/encode/join/frame_segment.hpp"
 
 using vibra::render::FrameSegment;
 

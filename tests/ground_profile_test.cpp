@@ -7,7 +7,7 @@
 #include <cstdlib>
 
 #include "render/draw/canvas.hpp"
-#include "render/draw/ground_profile.hpp"
+#include "render/draw/elements/ground_profile.hpp"
 
 using namespace vibra::render;
 

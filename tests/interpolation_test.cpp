@@ -9,7 +9,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/hermite.hpp"
+#include "core/math/hermite.hpp"
 #include "test_support.hpp"
 
 namespace {

@@ -13,8 +13,8 @@
 #include "render/labels/drawing_record.hpp"
 #include "render/labels/label_placer.hpp"
 #include "scene_run_support.hpp"
-#include "scenes/scene_config.hpp"
-#include "scenes/render_job.hpp"
+#include "scenes/config/scene_config.hpp"
+#include "jobs/render_job.hpp"
 #include "scenes/scene_factory.hpp"
 
 using vibra::render::Canvas;

@@ -1,13 +1,13 @@
-// The one spelling rule (core/name_spelling.hpp): a hyphen and an underscore are the same letter in the name of a scene, model, scheme, diagram or key, on the command line, in scene files and in storyboards.
+// The one spelling rule (core/input/name_spelling.hpp): a hyphen and an underscore are the same letter in the name of a scene, model, scheme, diagram or key, on the command line, in scene files and in storyboards.
 #include <catch2/catch.hpp>
 
 #include "cli_support.hpp"
 #include "core/comparison.hpp"
 #include "core/models/model.hpp"
-#include "core/name_spelling.hpp"
+#include "core/input/name_spelling.hpp"
 #include "core/scheme.hpp"
 #include "scenes/lecture/storyboard.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 
 using namespace vibra;
 

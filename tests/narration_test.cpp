@@ -17,8 +17,8 @@
 
 #include "cli_support.hpp"
 #include "stop_support.hpp"
-#include "render/encode/audio_source.hpp"
-#include "render/encode/loudness.hpp"
+#include "render/encode/audio/audio_source.hpp"
+#include "render/encode/audio/loudness.hpp"
 
 using vibra::test::check_refused;
 using vibra::test::read_file;

@@ -14,8 +14,8 @@
 
 #include "cli_support.hpp"
 #include "png_compare.hpp"
-#include "scenes/frame_clock.hpp"
-#include "scenes/pacing.hpp"
+#include "scenes/timing/frame_clock.hpp"
+#include "scenes/timing/pacing.hpp"
 
 using vibra::test::exact_text;
 using vibra::test::check_refused;

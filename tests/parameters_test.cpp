@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/error.hpp"
-#include "core/parameters.hpp"
+#include "core/input/parameters.hpp"
 
 using namespace vibra;
 

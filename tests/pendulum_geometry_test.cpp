@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "scenes/diagrams/pendulum_geometry.hpp"
+#include "scenes/diagrams/pendulum/pendulum_geometry.hpp"
 
 using namespace vibra::scenes;
 

@@ -25,7 +25,7 @@
 
 #include "core/models/model.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 
 using namespace vibra;
 using namespace vibra::scenes;

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "core/analysis/pendulum_period.hpp"
-#include "core/quadrature.hpp"
+#include "core/analysis/frequency/pendulum_period.hpp"
+#include "core/math/quadrature.hpp"
 
 using namespace vibra;
 

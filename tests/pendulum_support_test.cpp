@@ -8,7 +8,7 @@
 #include "core/models/model.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 #include "scenes/diagrams/elastic_pendulum_diagram.hpp"
-#include "scenes/diagrams/pendulum_diagram.hpp"
+#include "scenes/diagrams/pendulum/pendulum_diagram.hpp"
 #include "scenes/scene_factory.hpp"
 #include "test_support.hpp"
 

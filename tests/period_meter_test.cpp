@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "core/analysis/pendulum_period.hpp"
-#include "core/analysis/period_meter.hpp"
+#include "core/analysis/frequency/pendulum_period.hpp"
+#include "core/analysis/frequency/period_meter.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;

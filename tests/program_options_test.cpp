@@ -7,7 +7,7 @@
 #include "cli_support.hpp"
 #include "core/models/model.hpp"
 #include "core/scheme.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 
 using vibra::test::check_refused;
 using vibra::test::read_file;

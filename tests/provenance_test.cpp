@@ -1,11 +1,11 @@
-// What a page, a video's metadata and a subtitle file record of how they were made: "vibra", never the binary's path, and paths relative to where it ran, never the folders above (core/shown_path.hpp).
+// What a page, a video's metadata and a subtitle file record of how they were made: "vibra", never the binary's path, and paths relative to where it ran, never the folders above (core/input/shown_path.hpp).
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
 #include <filesystem>
 
 #include "cli_support.hpp"
-#include "core/shown_path.hpp"
+#include "core/input/shown_path.hpp"
 
 using vibra::shown_argument;
 using vibra::shown_path;

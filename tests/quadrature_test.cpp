@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/quadrature.hpp"
+#include "core/math/quadrature.hpp"
 
 using namespace vibra;
 

@@ -8,7 +8,7 @@
 #include "cli_support.hpp"
 #include "core/error.hpp"
 #include "scenes/panels/quantity_panels.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 #include "test_support.hpp"
 
 using namespace vibra;

@@ -7,9 +7,9 @@
 #include <limits>
 
 #include "render/draw/canvas.hpp"
-#include "render/draw/machine_elements.hpp"
+#include "render/draw/elements/machine_elements.hpp"
 #include "render/draw/reach_clip.hpp"
-#include "render/draw/shapes.hpp"
+#include "render/draw/elements/shapes.hpp"
 
 using vibra::render::Canvas;
 using vibra::render::Point;

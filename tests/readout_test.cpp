@@ -6,7 +6,7 @@
 
 #include "render/draw/canvas.hpp"
 #include "render/draw/text.hpp"
-#include "scenes/scene_style.hpp"
+#include "scenes/config/scene_style.hpp"
 
 using namespace vibra;
 

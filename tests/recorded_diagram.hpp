@@ -8,7 +8,7 @@
 
 #include "core/models/model.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 #include "test_support.hpp"
 
 namespace vibra::test {

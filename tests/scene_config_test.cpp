@@ -5,7 +5,7 @@
 
 #include "cli_support.hpp"
 #include "core/error.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 
 using namespace vibra;
 using namespace vibra::scenes;

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/hermite.hpp"
+#include "core/math/hermite.hpp"
 #include "core/schemes/adaptive_runge_kutta.hpp"
 
 using namespace vibra;

@@ -37,7 +37,7 @@ inline std::string str(double x) {
 
 /// u and v at time t between two samples {t, u, v, ...} of a scalar
 /// second-order ODE whose accelerations there are acc_a and acc_b, computed
-/// without core/hermite.hpp: the quintic matching u, u' = v and u'' at both
+/// without core/math/hermite.hpp: the quintic matching u, u' = v and u'' at both
 /// ends, its six coefficients solved for, and for v the cubic matching v and
 /// v' = u'' at both ends. Errors O(dt^6) in u and O(dt^4) in v: a
 /// trajectory's rows between its samples must equal these to rounding, not

@@ -4,9 +4,9 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "scenes/frame_clock.hpp"
-#include "scenes/pacing.hpp"
-#include "scenes/time_map.hpp"
+#include "scenes/timing/frame_clock.hpp"
+#include "scenes/timing/pacing.hpp"
+#include "scenes/timing/time_map.hpp"
 
 using vibra::UsageError;
 using vibra::scenes::FrameClock;

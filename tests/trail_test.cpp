@@ -8,7 +8,7 @@
 
 #include "render/draw/canvas.hpp"
 #include "render/draw/color.hpp"
-#include "render/draw/trail.hpp"
+#include "render/draw/polyline/trail.hpp"
 
 using vibra::render::Point;
 using vibra::render::Trail;

@@ -12,7 +12,7 @@
 
 #include "argb_image.hpp"
 #include "cli_support.hpp"
-#include "render/encode/yuva_converter.hpp"
+#include "render/encode/pixels/yuva_converter.hpp"
 
 using vibra::render::YuvaConverter;
 using vibra::test::run_vibra;

@@ -7,7 +7,7 @@
 #include "render/draw/canvas.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "scene_run_support.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 #include "scenes/scene_factory.hpp"
 
 TEST_CASE("the washing machine's arrows are labelled by name and formula, at resonance and off it",

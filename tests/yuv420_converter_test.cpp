@@ -12,7 +12,7 @@ extern "C" {
 #include <vector>
 
 #include "argb_image.hpp"
-#include "render/encode/yuv420_converter.hpp"
+#include "render/encode/pixels/yuv420_converter.hpp"
 
 using vibra::render::Yuv420Converter;
 using vibra::render::Yuv420Planes;

@@ -3,7 +3,7 @@
 // columns, their figures written on request.
 #include <optional>
 
-#include "app/experiments.hpp"
+#include "jobs/experiments/experiments.hpp"
 #include "bindings.hpp"
 
 namespace vibra::python {

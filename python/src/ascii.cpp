@@ -1,6 +1,6 @@
 // vibra.ascii_lines: the ASCII plotter's lines, one per time step, as they
 // are made (constant memory; T=inf runs until the consumer stops).
-#include "app/ascii_plot.hpp"
+#include "jobs/ascii_plot.hpp"
 #include "bindings.hpp"
 
 namespace vibra::python {

@@ -4,10 +4,10 @@
 #include <optional>
 
 #include "bindings.hpp"
-#include "core/input_files.hpp"
-#include "core/value_ranges.hpp"
+#include "core/input/input_files.hpp"
+#include "core/input/value_ranges.hpp"
 #include "render/output/stop_signal.hpp"
-#include "scenes/lecture/lecture_job.hpp"
+#include "jobs/lecture_job.hpp"
 
 namespace vibra::python {
 

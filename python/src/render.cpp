@@ -5,10 +5,10 @@
 
 #include "bindings.hpp"
 #include "core/error.hpp"
-#include "core/input_files.hpp"
-#include "core/value_ranges.hpp"
+#include "core/input/input_files.hpp"
+#include "core/input/value_ranges.hpp"
 #include "render/output/stop_signal.hpp"
-#include "scenes/render_job.hpp"
+#include "jobs/render_job.hpp"
 
 namespace vibra::python {
 

@@ -7,7 +7,7 @@
 #include "bindings.hpp"
 #include "core/error.hpp"
 #include "core/models/model.hpp"
-#include "core/value_ranges.hpp"
+#include "core/input/value_ranges.hpp"
 #include "render/encode/huge_pages.hpp"
 
 namespace vibra::python {

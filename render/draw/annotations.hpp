@@ -2,7 +2,7 @@
 #pragma once
 #include <string>
 
-#include "render/draw/shapes.hpp"
+#include "render/draw/elements/shapes.hpp"
 #include "render/draw/text.hpp"
 
 namespace vibra::render {

@@ -13,7 +13,7 @@ struct SubtitleCue {
 
 /// The cues as a WebVTT file ("WEBVTT", then one numbered cue each, times
 /// HH:MM:SS.mmm); the header's NOTE says vibra wrote it from `storyboard`
-/// (as a record shows it: core/shown_path.hpp), which is how a later run
+/// (as a record shows it: core/input/shown_path.hpp), which is how a later run
 /// knows it may replace the file.
 std::string web_vtt(const std::vector<SubtitleCue>&, const std::string& storyboard);
 

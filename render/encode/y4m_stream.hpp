@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "render/draw/damage.hpp"
-#include "render/encode/yuv420_converter.hpp"
+#include "render/encode/pixels/yuv420_converter.hpp"
 
 namespace vibra::render {
 

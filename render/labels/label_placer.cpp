@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "render/draw/contrast.hpp"
-#include "render/draw/shapes.hpp"
+#include "render/draw/elements/shapes.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "render/labels/occupancy_grid.hpp"
 #include "render/output/stop_signal.hpp"

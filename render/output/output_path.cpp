@@ -6,7 +6,7 @@
 #include <cctype>
 #include <system_error>
 
-#include "core/input_files.hpp"
+#include "core/input/input_files.hpp"
 #include "render/output/created_directory.hpp"
 #include "render/output/output_error.hpp"
 

@@ -33,7 +33,7 @@ inline constexpr const char* kNeedsAFile = "this output needs a file: give a fil
 /// - A symbolic link is followed to its final target, which gets the output
 ///   (through a temporary beside it); the link stays. A loop is refused.
 /// - A folder where a file is expected is refused, naming it.
-/// - A file this run reads (core/input_files.hpp) is refused, naming both.
+/// - A file this run reads (core/input/input_files.hpp) is refused, naming both.
 /// - Missing parent folders are allowed when they can be made (TemporaryFile
 ///   makes them, and removes them again if the output is not completed); a
 ///   file in the way or an unwritable folder is refused.

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <optional>
 
-#include "core/quoted_value.hpp"
+#include "core/input/quoted_value.hpp"
 #include "core/stop_flag.hpp"
 #include "render/output/file_listing.hpp"
 #include "render/output/output_error.hpp"

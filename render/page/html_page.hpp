@@ -26,7 +26,7 @@ struct PageMedia {
   /// Slow motion and pauses: from `video` seconds on, simulated time runs at
   /// `rate` per second of video from `simulated`. Empty: frame k shows
   /// k * frame_interval. The page maps the video's time through the same
-  /// pieces as the render (scenes/time_map.hpp).
+  /// pieces as the render (scenes/timing/time_map.hpp).
   struct TimePiece {
     double video = 0, simulated = 0, rate = 0;
   };

@@ -15,7 +15,7 @@
   // time to microseconds, just below the frame's timestamp): aim 10 us in.
   const frameTime = k => Math.min(lastFrame, Math.max(0, k)) / clock.fps + 1e-5;
   // Slow motion and pauses: pieces [video, simulated, rate], evaluated as
-  // the render evaluates them (scenes/time_map.cpp), so the cursor shows
+  // the render evaluates them (scenes/timing/time_map.cpp), so the cursor shows
   // each frame's own simulated time.
   const map = clock && clock.map;
   const mapped = v => {

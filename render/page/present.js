@@ -27,7 +27,7 @@
   });
 
   // A slide's own clock: simulated time at video time s, as the render
-  // evaluates it (scenes/time_map.cpp): steady, or through the pacing pieces.
+  // evaluates it (scenes/timing/time_map.cpp): steady, or through the pacing pieces.
   const simulatedTime = (shot, s) => {
     const k = Math.min(shot.frames - 1, Math.max(0, Math.floor(s * data.fps + 1e-3)));
     const map = shot.clock.map, v = k / data.fps;

@@ -8,7 +8,7 @@
 #include <cctype>
 #include <cmath>
 
-#include "render/draw/shapes.hpp"
+#include "render/draw/elements/shapes.hpp"
 #include "render/draw/text.hpp"
 #include "render/output/output_error.hpp"
 #include "render/output/temporary_file.hpp"

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "render/draw/color.hpp"
-#include "render/draw/decimated_path.hpp"
+#include "render/draw/polyline/decimated_path.hpp"
 #include "render/plot/column_envelope.hpp"
 
 namespace vibra::render {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "render/draw/canvas.hpp"
-#include "render/draw/shapes.hpp"
+#include "render/draw/elements/shapes.hpp"
 #include "render/plot/column_envelope.hpp"
 
 namespace vibra::render {

@@ -7,8 +7,8 @@
 #include <utility>
 
 #include "core/error.hpp"
-#include "core/parameters.hpp"
-#include "core/quoted_value.hpp"
+#include "core/input/parameters.hpp"
+#include "core/input/quoted_value.hpp"
 
 namespace vibra::render {
 

@@ -7,7 +7,7 @@
 
 #include "render/draw/annotations.hpp"
 #include "render/draw/contrast.hpp"
-#include "render/draw/machine_elements.hpp"
+#include "render/draw/elements/machine_elements.hpp"
 #include "render/draw/text.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 

@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "scenes/diagrams/diagram.hpp"
-#include "scenes/diagrams/drawn_force.hpp"
-#include "scenes/scene_style.hpp"
+#include "scenes/diagrams/forces/drawn_force.hpp"
+#include "scenes/config/scene_style.hpp"
 
 namespace vibra::scenes {
 

@@ -7,8 +7,8 @@
 
 #include "core/models/model.hpp"
 #include "render/draw/annotations.hpp"
-#include "render/draw/ground_profile.hpp"
-#include "render/draw/machine_elements.hpp"
+#include "render/draw/elements/ground_profile.hpp"
+#include "render/draw/elements/machine_elements.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 
 namespace vibra::scenes {

@@ -3,12 +3,12 @@
 #include <memory>
 #include <optional>
 
-#include "core/road_profile.hpp"
-#include "render/draw/ground_profile.hpp"
+#include "core/models/road_profile.hpp"
+#include "render/draw/elements/ground_profile.hpp"
 #include "scenes/diagrams/diagram.hpp"
-#include "scenes/diagrams/drawn_force.hpp"
-#include "scenes/diagrams/force_scale.hpp"
-#include "scenes/scene_style.hpp"
+#include "scenes/diagrams/forces/drawn_force.hpp"
+#include "scenes/diagrams/forces/force_scale.hpp"
+#include "scenes/config/scene_style.hpp"
 
 namespace vibra::scenes {
 

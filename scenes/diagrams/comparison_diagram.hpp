@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "scenes/diagrams/diagram.hpp"
-#include "scenes/member_columns.hpp"
+#include "scenes/overlays/member_columns.hpp"
 
 namespace vibra::scenes {
 

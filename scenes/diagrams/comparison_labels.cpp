@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include "scenes/run_caption.hpp"
+#include "scenes/overlays/run_caption.hpp"
 
 namespace vibra::scenes {
 

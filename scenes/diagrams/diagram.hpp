@@ -10,9 +10,9 @@
 
 #include "core/comparison.hpp"
 #include "render/draw/canvas.hpp"
-#include "scenes/diagrams/force_key.hpp"
+#include "scenes/diagrams/forces/force_key.hpp"
 #include "scenes/panels/series_panel.hpp"
-#include "scenes/scene_style.hpp"
+#include "scenes/config/scene_style.hpp"
 
 namespace vibra::scenes {
 

@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "core/parameters.hpp"
+#include "core/input/parameters.hpp"
 #include "core/trajectory.hpp"
 #include "scenes/diagrams/diagram.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 
 namespace vibra::scenes {
 

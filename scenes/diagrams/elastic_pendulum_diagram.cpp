@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "render/draw/annotations.hpp"
-#include "render/draw/machine_elements.hpp"
-#include "scenes/diagrams/broken_force.hpp"
-#include "scenes/diagrams/drawn_force.hpp"
+#include "render/draw/elements/machine_elements.hpp"
+#include "scenes/diagrams/forces/broken_force.hpp"
+#include "scenes/diagrams/forces/drawn_force.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 
 namespace vibra::scenes {

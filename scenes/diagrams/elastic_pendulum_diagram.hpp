@@ -3,11 +3,11 @@
 #include <array>
 #include <cmath>
 
-#include "render/draw/trail.hpp"
+#include "render/draw/polyline/trail.hpp"
 #include "scenes/diagrams/diagram.hpp"
-#include "scenes/diagrams/force_scale.hpp"
-#include "scenes/diagrams/pendulum_support.hpp"
-#include "scenes/scene_style.hpp"
+#include "scenes/diagrams/forces/force_scale.hpp"
+#include "scenes/diagrams/pendulum/pendulum_support.hpp"
+#include "scenes/config/scene_style.hpp"
 
 namespace vibra::scenes {
 

@@ -2,9 +2,9 @@
 #include "scenes/diagrams/orbit_diagram.hpp"
 
 #include "render/draw/annotations.hpp"
-#include "render/draw/shapes.hpp"
+#include "render/draw/elements/shapes.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 
 namespace vibra::scenes {
 

@@ -3,10 +3,10 @@
 #include <array>
 #include <cmath>
 
-#include "render/draw/trail.hpp"
+#include "render/draw/polyline/trail.hpp"
 #include "scenes/diagrams/diagram.hpp"
-#include "scenes/diagrams/force_scale.hpp"
-#include "scenes/scene_style.hpp"
+#include "scenes/diagrams/forces/force_scale.hpp"
+#include "scenes/config/scene_style.hpp"
 
 namespace vibra::scenes {
 

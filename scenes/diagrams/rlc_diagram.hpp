@@ -1,8 +1,8 @@
 // The series RLC circuit's diagram (section 1.12.11): source, resistor, inductor, capacitor, current and charge.
 #pragma once
-#include "render/draw/circuit_elements.hpp"
+#include "render/draw/elements/circuit_elements.hpp"
 #include "scenes/diagrams/diagram.hpp"
-#include "scenes/scene_style.hpp"
+#include "scenes/config/scene_style.hpp"
 
 namespace vibra::scenes {
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "render/draw/annotations.hpp"
-#include "render/draw/machine_elements.hpp"
+#include "render/draw/elements/machine_elements.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 #include "scenes/panels/plot_panels.hpp"
 

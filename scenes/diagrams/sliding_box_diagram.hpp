@@ -5,10 +5,10 @@
 
 #include "core/models/sliding_box_law.hpp"
 #include "scenes/diagrams/diagram.hpp"
-#include "scenes/diagrams/drawn_force.hpp"
-#include "scenes/diagrams/force_scale.hpp"
-#include "scenes/horizontal_layout.hpp"
-#include "scenes/scene_style.hpp"
+#include "scenes/diagrams/forces/drawn_force.hpp"
+#include "scenes/diagrams/forces/force_scale.hpp"
+#include "scenes/overlays/horizontal_layout.hpp"
+#include "scenes/config/scene_style.hpp"
 
 namespace vibra::scenes {
 

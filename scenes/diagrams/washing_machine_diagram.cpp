@@ -6,8 +6,8 @@
 
 #include "core/models/model.hpp"
 #include "render/draw/annotations.hpp"
-#include "render/draw/machine_elements.hpp"
-#include "scenes/diagrams/broken_force.hpp"
+#include "render/draw/elements/machine_elements.hpp"
+#include "scenes/diagrams/forces/broken_force.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
 
 namespace vibra::scenes {

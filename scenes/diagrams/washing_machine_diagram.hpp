@@ -3,8 +3,8 @@
 #include <optional>
 
 #include "scenes/diagrams/diagram.hpp"
-#include "scenes/diagrams/force_scale.hpp"
-#include "scenes/scene_style.hpp"
+#include "scenes/diagrams/forces/force_scale.hpp"
+#include "scenes/config/scene_style.hpp"
 
 namespace vibra::scenes {
 

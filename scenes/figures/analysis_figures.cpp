@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "core/analysis/fd_accuracy.hpp"
-#include "core/analysis/numerical_frequency.hpp"
+#include "core/analysis/frequency/numerical_frequency.hpp"
 
 namespace vibra::scenes {
 

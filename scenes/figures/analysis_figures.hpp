@@ -10,7 +10,7 @@
 #include "core/analysis/line_fit.hpp"
 #include "core/analysis/model_convergence.hpp"
 #include "core/analysis/orbit_error.hpp"
-#include "core/analysis/period_meter.hpp"
+#include "core/analysis/frequency/period_meter.hpp"
 #include "render/plot/figure.hpp"
 
 namespace vibra::scenes {

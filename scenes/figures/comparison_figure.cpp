@@ -11,7 +11,7 @@
 #include "scenes/figures/friction_panel.hpp"
 #include "scenes/panels/plot_panels.hpp"
 #include "scenes/panels/rows_inside_step.hpp"
-#include "scenes/run_caption.hpp"
+#include "scenes/overlays/run_caption.hpp"
 
 namespace vibra::scenes {
 

@@ -4,12 +4,12 @@
 #include <vector>
 
 #include "scenes/diagrams/diagram.hpp"
-#include "scenes/frame_heading.hpp"
-#include "scenes/note_callouts.hpp"
+#include "scenes/overlays/frame_heading.hpp"
+#include "scenes/overlays/note_callouts.hpp"
 #include "scenes/panels/series_panel.hpp"
-#include "scenes/run_legend.hpp"
+#include "scenes/overlays/run_legend.hpp"
 #include "scenes/scene.hpp"
-#include "scenes/scene_style.hpp"
+#include "scenes/config/scene_style.hpp"
 #include "scenes/static_layer.hpp"
 
 namespace vibra::scenes {

@@ -9,8 +9,8 @@
 #include <thread>
 
 #include "core/error.hpp"
-#include "core/quoted_value.hpp"
-#include "render/encode/audio_source.hpp"
+#include "core/input/quoted_value.hpp"
+#include "render/encode/audio/audio_source.hpp"
 #include "render/output/stop_signal.hpp"
 
 namespace vibra::scenes {

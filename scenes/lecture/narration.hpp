@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "render/encode/audio_clip.hpp"
+#include "render/encode/audio/audio_clip.hpp"
 #include "render/encode/subtitle_cue.hpp"
 #include "scenes/lecture/storyboard.hpp"
 

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/quoted_value.hpp"
+#include "core/input/quoted_value.hpp"
 
 namespace vibra::scenes {
 

@@ -4,9 +4,9 @@
 #include <filesystem>
 
 #include "core/error.hpp"
-#include "render/encode/audio_source.hpp"
+#include "render/encode/audio/audio_source.hpp"
 #include "render/typeset/formula_text.hpp"
-#include "scenes/note.hpp"
+#include "scenes/overlays/note.hpp"
 
 namespace fs = std::filesystem;
 

@@ -14,14 +14,14 @@
 #include <sstream>
 
 #include "core/error.hpp"
-#include "core/input_files.hpp"
-#include "core/parameters.hpp"
-#include "core/quoted_value.hpp"
+#include "core/input/input_files.hpp"
+#include "core/input/parameters.hpp"
+#include "core/input/quoted_value.hpp"
 #include "render/typeset/formula_parser.hpp"
 #include "render/typeset/formula_text.hpp"
-#include "scenes/note.hpp"
+#include "scenes/overlays/note.hpp"
 #include "scenes/lecture/speech_keys.hpp"
-#include "scenes/scene_table.hpp"
+#include "scenes/config/scene_table.hpp"
 
 namespace fs = std::filesystem;
 

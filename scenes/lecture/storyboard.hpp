@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "scenes/lecture/shot_ending.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 
 namespace vibra::scenes {
 

@@ -5,7 +5,7 @@
 
 #include "core/comparison_trajectory.hpp"
 #include "render/draw/color.hpp"
-#include "scenes/member_columns.hpp"
+#include "scenes/overlays/member_columns.hpp"
 #include "scenes/panels/page_plot_collector.hpp"
 
 namespace vibra::scenes {

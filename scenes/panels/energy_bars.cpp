@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "render/draw/shapes.hpp"
+#include "render/draw/elements/shapes.hpp"
 #include "render/draw/text.hpp"
 #include "render/plot/plot_panel.hpp"
 

@@ -2,7 +2,7 @@
 #pragma once
 #include <span>
 
-#include "core/analysis/period_meter.hpp"
+#include "core/analysis/frequency/period_meter.hpp"
 
 namespace vibra::scenes {
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/draw/simplified_polyline.hpp"
+#include "render/draw/polyline/simplified_polyline.hpp"
 
 namespace vibra::scenes {
 

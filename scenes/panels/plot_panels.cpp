@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "core/parameters.hpp"
+#include "core/input/parameters.hpp"
 
 namespace vibra::scenes {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/draw/growing_polyline.hpp"
+#include "render/draw/polyline/growing_polyline.hpp"
 #include "render/plot/column_envelope.hpp"
 #include "render/plot/plot_panel.hpp"
 #include "render/plot/rolling_envelope.hpp"

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "core/name_spelling.hpp"
+#include "core/input/name_spelling.hpp"
 
 namespace vibra::cli {
 

@@ -11,7 +11,7 @@ namespace vibra::cli {
 ///    exactly `vibra X --help`;
 ///  - command words are spelled as the commands are listed, and long option
 ///    names with hyphens: a hyphen and an underscore are one letter
-///    (core/name_spelling.hpp), so `fd_accuracy` is `fd-accuracy` and
+///    (core/input/name_spelling.hpp), so `fd_accuracy` is `fd-accuracy` and
 ///    `--energy_bars` is `--energy-bars`. Values are never changed; nothing
 ///    after a bare `--` is.
 std::vector<std::string> command_arguments(const CLI::App& app, int argc, const char* const* argv);

@@ -5,9 +5,9 @@
 #include <map>
 
 #include "core/models/model.hpp"
-#include "core/name_spelling.hpp"
+#include "core/input/name_spelling.hpp"
 #include "core/scheme.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/config/scene_config.hpp"
 
 namespace vibra::cli {
 

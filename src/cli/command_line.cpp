@@ -1,7 +1,7 @@
 // The command line vibra was started with, kept for pages and metadata to show.
 #include "cli/command_line.hpp"
 
-#include "core/shown_path.hpp"
+#include "core/input/shown_path.hpp"
 
 namespace vibra::cli {
 
@@ -22,7 +22,7 @@ std::string shell_quoted(const std::string& argument) {
 }
 
 void remember_command_line(int argc, char** argv) {
-  // "vibra", not the path it was run by; paths relative to here, not the folders above (core/shown_path.hpp).
+  // "vibra", not the path it was run by; paths relative to here, not the folders above (core/input/shown_path.hpp).
   std::string& line = stored();
   line = "vibra";
   for (int i = 1; i < argc; ++i) line += ' ' + shell_quoted(shown_argument(argv[i]));

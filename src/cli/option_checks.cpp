@@ -2,8 +2,8 @@
 #include "cli/option_checks.hpp"
 
 #include "core/error.hpp"
-#include "core/expression.hpp"
-#include "core/value_ranges.hpp"
+#include "core/input/expression.hpp"
+#include "core/input/value_ranges.hpp"
 
 namespace vibra::cli {
 

@@ -7,7 +7,7 @@ namespace vibra::cli {
 
 /// A validator for a numeric option: the value is read as --set values are
 /// (an expression) and must lie in the option's row of the one table of
-/// ranges (core/value_ranges.hpp); the error says the range and the fix.
+/// ranges (core/input/value_ranges.hpp); the error says the range and the fix.
 CLI::Validator ranged(const std::string& option);
 
 /// Gives every option of `app` and of its subcommands that takes a value a

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "cli/build_version.hpp"
-#include "cli/man_page.hpp"
-#include "cli/shell_completion.hpp"
+#include "cli/manuals/man_page.hpp"
+#include "cli/manuals/shell_completion.hpp"
 #include "render/output/standard_output.hpp"
 
 namespace vibra::cli {

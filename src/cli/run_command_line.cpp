@@ -12,7 +12,7 @@
 #include "cli/option_checks.hpp"
 #include "cli/program_options.hpp"
 #include "core/error.hpp"
-#include "core/quoted_value.hpp"
+#include "core/input/quoted_value.hpp"
 #include "core/time_mesh.hpp"
 #include "render/output/standard_output.hpp"
 #include "render/output/stop_signal.hpp"

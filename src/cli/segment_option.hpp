@@ -3,7 +3,7 @@
 #include <functional>
 #include <string>
 
-#include "render/encode/frame_segment.hpp"
+#include "render/encode/join/frame_segment.hpp"
 
 namespace vibra::cli {
 

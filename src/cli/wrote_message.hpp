@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/quoted_value.hpp"
+#include "core/input/quoted_value.hpp"
 
 namespace vibra::cli {
 

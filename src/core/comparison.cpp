@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "core/name_spelling.hpp"
+#include "core/input/name_spelling.hpp"
 
 namespace vibra {
 

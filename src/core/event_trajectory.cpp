@@ -5,8 +5,8 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "core/hermite.hpp"
-#include "core/linear_between.hpp"
+#include "core/math/hermite.hpp"
+#include "core/math/linear_between.hpp"
 #include "core/solution_stream.hpp"
 
 namespace vibra {
@@ -114,7 +114,7 @@ void EventTrajectory::row_at(double t, std::span<double> out) const {
     const Knot& b = knots_[i];
     if (t > b.s.t && i + 1 < knots_.size()) continue;
     if (b.s.t <= a.s.t) continue;  // the jump at an event
-    // A fixed-step scheme computed nothing between its knots: straight lines (core/linear_between.hpp).
+    // A fixed-step scheme computed nothing between its knots: straight lines (core/math/linear_between.hpp).
     if (!info_.mesh.adaptive()) return to_row_(linear_between<1>(a.s, b.s, t), out);
     return to_row_(hermite_between<1>(a.s, a.acceleration, b.s, b.acceleration, t), out);
   }

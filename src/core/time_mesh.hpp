@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "core/parameters.hpp"
+#include "core/input/parameters.hpp"
 #include "core/scheme.hpp"
 
 namespace vibra {

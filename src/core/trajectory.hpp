@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "core/energy_parts.hpp"
-#include "core/hermite.hpp"
-#include "core/linear_between.hpp"
+#include "core/math/hermite.hpp"
+#include "core/math/linear_between.hpp"
 #include "core/solution_stream.hpp"
 #include "core/time_mesh.hpp"
 
@@ -86,8 +86,8 @@ class Trajectory {
   virtual void row(std::span<double> out) const = 0;
   /// The columns at time t between the previous and the current sample: for
   /// a fixed-step scheme the mesh values joined by straight lines
-  /// (core/linear_between.hpp); for an adaptive one its dense output where
-  /// it has one (dopri5), else quintic Hermite interpolation (core/hermite.hpp).
+  /// (core/math/linear_between.hpp); for an adaptive one its dense output where
+  /// it has one (dopri5), else quintic Hermite interpolation (core/math/hermite.hpp).
   virtual void row_at(double t, std::span<double> out) const = 0;
   /// Whether rows between samples leave the straight line between them (an
   /// adaptive scheme's dense output, an impact inside a step): only then

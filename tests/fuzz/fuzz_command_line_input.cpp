@@ -20,7 +20,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/run_command_line.hpp"
-#include "core/input_files.hpp"
+#include "core/input/input_files.hpp"
 #include "core/stop_flag.hpp"
 #include "fuzz_inputs.hpp"
 

@@ -8,17 +8,17 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "core/expression.hpp"
+#include "core/input/expression.hpp"
 #include "core/models/model.hpp"
 #include "render/typeset/formula_draw.hpp"
 #include "render/typeset/formula_layout.hpp"
 #include "render/typeset/formula_parser.hpp"
 #include "render/typeset/formula_text.hpp"
-#include "scenes/frame_clock.hpp"
+#include "scenes/timing/frame_clock.hpp"
 #include "scenes/lecture/storyboard.hpp"
-#include "scenes/note.hpp"
-#include "scenes/note_room.hpp"
-#include "scenes/scene_config.hpp"
+#include "scenes/overlays/note.hpp"
+#include "scenes/overlays/note_room.hpp"
+#include "scenes/config/scene_config.hpp"
 
 namespace vibra::fuzz {
 namespace {

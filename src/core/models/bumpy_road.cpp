@@ -4,8 +4,8 @@
 
 #include "core/error.hpp"
 #include "core/models/model.hpp"
-#include "core/quoted_value.hpp"
-#include "core/road_profile.hpp"
+#include "core/input/quoted_value.hpp"
+#include "core/models/road_profile.hpp"
 
 namespace vibra {
 

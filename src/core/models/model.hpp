@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/parameters.hpp"
+#include "core/input/parameters.hpp"
 #include "core/time_mesh.hpp"
 #include "core/trajectory.hpp"
 

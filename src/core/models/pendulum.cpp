@@ -1,7 +1,7 @@
 // The pendulum and physical-pendulum models: theta'' + alpha |theta'| theta' + sin(theta) = 0, scaled.
 #include <cmath>
 
-#include "core/analysis/pendulum_period.hpp"
+#include "core/analysis/frequency/pendulum_period.hpp"
 #include "core/error.hpp"
 #include "core/models/model.hpp"
 

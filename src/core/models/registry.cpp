@@ -1,6 +1,6 @@
 // The model registry: all_models() and lookup by name with a suggestion for a misspelt one.
 #include "core/error.hpp"
-#include "core/name_spelling.hpp"
+#include "core/input/name_spelling.hpp"
 #include "core/models/model.hpp"
 
 namespace vibra {

@@ -6,7 +6,7 @@
 #include "core/error.hpp"
 #include "core/models/model.hpp"
 #include "core/models/vibration_law.hpp"
-#include "core/quadrature.hpp"
+#include "core/math/quadrature.hpp"
 
 namespace vibra {
 

@@ -5,8 +5,8 @@
 #include <memory>
 #include <optional>
 
-#include "core/expression.hpp"
-#include "core/parameters.hpp"
+#include "core/input/expression.hpp"
+#include "core/input/parameters.hpp"
 #include "core/second_order_system.hpp"
 
 namespace vibra {

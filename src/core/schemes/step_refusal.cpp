@@ -4,7 +4,7 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "core/quoted_value.hpp"
+#include "core/input/quoted_value.hpp"
 #include "core/schemes/step_controller.hpp"
 
 namespace vibra {
