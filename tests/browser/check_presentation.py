@@ -27,7 +27,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from check_lecture_page import Chromium, check, check_no_problems, find_chromium, run, verdict  # noqa: E402
 
-# The storyboard the C++ tests use too (tests/lecture_present_test.cpp): 10 fps, shots of 1, 2, 3 and 0.5 s;
+# The storyboard the C++ tests use too (tests/scenes/lecture/lecture_present_test.cpp): 10 fps, shots of 1, 2, 3 and 0.5 s;
 # a card that holds, a scene that goes on by itself, one that plays 1 s once and loops the rest, a card that loops.
 STORY = Path(__file__).resolve().parent / "present_story.toml"
 

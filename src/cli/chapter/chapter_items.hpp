@@ -9,7 +9,7 @@ enum class ItemKind { figure, exercise };
 
 /// One figure (1.1-1.22) or exercise (1.1-1.28) of chapter 1 of Linge &
 /// Langtangen, with the vibra commands that answer it (docs/exercises.md
-/// lists the same commands; tests/chapter_test.cpp checks that they agree).
+/// lists the same commands; tests/cli/chapter_test.cpp checks that they agree).
 struct ChapterItem {
   ItemKind kind;
   std::string number;  ///< "1.12"
