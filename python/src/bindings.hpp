@@ -22,6 +22,7 @@ void bind_ascii(py::module_&);
 void bind_render(py::module_&);
 void bind_lecture(py::module_&);
 void bind_analyses(py::module_&);
+void bind_plot(py::module_&);
 
 /// For the life of a call into vibra's long work (render, lecture), made
 /// with the GIL held before any work: vibra's SIGINT and SIGTERM handlers

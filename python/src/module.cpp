@@ -12,4 +12,5 @@ PYBIND11_MODULE(_vibra, m) {
   vibra::python::bind_render(m);
   vibra::python::bind_lecture(m);
   vibra::python::bind_analyses(m);
+  vibra::python::bind_plot(m);
 }

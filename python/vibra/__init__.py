@@ -15,12 +15,12 @@ that blows up raises vibra.SolutionError (with .step and .t).
 
 from ._vibra import SolutionError
 from ._solution import Solution, models, solve, stream
-from ._media import Image, Video, lecture, render
+from ._media import Image, Video, lecture, plot, render
 from ._ascii import ascii_lines
 from ._analyses import Table, amplitude, convergence, empirical, energy, frequency, orbit
 
 __all__ = [
     "Image", "Solution", "SolutionError", "Table", "Video",
     "amplitude", "ascii_lines", "convergence", "empirical", "energy", "frequency",
-    "lecture", "models", "orbit", "render", "solve", "stream",
+    "lecture", "models", "orbit", "plot", "render", "solve", "stream",
 ]

@@ -153,3 +153,24 @@ def lecture(storyboard, output=None, *, shot=None, codec="", quality="medium", c
     if Path(output).suffix.lower() in VIDEO_TYPES:
         return Video(output)
     return Path(output)
+
+
+def plot(model="pendulum", out=None, *, panels=None, compare=None, annotate=None, size=None, transparent=False,
+         **keys):
+    """Draws a model's run as `vibra plot` does: a figure (out="name.png",
+    .svg or .pdf; default MODEL.png) of its panels, or out="name.html" a page
+    of linked, zoomable plots (returned as a Path). panels="u,exact" (or a
+    list) chooses the panels; compare={"scheme": ["forward-euler", "rk4"]}
+    (or "scheme=forward-euler,rk4") draws one run per value together;
+    annotate="mesh" marks every step; size=(1280, 720) or "1280x720";
+    transparent=True draws no background. Other keywords are the model's
+    keys (Theta=40, alpha=0.8, T=20). Returns an Image, or the page's Path.
+    """
+    model = path_text("plot", "model", model)
+    if out is None:
+        out = model + ".png"
+    out = path_text("plot", "out", out)
+    panels = ",".join(panels) if isinstance(panels, (list, tuple)) else (panels or "")
+    native("plot", output="out")(model, assignments(keys), out, panels, "" if size is None else size_text(size),
+                                 comparison_text(compare) or "", annotate or "", transparent)
+    return Path(out) if Path(out).suffix.lower() == ".html" else Image(out)

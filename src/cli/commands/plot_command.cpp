@@ -1,29 +1,14 @@
 // Registers vibra plot: a static figure of a run's panels.
-#include <algorithm>
-#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "jobs/list_option.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/manuals/model_help.hpp"
 #include "cli/wrote_message.hpp"
 #include "core/error.hpp"
-#include "core/error_column.hpp"
-#include "render/encode/output_kind.hpp"
-#include "render/output/output_path.hpp"
-#include "render/output/stop_signal.hpp"
-#include "render/page/html_page.hpp"
-#include "render/plot/figure.hpp"
-#include "scenes/diagrams/comparison_labels.hpp"
-#include "scenes/overlays/annotations.hpp"
-#include "scenes/figures/comparison_figure.hpp"
-#include "scenes/figures/trajectory_figure.hpp"
-#include "scenes/panels/page_plot_collector.hpp"
-#include "scenes/overlays/run_caption.hpp"
-#include "scenes/config/scene_config.hpp"
+#include "jobs/plot_job.hpp"
 
 namespace vibra::cli {
 
@@ -66,95 +51,15 @@ constexpr const char* kExamples =
     "      --annotate mesh -o mesh.png                           # Fig 1.12\n"
     "  vibra plot pendulum --set periods=200 -o pendulum.html   # interactive, zoomable (time panels only)\n";
 
-int figure_height(size_t panels) { return panels > 2 ? 960 : 720; }
-
-render::Figure comparison_plot(const PlotOptions& o, const Parameters& parameters) {
-  if (o.compare.size() > 1) throw UsageError("--compare is given " + std::to_string(o.compare.size()) +
-                                             " times: compare one key at a time, e.g. --compare dt=0.1,0.05");
-  Comparison comparison(find_model(o.model), parameters, parse_comparison(o.compare[0]));
-  const TrajectoryInfo& info = comparison.trajectory(0).info();
-  const std::vector<std::string> panels =
-      o.panels.empty() ? scenes::default_comparison_panels(info) : app::word_list("--panels", o.panels);
-  int width = 1280, height = figure_height(panels.size());
-  if (!o.size.empty()) scenes::parse_size(o.size, width, height);
-  return scenes::comparison_figure(comparison, panels, width, height, scenes::comparison_caption(o.model, comparison));
-}
-
-/// `--panels error` plots a column the model does not have: u - u_exact.
-bool wants_error(const std::vector<std::string>& panels) {
-  return std::find(panels.begin(), panels.end(), "error") != panels.end();
-}
-
-/// `--annotate LIST`: whether to mark the mesh (the one annotation plot draws).
-bool marks_mesh(const PlotOptions& o) {
-  if (o.annotate.empty()) return false;
-  for (const auto& name : app::word_list("--annotate", o.annotate)) scenes::check_annotation_name(name, "plot");
-  if (!o.compare.empty()) throw UsageError("--annotate mesh marks one run's steps: drop --compare, or --annotate");
-  return true;
-}
-
-render::Figure trajectory_plot(const PlotOptions& o, const Parameters& parameters, bool mark_mesh) {
-  std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
-  const std::vector<std::string> panels =
-      o.panels.empty() ? scenes::default_plot_panels(trajectory->info()) : app::word_list("--panels", o.panels);
-  if (wants_error(panels)) trajectory = with_error_column(std::move(trajectory));
-  int width = 1280, height = figure_height(panels.size());
-  if (!o.size.empty()) scenes::parse_size(o.size, width, height);
-  const std::string title = scenes::run_caption(o.model, parameters, trajectory->info().mesh);
-  return scenes::trajectory_figure(*trajectory, panels, width, height, title, mark_mesh);
-}
-
-/// FIGURE.html: the run's time series as a page of linked, zoomable plots.
-void write_figure_page(const PlotOptions& o, const std::filesystem::path& file) {
-  if (!o.size.empty())
-    throw UsageError("--size sets a picture's size, and a page's plots fit the browser window: drop --size");
-  const Parameters parameters = model_settings(o.model, o.settings);
-  std::unique_ptr<Trajectory> trajectory = find_model(o.model).build(parameters);
-  const std::vector<std::string> panels =
-      o.panels.empty() ? scenes::page_panel_names(trajectory->info()) : app::word_list("--panels", o.panels);
-  if (wants_error(panels)) trajectory = with_error_column(std::move(trajectory));
-  const TrajectoryInfo& info = trajectory->info();
-  scenes::PagePlotCollector collector(info, panels, o.model);
-  std::vector<double> row(trajectory->width());
-  do {
-    trajectory->row(row);
-    collector.observe(*trajectory, row);
-    if ((trajectory->index() & 0xffff) == 0) render::throw_if_stop_requested();
-  } while (trajectory->advance());
-  render::LecturePage page;
-  page.title = "vibra: " + o.model;
-  page.panels = collector.take_panels();
-  page.facts = scenes::run_facts(o.model, parameters, info.mesh);
-  page.command_line = command_line();
-  render::write_text_file(file, render::lecture_page_html(page));
-}
-
-void run_plot(const PlotOptions& o) {
+void run_plot_command(const PlotOptions& o) {
   if (o.help || o.model.empty()) {
     print_model_help(std::string(kUsage) + kExamples + "\n", o.model);
     if (!o.help) throw UsageError("vibra plot needs a MODEL, e.g. vibra plot pendulum -o pendulum.png");
     return;
   }
-  if (o.output.empty())
-    throw UsageError("vibra plot needs an output file: add -o FILE.png, FILE.svg, FILE.pdf or FILE.html");
-  const bool page = render::classify_output(o.output) == render::OutputKind::page;
-  if (page && !o.annotate.empty())
-    throw UsageError("--annotate marks a picture; a page's plots are zoomable: give -o FILE.png, .svg or .pdf");
-  if (page && o.transparent)
-    throw UsageError("--transparent is for pictures; a page has no background to drop: give -o FILE.png, .svg or .pdf");
-  if (!page) render::require_picture_extension(o.output);
-  const render::OutputTarget target = render::resolve_output(o.output);
-  if (page) {
-    write_figure_page(o, target.file);
-  } else {
-    const Parameters parameters = model_settings(o.model, o.settings);
-    const bool mark_mesh = marks_mesh(o);
-    render::Figure figure =
-        o.compare.empty() ? trajectory_plot(o, parameters, mark_mesh) : comparison_plot(o, parameters);
-    figure.set_transparent(o.transparent);
-    figure.write(target.file);
-  }
-  say_wrote(o.quiet, target.shown());
+  const app::PlotRequest request{o.model, o.settings, o.output,      o.panels,     o.size,
+                                 o.compare, o.annotate, o.transparent, command_line()};
+  say_wrote(o.quiet, app::run_plot(request));
 }
 }  // namespace
 
@@ -177,7 +82,7 @@ void add_plot_command(CLI::App& app) {
   cmd->add_flag("--transparent", o->transparent, "No background: PNG with alpha, SVG/PDF without the paper rectangle");
   add_allow_unstable_flag(*cmd);
   cmd->add_flag("-q,--quiet", o->quiet, "No message on stderr after writing");
-  cmd->callback([o] { run_plot(*o); });
+  cmd->callback([o] { run_plot_command(*o); });
 }
 
 }  // namespace vibra::cli
