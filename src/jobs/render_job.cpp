@@ -335,11 +335,14 @@ void refuse_unsplittable(const RenderRequest& r, const std::string& ext, bool st
 }
 }  // namespace
 
-/// Everything run_render works with between its checks and its frames.
-struct PreparedRender::State {
-  RenderRequest r;
-  bool done = false;  ///< nothing left to play: a still written, or the output already complete
-  bool page = false, stream = false;
+/// What a render writes and when, decided by the constructor's stages before
+/// any frame and read, never changed, after: the kind of output and where it
+/// goes, the run's mesh and frame clock, the frames this run draws, the
+/// caption, and a page's companions.
+struct RenderPlan {
+  /// picture (a still at --at), page, frames, stream (standard output, a
+  /// pipe or a device) or video.
+  render::OutputKind kind = render::OutputKind::unknown;
   render::OutputTarget target;
   std::optional<Parameters> parameters;
   TimeMesh mesh;
@@ -347,15 +350,26 @@ struct PreparedRender::State {
   std::optional<FrameClock> clock;
   render::FrameSegment segment;
   std::string caption;
-  fs::path companions;
+  fs::path companions;   ///< a page's PAGE_files/
+  std::string csv_name;  ///< a page's CSV, in its companions
+  Outputs outputs;       ///< what the sinks write (a page's, in its staging folder)
+  bool still() const { return kind == render::OutputKind::picture; }
+  bool page() const { return kind == render::OutputKind::page; }
+  bool stream() const { return kind == render::OutputKind::stream; }
+  bool frames() const { return kind == render::OutputKind::frames; }
+};
+
+/// Everything run_render works with: its plan, and the run's state.
+struct PreparedRender::State {
+  RenderRequest r;
+  RenderPlan plan;    ///< filled by the constructor's stages, const to play() and after
+  bool done = false;  ///< nothing left to play: a still written, or the output already complete
   std::optional<render::TemporaryDirectory> staged;
   std::optional<render::TemporaryFile> page_file;
-  Outputs outputs;
   std::unique_ptr<Scene> scene;
   std::optional<PagePlotCollector> page_plots;
   std::optional<ComparisonPagePlots> comparison_plots;  ///< a comparison's page: a curve per member
   std::optional<RunCsvFile> csv;
-  std::string csv_name;
   std::unique_ptr<Trajectory> trajectory;
   std::optional<HistoryFeed> history;
   std::optional<render::Canvas> canvas;
@@ -364,21 +378,21 @@ struct PreparedRender::State {
 
 PreparedRender::PreparedRender(const RenderRequest& request) : state_(std::make_unique<State>()) {
   state_->r = request;
-  const bool frames = check_output_kind();
+  plan_output_kind();
   std::unique_ptr<Trajectory> pre_pass = solve_pre_pass();
-  if (check_paths_or_skip(frames)) return;
+  if (check_paths_or_skip()) return;
   record_pre_pass(std::move(pre_pass));
   start_render_pass();
 }
 
 /// The kind of output (still, page, frames, stream or video file) from -o
-/// and the options, refusing combinations that cannot be written; whether
-/// the output is frames.
-bool PreparedRender::check_output_kind() {
+/// and the options, refusing combinations that cannot be written.
+void PreparedRender::plan_output_kind() {
   State& s = *state_;
   const RenderRequest& r = s.r;
+  RenderPlan& plan = s.plan;
   const std::string ext = render::lower_extension_of(r.output);
-  const render::OutputKind kind = render::classify_output(r.output);
+  const render::OutputKind named = render::classify_output(r.output);
   const bool still = r.at.has_value();
   if (still && !std::isfinite(*r.at))
     throw UsageError("--at " + std::string(std::isnan(*r.at) ? "nan" : "inf") +
@@ -387,18 +401,19 @@ bool PreparedRender::check_output_kind() {
     throw UsageError("--at renders one still: give -o FILE.png, FILE.svg or FILE.pdf");
   if (!still && (ext == ".svg" || ext == ".pdf"))
     throw UsageError("-o " + r.output + " is one picture: add --at T to choose its time");
-  const bool page = s.page = kind == render::OutputKind::page;
-  const bool frames = !still && kind == render::OutputKind::frames;  // their names are checked one by one later
-  s.target.named = r.output;
-  if (!frames) s.target = render::resolve_output(r.output, still || page ? render::kNeedsAFile : "");
-  const bool stream = s.stream = s.target.stream;  // "-", or a pipe or device
+  const bool page = named == render::OutputKind::page;
+  const bool frames = !still && named == render::OutputKind::frames;  // their names are checked one by one later
+  plan.target.named = r.output;
+  if (!frames) plan.target = render::resolve_output(r.output, still || page ? render::kNeedsAFile : "");
+  const bool stream = plan.target.stream;  // "-", or a pipe or device
+  plan.kind = still ? render::OutputKind::picture : stream ? render::OutputKind::stream : named;
   if (r.frames_player && !page) throw UsageError("--frames-player writes a page: give -o PLAYER.html");
   if (r.csv_every < 1) throw UsageError("--every must be at least 1: the page's CSV keeps every K-th step");
   if (r.csv_every != 1 && !page) throw UsageError("--every thins the CSV beside a page: give -o PAGE.html, or drop --every");
   if (r.video.transparent && page && !r.frames_player)
     throw UsageError("a page's MP4 cannot be transparent: add --frames-player (PNG frames), or write .webm or .mov");
   render::check_output_settings(r.output, stream, r.video);
-  if (!still && !page && !stream && !frames && kind != render::OutputKind::video) {
+  if (!still && !page && !stream && !frames && named != render::OutputKind::video) {
     if (ext == ".png")
       throw UsageError("-o " + r.output + " is one picture: add --at T, or give a pattern such as frames/tmp_%04d.png");
     throw UsageError("cannot tell what to write from -o " + r.output +
@@ -406,7 +421,6 @@ bool PreparedRender::check_output_kind() {
                      "directory, - (standard output) with --format, or .png/.svg/.pdf with --at");
   }
   if (r.segment) refuse_unsplittable(r, ext, still, stream, page);
-  return frames;
 }
 
 /// Solve #1, the pre-pass: the run's mesh, frame clock, caption and
@@ -419,26 +433,26 @@ std::unique_ptr<Trajectory> PreparedRender::solve_pre_pass() {
   refuse_crowded_notes(notes, r.scene.width, r.scene.height);
   render::start_loading_fonts();  // overlaps the solver's pre-pass and the encoder's start
   // A comparison's runs go through the render as one trajectory of wide rows.
-  s.parameters.emplace(r.scene.compare.empty() ? model_parameters_of(r.scene)
+  s.plan.parameters.emplace(r.scene.compare.empty() ? model_parameters_of(r.scene)
                                                : comparison_base_of(r.scene, parse_comparison(r.scene.compare).key));
   std::unique_ptr<Trajectory> pre_pass = build_scene_runs(r.scene);  // reads the run's files (a road)
-  const TimeMesh mesh = s.mesh = pre_pass->info().mesh;
+  const TimeMesh mesh = s.plan.mesh = pre_pass->info().mesh;
   if (!std::isfinite(mesh.T)) throw UsageError("a render needs a finite end time: give T or periods");
-  const bool still = r.at.has_value();
+  const bool still = s.plan.still();
   if (still && (*r.at < 0 || *r.at > mesh.T * (1 + 1e-12)))
     throw UsageError("--at " + short_number(*r.at) + " is outside the run [0, " + short_number(mesh.T) +
                      "]: choose a time inside it, or a longer T");
   if (still) r.scene.pacing.check_inside(mesh.T);  // a still's pacing is checked, though it shows one time
-  s.speed = steady_speed(r.scene, mesh);
-  const FrameClock& clock = s.clock.emplace(frame_clock_of(r.scene, mesh));
+  s.plan.speed = steady_speed(r.scene, mesh);
+  const FrameClock& clock = s.plan.clock.emplace(frame_clock_of(r.scene, mesh));
   const auto* runs = dynamic_cast<const ComparisonTrajectory*>(pre_pass.get());
-  s.caption = runs ? comparison_caption(r.scene.model, runs->comparison()) : run_caption(r.scene.model, *s.parameters, mesh);
-  s.segment = {0, 1, clock.frames()};
+  s.plan.caption = runs ? comparison_caption(r.scene.model, runs->comparison()) : run_caption(r.scene.model, *s.plan.parameters, mesh);
+  s.plan.segment = {0, 1, clock.frames()};
   if (r.segment) {
-    s.segment = {r.segment->index, r.segment->count, clock.frames(), render_fingerprint(r, s.caption, clock.frames())};
-    if (s.segment.frames() == 0)
-      throw UsageError("segment " + std::to_string(s.segment.index) + "/" + std::to_string(s.segment.count) +
-                       " has no frames: the render has only " + std::to_string(s.segment.total) +
+    s.plan.segment = {r.segment->index, r.segment->count, clock.frames(), render_fingerprint(r, s.plan.caption, clock.frames())};
+    if (s.plan.segment.frames() == 0)
+      throw UsageError("segment " + std::to_string(s.plan.segment.index) + "/" + std::to_string(s.plan.segment.count) +
+                       " has no frames: the render has only " + std::to_string(s.plan.segment.total) +
                        ", so use at most that many segments");
   }
   return pre_pass;
@@ -447,20 +461,20 @@ std::unique_ptr<Trajectory> PreparedRender::solve_pre_pass() {
 /// Every path the run will write, checked now that its inputs are known,
 /// before any work: the inputs, companions and frame names. True when the
 /// output is already complete and --skip-existing skips it.
-bool PreparedRender::check_paths_or_skip(bool frames) {
+bool PreparedRender::check_paths_or_skip() {
   State& s = *state_;
   const RenderRequest& r = s.r;
-  const bool still = r.at.has_value();
-  s.companions = s.page ? companion_folder(r.output) : fs::path();
-  if (!s.target.file.empty()) render::refuse_input_as_output(s.target.file);
-  if (s.page) check_companion_folder(s.companions, r.force);
-  if (r.segment && render::is_video_path(r.output)) check_segment_file(r, s.segment.file_name(r.output), s.segment);
-  if (frames) check_frame_names(r.output, s.segment);
-  if (!r.skip_existing || s.stream ||
-      !already_complete(r, still ? Outputs{} : plan_outputs(r, s.segment, false, {}), s.segment))
+  const bool still = s.plan.still();
+  s.plan.companions = s.plan.page() ? companion_folder(r.output) : fs::path();
+  if (!s.plan.target.file.empty()) render::refuse_input_as_output(s.plan.target.file);
+  if (s.plan.page()) check_companion_folder(s.plan.companions, r.force);
+  if (r.segment && render::is_video_path(r.output)) check_segment_file(r, s.plan.segment.file_name(r.output), s.plan.segment);
+  if (s.plan.frames()) check_frame_names(r.output, s.plan.segment);
+  if (!r.skip_existing || s.plan.stream() ||
+      !already_complete(r, still ? Outputs{} : plan_outputs(r, s.plan.segment, false, {}), s.plan.segment))
     return false;
-  const std::string done = s.page || still                                          ? r.output
-                           : r.segment && render::is_video_path(r.output) ? s.segment.file_name(r.output)
+  const std::string done = s.plan.page() || still                                          ? r.output
+                           : r.segment && render::is_video_path(r.output) ? s.plan.segment.file_name(r.output)
                                                                             : r.output;
   if (!r.quiet) std::fprintf(stderr, "vibra: %s is already complete: skipped\n", done.c_str());
   s.done = true;
@@ -475,25 +489,25 @@ void PreparedRender::record_pre_pass(std::unique_ptr<Trajectory> pre_pass) {
   const RenderRequest& r = s.r;
   // A page's companions are made in a temporary folder, and take the place
   // of earlier ones only with the page, when the run is complete.
-  if (s.page) {
-    s.staged.emplace(s.companions.parent_path(), s.companions.filename().string());
-    s.page_file.emplace(s.target.file);
+  if (s.plan.page()) {
+    s.staged.emplace(s.plan.companions.parent_path(), s.plan.companions.filename().string());
+    s.page_file.emplace(s.plan.target.file);
   }
-  s.outputs = r.at ? Outputs{} : plan_outputs(r, s.segment, s.stream, s.staged ? s.staged->path() : fs::path());
+  s.plan.outputs = r.at ? Outputs{} : plan_outputs(r, s.plan.segment, s.plan.stream(), s.staged ? s.staged->path() : fs::path());
   SceneConfig drawn = r.scene;
   if (r.video.transparent) drawn.colors.background = drawn.colors.background.with_alpha(0);  // cleared, not painted
-  s.scene = make_scene_for(drawn, *pre_pass, s.caption);
+  s.scene = make_scene_for(drawn, *pre_pass, s.plan.caption);
   const auto* runs = dynamic_cast<const ComparisonTrajectory*>(pre_pass.get());
-  s.csv_name = fs::path(r.output).stem().string() + ".csv";
-  if (s.page) {
+  s.plan.csv_name = fs::path(r.output).stem().string() + ".csv";
+  if (s.plan.page()) {
     if (runs) s.comparison_plots.emplace(*runs, r.scene.colors.bob);
     else s.page_plots.emplace(pre_pass->info(), page_panel_names(pre_pass->info()), r.scene.name);
-    s.csv.emplace(s.staged->path() / s.csv_name, pre_pass->info().columns, r.csv_every);
+    s.csv.emplace(s.staged->path() / s.plan.csv_name, pre_pass->info().columns, r.csv_every);
   }
   HistoryFeed(*pre_pass, *s.scene, s.scene->sample_interval()).record_all([&](std::span<const double> row) {
     if (s.comparison_plots) s.comparison_plots->observe(*runs, row);
     if (s.page_plots) s.page_plots->observe(*pre_pass, row);
-    if (s.page) s.csv->write(pre_pass->index(), pre_pass->done(), row);
+    if (s.plan.page()) s.csv->write(pre_pass->index(), pre_pass->done(), row);
   });
 }
 
@@ -507,12 +521,12 @@ void PreparedRender::start_render_pass() {
   s.history.emplace(*s.trajectory, *s.scene, s.scene->sample_interval());
   if (r.at) {
     // The frame that shows the still's time (or would), and its chain's frames before it.
-    const FrameClock& clock = *s.clock;
+    const FrameClock& clock = *s.plan.clock;
     const long long k = clock.first_frame_from(*r.at);
     const long long d = k < clock.frames() && clock.time(k) == *r.at ? clock.drawn_frame(k) : k;
     auto row_at = [&s](double t) { return s.row_at(t); };
     replay_label_chain(*s.scene, clock, d, r.scene.width, r.scene.height, false, row_at);
-    write_still(r, s.target, *s.scene, row_at(*r.at));
+    write_still(r, s.plan.target, *s.scene, row_at(*r.at));
     s.done = true;
     return;
   }
@@ -525,13 +539,14 @@ PreparedRender::~PreparedRender() = default;
 /// The render's own sinks (files, frames or a stream), their notes told once.
 std::unique_ptr<render::FrameSink> PreparedRender::open_sinks() {
   const State& s = *state_;
+  const RenderPlan& plan = s.plan;
   const RenderRequest& r = s.r;
   std::map<std::string, std::string> metadata = {{"title", "vibra " + r.scene.name},
-                                                 {"comment", render::markup_plain_text(s.caption)}};
-  if (r.segment) metadata["description"] = s.segment.tag();  // what vibra concat checks
-  if (s.stream) render::send_standard_output_to(s.target);  // a pipe or device: written as -o - is
-  auto sinks = render::make_frame_sinks(s.outputs.targets, r.scene.width, r.scene.height, r.scene.fps,
-                                        s.clock->frames(), r.video, metadata, s.segment.first());
+                                                 {"comment", render::markup_plain_text(plan.caption)}};
+  if (r.segment) metadata["description"] = plan.segment.tag();  // what vibra concat checks
+  if (plan.stream()) render::send_standard_output_to(plan.target);  // a pipe or device: written as -o - is
+  auto sinks = render::make_frame_sinks(plan.outputs.targets, r.scene.width, r.scene.height, r.scene.fps,
+                                        plan.clock->frames(), r.video, metadata, plan.segment.first());
   if (!r.quiet)
     for (const auto& note : sinks->notes()) std::fprintf(stderr, "vibra: %s\n", note.c_str());
   return sinks;
@@ -540,29 +555,31 @@ std::unique_ptr<render::FrameSink> PreparedRender::open_sinks() {
 /// A page's CSV and HTML written, then its companions and the page put in place together.
 void PreparedRender::commit_page() {
   State& s = *state_;
+  const RenderPlan& plan = s.plan;
   const RenderRequest& r = s.r;
-  const FrameClock& clock = *s.clock;
+  const FrameClock& clock = *plan.clock;
   s.csv->commit();
   render::write_text(*s.page_file,
-                     page_html(r, s.outputs, clock, page_facts(r, clock.frames(), *s.parameters, s.mesh, s.speed),
+                     page_html(r, plan.outputs, clock, page_facts(r, clock.frames(), *plan.parameters, plan.mesh, plan.speed),
                                s.comparison_plots ? s.comparison_plots->take_panels() : s.page_plots->take_panels(),
-                               s.companions.filename().string() + "/" + s.csv_name));
+                               plan.companions.filename().string() + "/" + plan.csv_name));
   s.staged->seal();
-  check_companion_folder(s.companions, r.force);  // again: the user may have put a file there meanwhile
+  check_companion_folder(plan.companions, r.force);  // again: the user may have put a file there meanwhile
   // The earlier companions and page go only now, together (the temporaries then hold them, and go).
-  render::place_together({{s.staged->path(), s.companions}, {s.page_file->path(), s.page_file->final_path()}});
+  render::place_together({{s.staged->path(), plan.companions}, {s.page_file->path(), s.page_file->final_path()}});
 }
 
 void PreparedRender::play() {
   State& s = *state_;
+  const RenderPlan& plan = s.plan;
   if (s.done) return;
   s.done = true;
   const RenderRequest& r = s.r;
-  const FrameClock& clock = *s.clock;
-  const render::FrameSegment& segment = s.segment;
+  const FrameClock& clock = *plan.clock;
+  const render::FrameSegment& segment = plan.segment;
   Scene& scene = *s.scene;
   render::Canvas& canvas = *s.canvas;
-  const bool page = s.page;
+  const bool page = plan.page();
   auto row_at = [&s](double t) { return s.row_at(t); };
 
   std::unique_ptr<render::FrameSink> own_sink = r.into ? nullptr : open_sinks();
@@ -598,7 +615,7 @@ void PreparedRender::play() {
   if (page) commit_page();
   if (!r.quiet && r.report_written)
     std::fprintf(stderr, "vibra: wrote %s\n",  // one line, a newline in a file name escaped
-                 one_line_message(page ? page_written(r, s.target, clock.frames()) : sink->description(), 4096).c_str());
+                 one_line_message(page ? page_written(r, plan.target, clock.frames()) : sink->description(), 4096).c_str());
 }
 
 void run_render(const RenderRequest& r) {

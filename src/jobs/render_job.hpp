@@ -72,9 +72,9 @@ class PreparedRender {
  private:
   struct State;
   // The constructor's stages, in order (render_job.cpp).
-  bool check_output_kind();
+  void plan_output_kind();
   std::unique_ptr<Trajectory> solve_pre_pass();
-  bool check_paths_or_skip(bool frames);
+  bool check_paths_or_skip();
   void record_pre_pass(std::unique_ptr<Trajectory> pre_pass);
   void start_render_pass();
   // play()'s stages.
