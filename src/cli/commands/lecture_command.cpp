@@ -6,6 +6,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "cli/encoder_options.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/segment_option.hpp"
 #include "core/error.hpp"
@@ -68,11 +69,8 @@ void add_lecture_command(CLI::App& app) {
   cmd->add_option("--shots-dir", o->shots_dir,
                   "DIR: every shot as its own video and first-frame PNG (NN-title.mp4, NN-title.png), with "
                   "index.md and beamer.tex, for slide programs; rendered once with the other outputs");
-  cmd->add_option("--codec", o->video.codec, "Video codec: h264 (.mp4) or vp9, vp8 (.webm); default from the extension");
-  cmd->add_option("--quality", o->video.quality, "draft, medium or high")->capture_default_str();
-  cmd->add_option("--crf", o->video.crf, "Constant rate factor (overrides --quality)")->check(ranged("--crf"));
-  cmd->add_option("--preset", o->video.preset, "x264 preset, e.g. veryfast, medium");
-  cmd->add_option("--threads", o->video.threads, "Encoder threads (default: one per core)")->check(ranged("--threads"));
+  add_encoder_options(*cmd, o->video, "Video codec: h264 (.mp4) or vp9, vp8 (.webm); default from the extension",
+                      "draft, medium or high", "Encoder threads (default: one per core)");
   cmd->add_flag("--force", o->force,
                 "Replace OUT.vtt, PAGE_files/ or a shot file that vibra did not write for this lecture");
   cmd->add_flag("--mute", o->mute, "No sound track: the shots keep the lengths their speech (say, audio) gives them");

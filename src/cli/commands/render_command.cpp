@@ -9,6 +9,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "cli/encoder_options.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/segment_option.hpp"
 #include "core/error.hpp"
@@ -183,12 +184,9 @@ void add_scene_flags(CLI::App& cmd, RenderOptions& o) {
 
 /// The flags of the video encoder.
 void add_video_flags(CLI::App& cmd, render::VideoSettings& video) {
-  cmd.add_option("--codec", video.codec, "Video codec: h264, vp9, vp8, theora, gif (default from the extension)");
-  cmd.add_option("--quality", video.quality,
-                 "draft, medium, high, or lossless (H.264 or VP9: decodes to exactly the frames drawn)")
-      ->capture_default_str();
-  cmd.add_option("--crf", video.crf, "Constant rate factor (overrides --quality)")->check(ranged("--crf"));
-  cmd.add_option("--preset", video.preset, "x264 preset, e.g. veryfast, medium");
+  add_encoder_options(cmd, video, "Video codec: h264, vp9, vp8, theora, gif (default from the extension)",
+                      "draft, medium, high, or lossless (H.264 or VP9: decodes to exactly the frames drawn)",
+                      "Threads for PNG compression and the encoder (default: one per core)");
   cmd.add_option("--format", video.format,
                  "With -o - (standard output), a pipe or a device: y4m (raw frames, for ffplay -), nut or matroska "
                  "(H.264)");
@@ -215,8 +213,6 @@ void add_render_command(CLI::App& app) {
       ->check(ranged("--every"));
   cmd->add_option("--at", o->at, "Render one still at this time (a number or an expression, e.g. 3.2 or pi/2)");
   add_video_flags(*cmd, o->video);
-  cmd->add_option("--threads", o->video.threads, "Threads for PNG compression and the encoder (default: one per core)")
-      ->check(ranged("--threads"));
   cmd->add_option("--segment", o->segment,
                   "K/N: only frames [K F/N, (K+1) F/N) of the F frames, to OUT.seg-K-of-N.EXT (video) or the frames' own "
                   "numbers (PNG); auto: K and N of a Slurm job array; auto/N: K from JOB_COMPLETION_INDEX");
