@@ -124,56 +124,75 @@ bool add_run(std::vector<Piece>& pieces, const std::vector<XY>& run, bool closed
   return true;
 }
 
-/// Adds one subpath's pieces, dashed as Cairo dashes: the pattern starts
-/// afresh at each subpath, and on a closed one a dash running through the
-/// start joins the dash it started with.
-bool add_subpath(std::vector<Piece>& pieces, std::vector<XY>& points, bool closed, bool has_line, const Style& style) {
-  // Repeated points have no direction: drop them.
-  points.erase(std::unique(points.begin(), points.end()), points.end());
-  if (closed && points.size() > 1 && points.front() == points.back()) points.pop_back();
-  if (points.empty() || !has_line) return true;  // a lone move draws nothing
-  const XY none{NAN, NAN};
-  if (style.dashes.empty() || points.size() == 1) return add_run(pieces, points, closed, none, style);
-
-  // Dashes far finer than a pixel would be millions of pieces: Cairo's.
+/// Whether dashing the subpath would make more pieces than kMostDashes
+/// (dashes far finer than a pixel would be millions): Cairo's, then.
+bool too_many_dashes(const std::vector<XY>& points, bool closed, const Style& style) {
   double length = 0, period = 0;
   for (std::size_t i = 0; i + 1 < points.size(); ++i) length += std::hypot(points[i + 1].x - points[i].x, points[i + 1].y - points[i].y);
   if (closed) length += std::hypot(points[0].x - points.back().x, points[0].y - points.back().y);
   for (double d : style.dashes) period += d;
-  if (length / period * double(style.dashes.size()) > kMostDashes) return false;
+  return length / period * double(style.dashes.size()) > kMostDashes;
+}
 
-  // As Cairo steps through the pattern: a dash ends where less than its
-  // fixed point's resolution of it remains, so a pattern that ends exactly at
-  // the path's end starts its next dash there (a dot, with round caps).
-  // Unlike Cairo, the remainder is carried to the next dash.
-  constexpr double kResolution = 1.0 / 256;
+/// Where a subpath is in the dash pattern, as Cairo steps through it: a dash
+/// ends where less than its fixed point's resolution of it remains, so a
+/// pattern that ends exactly at the path's end starts its next dash there (a
+/// dot, with round caps). Unlike Cairo, the remainder is carried to the next
+/// dash, so that the dashes stay where the path's length puts them.
+struct DashPhase {
+  static constexpr double kResolution = 1.0 / 256;
+  const std::vector<double>& dashes;
   std::size_t index = 0;
   bool on = true;
-  double offset = style.dash_offset;
-  while (offset > 0 && offset >= style.dashes[index]) {  // where the offset puts the start
-    offset -= style.dashes[index];
-    on = !on;
-    index = (index + 1) % style.dashes.size();
+  double remain = 0;  ///< of the current dash (or gap)
+
+  /// At the subpath's start, where the dash offset puts it.
+  explicit DashPhase(const Style& style) : dashes(style.dashes) {
+    double offset = style.dash_offset;
+    while (offset > 0 && offset >= dashes[index]) {
+      offset -= dashes[index];
+      next();
+    }
+    remain = dashes[index] - offset;
+    while (remain < kResolution) {  // a dash that ends within the resolution of the start ends at it
+      next();
+      remain += dashes[index];
+    }
   }
-  double remain = style.dashes[index] - offset;
-  while (remain < kResolution) {  // a dash that ends within the resolution of the start ends at it, as below
+  void next() {
     on = !on;
-    index = (index + 1) % style.dashes.size();
-    remain += style.dashes[index];
+    index = (index + 1) % dashes.size();
   }
+  bool ended() const { return remain < kResolution; }
+};
+
+void drop_repeats(std::vector<XY>& run) { run.erase(std::unique(run.begin(), run.end()), run.end()); }
+
+/// Adds one subpath's pieces, dashed as Cairo dashes: the pattern starts
+/// afresh at each subpath, and on a closed one a dash running through the
+/// start joins the dash it started with.
+bool add_subpath(std::vector<Piece>& pieces, std::vector<XY>& points, bool closed, bool has_line, const Style& style) {
+  drop_repeats(points);  // repeated points have no direction
+  if (closed && points.size() > 1 && points.front() == points.back()) points.pop_back();
+  if (points.empty() || !has_line) return true;  // a lone move draws nothing
+  const XY none{NAN, NAN};
+  if (style.dashes.empty() || points.size() == 1) return add_run(pieces, points, closed, none, style);
+  if (too_many_dashes(points, closed, style)) return false;
+
+  DashPhase dash(style);
   // On a closed subpath the dash running through the start is held back:
   // the last dash, if it runs to the start, goes on into it.
-  const bool hold_first = closed && on;
+  const bool hold_first = closed && dash.on;
   std::vector<XY> first_run, run;
   bool first_ended = false;
   auto end_run = [&](const XY& along) {
-    run.erase(std::unique(run.begin(), run.end()), run.end());
+    drop_repeats(run);
     const bool ok = hold_first && !first_ended ? (first_run = run, true) : add_run(pieces, run, false, along, style);
     first_ended = true;
     run.clear();
     return ok;
   };
-  if (on) run.push_back(points[0]);
+  if (dash.on) run.push_back(points[0]);
   const std::size_t n = points.size(), segments = closed ? n : n - 1;
   for (std::size_t s = 0; s < segments; ++s) {
     const XY& a = points[s];
@@ -181,32 +200,28 @@ bool add_subpath(std::vector<Piece>& pieces, std::vector<XY>& points, bool close
     const XY u = unit(a, b);
     const double length = std::hypot(b.x - a.x, b.y - a.y);
     for (double at = 0; at < length;) {
-      const double step = std::min(remain, length - at);
+      const double step = std::min(dash.remain, length - at);
       at += step;
-      remain -= step;
+      dash.remain -= step;
       const XY q = at >= length ? b : XY{a.x + at * u.x, a.y + at * u.y};
-      if (on) run.push_back(q);
-      if (remain >= kResolution) continue;
-      if (on && !end_run(u)) return false;  // a dash ends at q
-      if (!on) run.push_back(q);             // a dash starts at q
-      on = !on;
-      index = (index + 1) % style.dashes.size();
-      // What was left of the dash ended early goes to the next one, so that
-      // the dashes stay where the path's length puts them: a part of the
-      // path, started with that length as its offset, dashes as the whole.
-      remain += style.dashes[index];
+      if (dash.on) run.push_back(q);
+      if (!dash.ended()) continue;
+      if (dash.on && !end_run(u)) return false;  // a dash ends at q
+      if (!dash.on) run.push_back(q);             // a dash starts at q
+      dash.next();
+      dash.remain += dash.dashes[dash.index];  // what was left of the dash ended early goes to the next
     }
   }
   const XY last_along = closed ? unit(points[n - 1], points[0]) : unit(points[n - 2], points[n - 1]);
-  if (!hold_first) return !on || end_run(last_along);
+  if (!hold_first) return !dash.on || end_run(last_along);
   if (!first_ended) {  // on all the way round: no dash ever ended
     run.pop_back();     // the start again
-    run.erase(std::unique(run.begin(), run.end()), run.end());
+    drop_repeats(run);
     return add_run(pieces, run, true, last_along, style);
   }
-  if (on) run.insert(run.end(), first_run.begin(), first_run.end());  // the last dash runs on into the first
+  if (dash.on) run.insert(run.end(), first_run.begin(), first_run.end());  // the last dash runs on into the first
   else run = std::move(first_run);
-  run.erase(std::unique(run.begin(), run.end()), run.end());
+  drop_repeats(run);
   return add_run(pieces, run, false, unit(points[0], points[1]), style);
 }
 
@@ -335,85 +350,106 @@ struct Coverage {
   }
 };
 
+/// A piece measured for covering: its half width, reach, direction and length.
+struct PieceGeometry {
+  double h, reach;  ///< half the line width; coverage falls to 0 half a pixel outside the line
+  /// A disc's coverage ramped over a pixel of distance holds pi (h^2 + 1/12)
+  /// of ink, not pi h^2: a round end drawn this much smaller holds the right
+  /// amount (a thin line's dashes were 3% too dark).
+  double round_end;
+  double dx, dy, length, ux, uy;
+  PieceGeometry(const Piece& p, double half_width)
+      : h(half_width), reach(half_width + 0.5), round_end(1 / (24 * half_width)), dx(p.b.x - p.a.x),
+        dy(p.b.y - p.a.y), length(std::sqrt(dx * dx + dy * dy)), ux(length > 0 ? dx / length : 1),
+        uy(length > 0 ? dy / length : 0) {}
+};
+
+/// The columns [first, last] of row `row` within reach of a long piece: its
+/// stretch within `reach` of the row's centre line, widened by `reach`.
+/// False when the row is beyond the piece.
+bool long_piece_columns(const Piece& p, const PieceGeometry& g, const Plan& plan, int row, int& first, int& last) {
+  const double cy = row + 0.5;
+  double t0 = 0, t1 = 1;
+  if (g.dy != 0) {
+    t0 = (cy - g.reach - p.a.y) / g.dy, t1 = (cy + g.reach - p.a.y) / g.dy;
+    if (t0 > t1) std::swap(t0, t1);
+    t0 = std::max(t0, 0.0), t1 = std::min(t1, 1.0);
+    if (t0 > t1) return false;
+  } else if (std::abs(cy - p.a.y) > g.reach) {
+    return false;
+  }
+  const double xa = p.a.x + t0 * g.dx, xb = p.a.x + t1 * g.dx;
+  first = ceil_within(std::min(xa, xb) - g.reach - 0.5, plan.x0, plan.x1);
+  last = floor_within(std::max(xa, xb) + g.reach - 0.5, plan.x0 - 1, plan.x1 - 1);
+  return true;
+}
+
+/// One row's pixels of a piece round at both ends with nothing to cut: the
+/// common piece, without branches. Each pixel's own distance along and
+/// across the segment from its start, not stepped column by column, so that
+/// a pixel's coverage is the same whatever part of the row a clip lets the
+/// stroke touch.
+void cover_plain_row(const Piece& p, const PieceGeometry& g, int row, int first, int last, std::uint8_t* cells) {
+  const double py = row + 0.5 - p.a.y;
+  for (int column = first; column <= last; ++column) {
+    const double px = column + 0.5 - p.a.x;
+    const double along = px * g.ux + py * g.uy, across = px * g.uy - py * g.ux;
+    const double beyond = std::max({0.0, -along, along - g.length});
+    const double distance = beyond > 0 ? std::sqrt(beyond * beyond + across * across) + g.round_end : std::abs(across);
+    cells[column] = std::max(cells[column], mask_of(std::clamp(g.h + 0.5 - distance, 0.0, 1.0)));
+  }
+}
+
+/// One row's pixels of a piece with a cut end or a fence (see cover_plain_row).
+void cover_cut_row(const Piece& p, const PieceGeometry& g, int row, int first, int last, std::uint8_t* cells) {
+  const double cy = row + 0.5, py = cy - p.a.y;
+  auto fence_at = [&](const Fence& f, double px) {
+    return f.up ? (px - f.at.x) * f.dir.x + (cy - f.at.y) * f.dir.y + 0.5 : 1e300;
+  };
+  for (int column = first; column <= last; ++column) {
+    const double px = column + 0.5 - p.a.x;
+    const double along = px * g.ux + py * g.uy, across = px * g.uy - py * g.ux;
+    const double inside_start = fence_at(p.start, column + 0.5), inside_end = fence_at(p.end, column + 0.5);
+    double distance = std::abs(across), end = 1;
+    if (along < 0) {
+      if (p.cut_a) end = along + 0.5;
+      else distance = std::sqrt(along * along + across * across) + g.round_end, end = std::min(inside_start, inside_end);
+    } else if (along > g.length) {
+      if (p.cut_b) end = g.length - along + 0.5;
+      else distance = std::sqrt((along - g.length) * (along - g.length) + across * across) + g.round_end,
+           end = std::min(inside_start, inside_end);
+    }
+    if (p.cut_a && along < 0.5) end = std::min(end, along + 0.5);
+    if (p.cut_b && along > g.length - 0.5) end = std::min(end, g.length - along + 0.5);
+    const double value = std::clamp(g.h + 0.5 - distance, 0.0, 1.0) * std::clamp(end, 0.0, 1.0);
+    cells[column] = std::max(cells[column], mask_of(value));
+  }
+}
+
 /// Raises each pixel's coverage to the piece's: one minus how far the pixel's
 /// centre is beyond the line's edge, within a pixel; at a cut end, times how
 /// far the centre is inside the cut, within a pixel.
 void cover(const Piece& p, const Plan& plan, Coverage& coverage) {
   const int width = plan.x1 - plan.x0;
-  const double h = plan.half_width, reach = h + 0.5;  // coverage falls to 0 half a pixel outside the line
-  // A disc's coverage ramped over a pixel of distance holds pi (h^2 + 1/12)
-  // of ink, not pi h^2: a round end drawn this much smaller holds the right
-  // amount (a thin line's dashes were 3% too dark).
-  const double round_end = 1 / (24 * h);
-  const double dx = p.b.x - p.a.x, dy = p.b.y - p.a.y, length = std::sqrt(dx * dx + dy * dy);
-  const double ux = length > 0 ? dx / length : 1, uy = length > 0 ? dy / length : 0;
+  const PieceGeometry g(p, plan.half_width);
   const bool plain = !p.cut_a && !p.cut_b && !p.start.up && !p.end.up;
   // Pixel centres (row + 0.5) within reach of the segment's rows; none when it is beyond the clip.
-  const int row_first = ceil_within(std::min(p.a.y, p.b.y) - reach - 0.5, plan.y0, plan.y1);
-  const int row_last = floor_within(std::max(p.a.y, p.b.y) + reach - 0.5, plan.y0 - 1, plan.y1 - 1);
-  const int box_first = ceil_within(std::min(p.a.x, p.b.x) - reach - 0.5, plan.x0, plan.x1);
-  const int box_last = floor_within(std::max(p.a.x, p.b.x) + reach - 0.5, plan.x0 - 1, plan.x1 - 1);
+  const int row_first = ceil_within(std::min(p.a.y, p.b.y) - g.reach - 0.5, plan.y0, plan.y1);
+  const int row_last = floor_within(std::max(p.a.y, p.b.y) + g.reach - 0.5, plan.y0 - 1, plan.y1 - 1);
+  const int box_first = ceil_within(std::min(p.a.x, p.b.x) - g.reach - 0.5, plan.x0, plan.x1);
+  const int box_last = floor_within(std::max(p.a.x, p.b.x) + g.reach - 0.5, plan.x0 - 1, plan.x1 - 1);
   // A short piece (most of a curve's) covers most of its box: every pixel of
   // it is tried; a long one only its stretch of each row.
-  const bool short_piece = length <= 4 * reach;
+  const bool short_piece = g.length <= 4 * g.reach;
   for (int row = row_first; row <= row_last; ++row) {
-    const double cy = row + 0.5;
     int first = box_first, last = box_last;
-    if (!short_piece) {
-      // The part of the segment within `reach` of this row's centre line, widened by `reach`.
-      double t0 = 0, t1 = 1;
-      if (dy != 0) {
-        t0 = (cy - reach - p.a.y) / dy, t1 = (cy + reach - p.a.y) / dy;
-        if (t0 > t1) std::swap(t0, t1);
-        t0 = std::max(t0, 0.0), t1 = std::min(t1, 1.0);
-        if (t0 > t1) continue;
-      } else if (std::abs(cy - p.a.y) > reach) {
-        continue;
-      }
-      const double xa = p.a.x + t0 * dx, xb = p.a.x + t1 * dx;
-      first = ceil_within(std::min(xa, xb) - reach - 0.5, plan.x0, plan.x1);
-      last = floor_within(std::max(xa, xb) + reach - 0.5, plan.x0 - 1, plan.x1 - 1);
-    }
+    if (!short_piece && !long_piece_columns(p, g, plan, row, first, last)) continue;
     if (first > last) continue;
     const int r = row - plan.y0;
     std::uint8_t* cells = coverage.cells.data() + std::size_t(r) * width - plan.x0;
     coverage.touch(r, first, last);
-    // Along the segment and across it, from its start; each pixel's own
-    // (not stepped column by column), so that a pixel's coverage is the same
-    // whatever part of the row a clip lets the stroke touch.
-    const double py = cy - p.a.y;
-    if (plain) {  // round at both ends, nothing to cut: the common piece, without branches
-      for (int column = first; column <= last; ++column) {
-        const double px = column + 0.5 - p.a.x;
-        const double along = px * ux + py * uy, across = px * uy - py * ux;
-        const double beyond = std::max({0.0, -along, along - length});
-        const double distance =
-            beyond > 0 ? std::sqrt(beyond * beyond + across * across) + round_end : std::abs(across);
-        cells[column] = std::max(cells[column], mask_of(std::clamp(h + 0.5 - distance, 0.0, 1.0)));
-      }
-      continue;
-    }
-    auto fence_at = [&](const Fence& f, double px) {
-      return f.up ? (px - f.at.x) * f.dir.x + (cy - f.at.y) * f.dir.y + 0.5 : 1e300;
-    };
-    for (int column = first; column <= last; ++column) {
-      const double px = column + 0.5 - p.a.x;
-      const double along = px * ux + py * uy, across = px * uy - py * ux;
-      const double inside_start = fence_at(p.start, column + 0.5), inside_end = fence_at(p.end, column + 0.5);
-      double distance = std::abs(across), end = 1;
-      if (along < 0) {
-        if (p.cut_a) end = along + 0.5;
-        else distance = std::sqrt(along * along + across * across) + round_end, end = std::min(inside_start, inside_end);
-      } else if (along > length) {
-        if (p.cut_b) end = length - along + 0.5;
-        else distance = std::sqrt((along - length) * (along - length) + across * across) + round_end,
-             end = std::min(inside_start, inside_end);
-      }
-      if (p.cut_a && along < 0.5) end = std::min(end, along + 0.5);
-      if (p.cut_b && along > length - 0.5) end = std::min(end, length - along + 0.5);
-      const double value = std::clamp(h + 0.5 - distance, 0.0, 1.0) * std::clamp(end, 0.0, 1.0);
-      cells[column] = std::max(cells[column], mask_of(value));
-    }
+    if (plain) cover_plain_row(p, g, row, first, last, cells);
+    else cover_cut_row(p, g, row, first, last, cells);
   }
 }
 
