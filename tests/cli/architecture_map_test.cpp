@@ -58,10 +58,10 @@ std::vector<std::string> source_folders() {
   return folders;
 }
 
-/// The production C++ files: the libraries, the Python bindings and the benchmarks.
-std::vector<fs::path> production_sources() {
+/// The C++ files: the libraries, the Python bindings, the benchmarks and the tests.
+std::vector<fs::path> cpp_sources() {
   std::vector<fs::path> files;
-  for (const char* top : {"src", "render", "scenes", "python/src", "bench"})
+  for (const char* top : {"src", "render", "scenes", "python/src", "bench", "tests"})
     for (const auto& entry : fs::recursive_directory_iterator(kRoot / top)) {
       const std::string ext = entry.path().extension().string();
       if (entry.is_regular_file() && (ext == ".cpp" || ext == ".hpp")) files.push_back(entry.path());
@@ -94,9 +94,9 @@ TEST_CASE("architecture map: docs/architecture.md names every folder that holds 
   CHECK(missing.empty());
 }
 
-TEST_CASE("architecture map: line 1 of every production source file says what the file is for", "[docs]") {
-  const std::vector<fs::path> files = production_sources();
-  REQUIRE(files.size() >= 300);  // src, render, scenes, python/src and bench were all found
+TEST_CASE("architecture map: line 1 of every C++ source file says what the file is for", "[docs]") {
+  const std::vector<fs::path> files = cpp_sources();
+  REQUIRE(files.size() >= 400);  // src, render, scenes, python/src, bench and tests were all found
   std::vector<std::string> silent;
   for (const fs::path& file : files) {
     std::ifstream in(file);
@@ -105,6 +105,58 @@ TEST_CASE("architecture map: line 1 of every production source file says what th
     if (!says_what_it_is(first)) silent.push_back(fs::relative(file, kRoot).generic_string());
   }
   INFO("give each a line 1 such as `// What this file is for, in a few words.`");
+  for (const std::string& file : silent) UNSCOPED_INFO("line 1 says nothing: " << file);
+  CHECK(silent.empty());
+}
+
+TEST_CASE("architecture map: no source folder holds more than 25 files", "[docs]") {
+  // Past that a folder is a pile a newcomer scrolls through: split it by concept.
+  constexpr long kMostFiles = 25;
+  std::vector<std::string> piles;
+  for (const std::string& folder : source_folders()) {
+    if (folder == "." || folder.rfind("tests/fuzz/corpus", 0) == 0 || folder.rfind("tests/fuzz/regressions", 0) == 0)
+      continue;  // the root's few files; fuzz inputs are data, not source
+    const auto entries = fs::directory_iterator(kRoot / folder);
+    const long files = std::count_if(fs::begin(entries), fs::end(entries), [](const auto& e) { return e.is_regular_file(); });
+    if (files > kMostFiles) piles.push_back(folder + " holds " + std::to_string(files) + " files");
+  }
+  for (const std::string& pile : piles) UNSCOPED_INFO(pile);
+  CHECK(piles.empty());
+}
+
+/// The first line that is not a #! line, with its comment opener removed
+/// ("" when it is not a comment): what a source file in any language says.
+static std::string first_comment(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("#!", 0) == 0) std::getline(in, line);
+  for (const char* opener : {"// ", "# ", "/* ", "<!-- ", "\"\"\""})
+    if (line.rfind(opener, 0) == 0) return "// " + line.substr(std::string(opener).size());
+  return "";
+}
+
+TEST_CASE("architecture map: line 1 of every other source file says what the file is for", "[docs]") {
+  // Scripts, CMake, Python, the page's template, script and style, scene presets: all but data.
+  std::vector<std::string> silent;
+  long checked = 0;
+  auto it = fs::recursive_directory_iterator(kRoot);
+  for (; it != fs::recursive_directory_iterator(); ++it) {
+    const fs::path relative = fs::relative(it->path(), kRoot);
+    const std::string name = relative.generic_string();
+    if (it->is_directory()) {
+      if (is_outside_source_tree(relative) || name == "third_party" || name == "tests/fuzz/corpus" ||
+          name == "tests/fuzz/regressions")
+        it.disable_recursion_pending();
+      continue;
+    }
+    const std::string ext = relative.extension().string();
+    if (!it->is_regular_file() || !is_source_file(*it) || ext == ".cpp" || ext == ".hpp" || ext == ".ipynb") continue;
+    ++checked;
+    if (!says_what_it_is(first_comment(it->path()))) silent.push_back(name);
+  }
+  REQUIRE(checked >= 60);  // scripts, CMake files, Python, presets and the page were all found
+  INFO("give each a first line such as `# What this file is for, in a few words.`");
   for (const std::string& file : silent) UNSCOPED_INFO("line 1 says nothing: " << file);
   CHECK(silent.empty());
 }
