@@ -5,13 +5,7 @@ const { execFileSync, spawnSync } = require('child_process');
 const fs = require('fs');
 const os = require('os');
 const path = require('path');
-
-const [coreJs, vibra] = process.argv.slice(2).map(p => path.resolve(p));
-const failures = [];
-function check(ok, what) {
-  console.log((ok ? 'ok    ' : 'FAIL  ') + what);
-  if (!ok) failures.push(what);
-}
+const { check, finish, coreJs, vibra } = require('./check_support.js');
 
 // Models, schemes and kinds of key (angle, formula, choice, adaptive steps, events, 2-D state), with
 // the largest relative difference allowed: 1e-12 for a fixed step. An adaptive scheme chooses its
@@ -106,11 +100,10 @@ function compareRefusal(core, [model, settings]) {
   check(web.rows.length === 0 && web.columns === '', `${what}: no rows kept from a refused run`);
 }
 
-require(path.resolve(coreJs))().then(core => {
+require(coreJs)().then(core => {
   for (const [name, text] of Object.entries(roads)) core.FS.writeFile(name, text);
   runs.forEach(run => compareRun(core, run));
   refusals.forEach(refusal => compareRefusal(core, refusal));
   compareRun(core, runs[0]);  // a refusal leaves nothing behind that changes the next run
-  console.log(failures.length ? `${failures.length} checks failed` : 'every check held');
-  process.exit(failures.length ? 1 : 0);
+  finish();
 });
