@@ -58,10 +58,10 @@ std::vector<std::string> source_folders() {
   return folders;
 }
 
-/// The C++ files: the libraries, the Python bindings, the benchmarks and the tests.
+/// The C++ files: the libraries, the Python bindings, the benchmarks, the tests and the browser build.
 std::vector<fs::path> cpp_sources() {
   std::vector<fs::path> files;
-  for (const char* top : {"src", "render", "scenes", "python/src", "bench", "tests"})
+  for (const char* top : {"src", "render", "scenes", "python/src", "bench", "tests", "web"})
     for (const auto& entry : fs::recursive_directory_iterator(kRoot / top)) {
       const std::string ext = entry.path().extension().string();
       if (entry.is_regular_file() && (ext == ".cpp" || ext == ".hpp")) files.push_back(entry.path());

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <random>
 #include <sstream>
 
@@ -32,6 +33,22 @@ double RoadProfile::interpolate(const std::vector<double>& values, double x) con
 double RoadProfile::height(double x) const { return interpolate(h_, x); }
 double RoadProfile::curvature(double x) const { return interpolate(q_, x); }
 
+namespace {
+/// One height as the whole of [begin, end): a decimal number and nothing else.
+bool read_height(const char* begin, const char* end, double& value) {
+#if defined(__cpp_lib_to_chars)
+  const auto [ptr, ec] = std::from_chars(begin, end, value);
+  return ec == std::errc() && ptr == end;
+#else  // emscripten 3.1.6's libc++ (the browser build, web/) has no from_chars for double
+  const std::string text(begin, end);
+  if (text.empty() || text[0] == '+' || text.find_first_of("xX \t") != std::string::npos) return false;
+  char* stop = nullptr;
+  value = std::strtod(text.c_str(), &stop);
+  return stop == text.c_str() + text.size();
+#endif
+}
+}  // namespace
+
 RoadProfile RoadProfile::from_file(const std::string& path, double dx) {
   std::istringstream in(read_input_file(path, "the road file", "the road profile (--set road)"));
   std::vector<double> heights;
@@ -43,8 +60,7 @@ RoadProfile RoadProfile::from_file(const std::string& path, double dx) {
     double value = 0;
     const char* begin = line.data() + first;
     const char* end = line.data() + last + 1;
-    const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (ec != std::errc() || ptr != end || !std::isfinite(value))
+    if (!read_height(begin, end, value) || !std::isfinite(value))
       throw UsageError(path + ":" + std::to_string(number) + ": '" + line.substr(first, last - first + 1) +
                        "' is not a height: the road file has one number per line");
     heights.push_back(value);

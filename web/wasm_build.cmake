@@ -1,0 +1,33 @@
+# The browser build (web/) as a step of the main build: configured with emscripten's toolchain when em++ is installed.
+# Optional: without emscripten (or with VIBRA_WEB=OFF) the native build and its
+# tests are unchanged, and the tests of the browser build are skipped saying so.
+find_program(VIBRA_EMCMAKE emcmake)
+find_program(VIBRA_CCACHE ccache)
+if(VIBRA_EMCMAKE AND NOT VIBRA_SANITIZE AND NOT VIBRA_FUZZ)
+  set(VIBRA_WEB_DEFAULT ON)
+else()
+  set(VIBRA_WEB_DEFAULT OFF)
+endif()
+option(VIBRA_WEB "Build the core as WebAssembly for the browser (web/, needs emscripten)" ${VIBRA_WEB_DEFAULT})
+set(VIBRA_WEB_DIR ${CMAKE_CURRENT_BINARY_DIR}/web)
+if(VIBRA_WEB)
+  if(NOT VIBRA_EMCMAKE)
+    message(FATAL_ERROR "VIBRA_WEB needs emscripten: apt-get install emscripten, or configure with -DVIBRA_WEB=OFF")
+  endif()
+  include(ExternalProject)
+  # emcc's JavaScript tools need Debian's acorn even under a node of another origin.
+  set(VIBRA_EM_ENV ${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs)
+  set(VIBRA_WEB_LAUNCHER "")
+  if(VIBRA_CCACHE)
+    set(VIBRA_WEB_LAUNCHER -DCMAKE_CXX_COMPILER_LAUNCHER=${VIBRA_CCACHE})
+  endif()
+  ExternalProject_Add(vibra_web
+    SOURCE_DIR ${CMAKE_CURRENT_SOURCE_DIR}/web
+    BINARY_DIR ${VIBRA_WEB_DIR}
+    CONFIGURE_COMMAND ${VIBRA_EM_ENV} ${VIBRA_EMCMAKE} ${CMAKE_COMMAND} -S <SOURCE_DIR> -B <BINARY_DIR> -G Ninja
+                      -DCMAKE_BUILD_TYPE=Release ${VIBRA_WEB_LAUNCHER}
+    BUILD_COMMAND ${VIBRA_EM_ENV} ${CMAKE_COMMAND} --build <BINARY_DIR>
+    INSTALL_COMMAND ""
+    BUILD_ALWAYS ON
+    USES_TERMINAL_BUILD ON)
+endif()
