@@ -18,20 +18,39 @@ COUNTERS = {"LF": "lines", "LH": "lines_hit", "BRF": "branches", "BRH": "branche
 
 
 def read_tracefile(text, root):
-    """{relative path: {lines, lines_hit, branches, branches_hit}} for files under root's source folders."""
-    files, current = {}, None
+    """{relative path: {lines, lines_hit, branches, branches_hit}} for files under root's source folders.
+
+    lcov 1.16's capture may write a file once per object that compiled it,
+    with its DA and BRDA records but no LF/LH/BRF/BRH sums: the records are
+    merged per file (a line is run when any object ran it); the sums are
+    used only for a file that has no records."""
+    sums, lines, branches, current = {}, defaultdict(dict), defaultdict(dict), None
     root = str(Path(root).resolve()) + "/"
     for line in text.splitlines():
         key, _, value = line.partition(":")
         if key == "SF":
             path = str(Path(value).resolve())
             rel = path[len(root):] if path.startswith(root) else None
-            current = files.setdefault(rel, defaultdict(int)) if rel and folder_of(rel) else None
-        elif key in COUNTERS and current is not None:
-            current[COUNTERS[key]] += int(value)
+            current = rel if rel and folder_of(rel) else None
+            if current:
+                sums.setdefault(current, defaultdict(int))
+        elif current is None:
+            continue
+        elif key == "DA":
+            number, count = value.split(",")[:2]
+            lines[current][number] = lines[current].get(number, False) or int(count) > 0
+        elif key == "BRDA":
+            *where, taken = value.split(",")
+            branches[current][tuple(where)] = branches[current].get(tuple(where), False) or taken not in ("-", "0")
+        elif key in COUNTERS:
+            sums[current][COUNTERS[key]] += int(value)
         elif key == "end_of_record":
             current = None
-    return files
+    for rel in sums:
+        if lines[rel]:
+            sums[rel].update(lines=len(lines[rel]), lines_hit=sum(lines[rel].values()),
+                             branches=len(branches[rel]), branches_hit=sum(branches[rel].values()))
+    return sums
 
 
 def folder_of(rel):

@@ -17,7 +17,7 @@ once into scripts/mutants-equivalent.txt, one stable id a line with the
 reason, and never drawn again.
 """
 import difflib
-import random
+import hashlib
 import re
 import signal
 import subprocess
@@ -28,6 +28,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import mutant_sites  # noqa: E402
+from mutant_ledger import Ledger  # noqa: E402
 
 SOURCE_FOLDERS = ["src/core", "src/cli", "src/jobs", "render", "scenes"]  # scored separately
 EQUIVALENTS = Path(__file__).resolve().parent / "mutants-equivalent.txt"
@@ -57,10 +58,16 @@ def all_sites(tree, headers, equivalents):
     return by_folder
 
 
+def draw_key(seed, site):
+    """A site's place in the draw, from the seed and its own id alone: triaging an
+    equivalent or editing another line leaves the other sites' order as it was,
+    so a resumed run draws the sites it drew before."""
+    return hashlib.sha256(f"{seed}:{getattr(site, 'id', site)}".encode()).hexdigest()
+
+
 def draw_order(by_folder, seed):
     """Sites in the order they are tried: each folder's shuffled, the folders taken in turn."""
-    rng = random.Random(seed)
-    queues = {f: rng.sample(sites, len(sites)) for f, sites in sorted(by_folder.items())}
+    queues = {f: sorted(sites, key=lambda s: draw_key(seed, s)) for f, sites in sorted(by_folder.items())}
     longest = max((len(q) for q in queues.values()), default=0)
     for i in range(longest):
         for folder, queue in queues.items():
@@ -132,14 +139,8 @@ def print_scores(results):
     return killed, scored
 
 
-def run_sample(args, tree, build_ok, suite, logs):
-    """The --sample run; exit status 0 when no mutant survived."""
-    restore_on_signals()
-    equivalents = load_equivalents()
-    by_folder = all_sites(tree, args.headers, equivalents)
-    total = sum(len(s) for s in by_folder.values())
-    print(f"mutants: {total} sites in {', '.join(SOURCE_FOLDERS)} ({len(equivalents)} triaged as equivalent); "
-          f"sampling {args.sample} with seed {args.seed}")
+def baseline_timeout(args, build_ok, suite, logs):
+    """Builds and runs the unmutated copy (it must pass); the time limit per mutant."""
     start = time.time()
     if not build_ok(logs / "baseline-build.log"):
         sys.exit(f"mutants: the unmutated copy does not build: {logs / 'baseline-build.log'}")
@@ -149,23 +150,53 @@ def run_sample(args, tree, build_ok, suite, logs):
     suite_seconds = time.time() - start
     timeout = max(60.0, 3 * suite_seconds)
     print(f"mutants: baseline built and passed '{args.spec}' in {suite_seconds:.0f} s; {timeout:.0f} s per mutant")
+    return timeout
 
+
+def judge_sample(args, by_folder, ledger, judge):
+    """Each drawn site's verdict, kept from the ledger or judged now (and recorded at once)."""
     results, scored, tried = [], 0, 0
     for folder, site in draw_order(by_folder, args.seed):
         if scored >= args.sample or tried >= 3 * args.sample:  # bounded: invalid mutants draw again, not forever
             break
         tried += 1
         t0 = time.time()
-        outcome, detail, diff = try_site(site, tree, build_ok, suite, args.spec, timeout, logs)
-        scored += outcome != "INVALID"
-        results.append((folder, site, outcome, detail, diff))
-        print(f"  [{scored}/{args.sample}] {outcome:8} {site.id} ({time.time() - t0:.0f} s) {detail}", flush=True)
+        entry = ledger.verdict(site.id, args.rejudge_survivors)
+        kept = entry is not None
+        if not kept:
+            entry = ledger.record(site.id, folder, *judge(site))
+        scored += entry["outcome"] != "INVALID"
+        results.append((folder, site, entry["outcome"], entry["detail"], entry["diff"]))
+        when = "judged before" if kept else f"{time.time() - t0:.0f} s"
+        print(f"  [{scored}/{args.sample}] {entry['outcome']:8} {site.id} ({when}) {entry['detail']}", flush=True)
+    return results
 
+
+def run_sample(args, tree, build_ok, suite, logs):
+    """The --sample run; exit status 0 when no mutant survived."""
+    restore_on_signals()
+    equivalents = load_equivalents()
+    by_folder = all_sites(tree, args.headers, equivalents)
+    total = sum(len(s) for s in by_folder.values())
+    ledger = Ledger(logs.parent / "sample-verdicts.jsonl", args.seed)
+    print(f"mutants: {total} sites in {', '.join(SOURCE_FOLDERS)} ({len(equivalents)} triaged as equivalent); "
+          f"sampling {args.sample} with seed {args.seed}; {len(ledger.judged)} judged before ({ledger.path})")
+    revision = subprocess.run(["git", "-C", str(tree), "rev-parse", "--short", "HEAD"], capture_output=True,
+                              text=True).stdout.strip()
+    timeout = None  # the baseline runs only when a mutant is to be judged
+
+    def judge(site):
+        nonlocal timeout
+        timeout = timeout or baseline_timeout(args, build_ok, suite, logs)
+        return (*try_site(site, tree, build_ok, suite, args.spec, timeout, logs), revision)
+
+    results = judge_sample(args, by_folder, ledger, judge)
     killed, scored = print_scores(results)
     survivors = [r for r in results if r[2] == "SURVIVED"]
     if survivors:
         print(f"\n{len(survivors)} survived (a test to add, or an id for {EQUIVALENTS.name} with the reason):")
         for _, site, _, _, diff in survivors:
             print(f"\n{site.id}\n{diff}", end="")
-    build_ok(logs / "restored-build.log")  # leave the copy built as the tree is
+    if timeout:
+        build_ok(logs / "restored-build.log")  # leave the copy built as the tree is
     return 0 if killed == scored else 1

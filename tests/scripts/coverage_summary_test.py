@@ -51,6 +51,28 @@ class Summary(unittest.TestCase):
         lines = coverage_summary.report(coverage_summary.read_tracefile(TRACEFILE, ROOT), 85)
         self.assertEqual(lines[-2:], ["\n1 of 3 files under 85% of lines:", "   50.0%  src/core/time_mesh.cpp"])
 
+    def test_records_of_one_file_from_two_objects_merge_without_sums(self):
+        # lcov 1.16 writes a file once per object that compiled it, DA and BRDA only: a line run by either counts once.
+        twice = """TN:
+SF:/repo/src/core/a.cpp
+DA:1,0
+DA:2,3
+BRDA:2,0,0,-
+BRDA:2,0,1,1
+end_of_record
+TN:
+SF:/repo/src/core/a.cpp
+DA:1,4
+DA:2,0
+DA:5,0
+BRDA:2,0,0,0
+BRDA:2,0,1,0
+end_of_record
+"""
+        counts = coverage_summary.read_tracefile(twice, ROOT)["src/core/a.cpp"]
+        self.assertEqual((counts["lines"], counts["lines_hit"]), (3, 2))
+        self.assertEqual((counts["branches"], counts["branches_hit"]), (2, 1))
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "svg_shapes.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -61,29 +62,14 @@ struct DrawnArrow {
   std::vector<std::vector<std::pair<std::string, Point2>>> label;  ///< glyph groups: symbol id and place
 };
 
-std::string attribute(const std::string& tag, const std::string& name) {
-  const auto at = tag.find(" " + name + "=\"");
-  if (at == std::string::npos) return "";
-  const auto begin = at + name.size() + 3;
-  return tag.substr(begin, tag.find('"', begin) - begin);
-}
+using vibra::test::svg::attribute;
+using vibra::test::svg::numbers;
 
 /// The colour in a style's "KEY:rgb(...)" ("" if none).
 std::string colour(const std::string& style, const std::string& key) {
   const auto at = style.find(key + ":rgb(");
   if (at == std::string::npos) return "";
   return style.substr(at + key.size() + 1, style.find(')', at) + 1 - at - key.size() - 1);
-}
-
-std::vector<double> numbers(const std::string& path) {
-  std::vector<double> out;
-  for (const char* p = path.c_str(); *p;) {
-    char* end;
-    const double x = std::strtod(p, &end);
-    if (end == p) ++p;
-    else out.push_back(x), p = end;
-  }
-  return out;
 }
 
 struct Svg {
