@@ -137,11 +137,21 @@ class Chromium:
         return r["result"].get("value")
 
     def wait_for(self, expression, timeout=10):
+        """Whether `expression` turns true within `timeout` seconds. A script
+        error (an element not there yet, in a window still loading) counts as
+        not yet; when the last try still failed, its error is raised."""
         deadline = time.time() + timeout
+        error = None
         while time.time() < deadline:
-            if self.js(expression):
-                return True
+            try:
+                if self.js(expression):
+                    return True
+                error = None
+            except RuntimeError as failed:
+                error = failed
             time.sleep(0.05)
+        if error:
+            raise error
         return False
 
     def key(self, key, code, keycode):
