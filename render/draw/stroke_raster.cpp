@@ -154,14 +154,16 @@ struct DashPhase {
       next();
     }
     remain = dashes[index] - offset;
-    while (remain < kResolution) {  // a dash that ends within the resolution of the start ends at it
-      next();
-      remain += dashes[index];
-    }
+    while (remain < kResolution) next_dash();  // a dash that ends within the resolution of the start ends at it
   }
   void next() {
     on = !on;
     index = (index + 1) % dashes.size();
+  }
+  /// On to the next dash (or gap), what was left of this one carried over.
+  void next_dash() {
+    next();
+    remain += dashes[index];
   }
   bool ended() const { return remain < kResolution; }
 };
@@ -208,8 +210,7 @@ bool add_subpath(std::vector<Piece>& pieces, std::vector<XY>& points, bool close
       if (!dash.ended()) continue;
       if (dash.on && !end_run(u)) return false;  // a dash ends at q
       if (!dash.on) run.push_back(q);             // a dash starts at q
-      dash.next();
-      dash.remain += dash.dashes[dash.index];  // what was left of the dash ended early goes to the next
+      dash.next_dash();
     }
   }
   const XY last_along = closed ? unit(points[n - 1], points[0]) : unit(points[n - 2], points[n - 1]);

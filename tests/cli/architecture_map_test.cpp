@@ -39,6 +39,12 @@ bool is_outside_source_tree(const fs::path& relative) {
   return hidden || top.rfind("build", 0) == 0 || name == "__pycache__";
 }
 
+/// Folders of data, not source: vendored code and the fuzzers' inputs.
+bool is_data_folder(const std::string& relative) {
+  return relative == "third_party" || relative.rfind("third_party/", 0) == 0 ||
+         relative.rfind("tests/fuzz/corpus", 0) == 0 || relative.rfind("tests/fuzz/regressions", 0) == 0;
+}
+
 /// Every folder under the repository root (relative to it) that directly holds a source file.
 std::vector<std::string> source_folders() {
   std::vector<std::string> folders;
@@ -114,8 +120,7 @@ TEST_CASE("architecture map: no source folder holds more than 25 files", "[docs]
   constexpr long kMostFiles = 25;
   std::vector<std::string> piles;
   for (const std::string& folder : source_folders()) {
-    if (folder == "." || folder.rfind("tests/fuzz/corpus", 0) == 0 || folder.rfind("tests/fuzz/regressions", 0) == 0)
-      continue;  // the root's few files; fuzz inputs are data, not source
+    if (folder == "." || is_data_folder(folder)) continue;  // the root's few files; data
     const auto entries = fs::directory_iterator(kRoot / folder);
     const long files = std::count_if(fs::begin(entries), fs::end(entries), [](const auto& e) { return e.is_regular_file(); });
     if (files > kMostFiles) piles.push_back(folder + " holds " + std::to_string(files) + " files");
@@ -145,9 +150,7 @@ TEST_CASE("architecture map: line 1 of every other source file says what the fil
     const fs::path relative = fs::relative(it->path(), kRoot);
     const std::string name = relative.generic_string();
     if (it->is_directory()) {
-      if (is_outside_source_tree(relative) || name == "third_party" || name == "tests/fuzz/corpus" ||
-          name == "tests/fuzz/regressions")
-        it.disable_recursion_pending();
+      if (is_outside_source_tree(relative) || is_data_folder(name)) it.disable_recursion_pending();
       continue;
     }
     const std::string ext = relative.extension().string();
