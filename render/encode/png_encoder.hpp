@@ -1,4 +1,4 @@
-// Encodes one frame as PNG: scanlines filtered and compressed with libdeflate.
+// Encodes one frame as PNG: scanlines packed as RGB or RGBA and compressed by deflate_scanlines.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -21,9 +21,9 @@ void pack_png_scanlines(const std::uint8_t* bgra, int width, int height, int str
 
 /// Compresses scanlines into a complete PNG file held in the first bytes of
 /// `png`, and returns its length. `png` only ever grows, so a buffer reused
-/// for every frame costs no allocation and no clearing. libdeflate at level 6
-/// with filter None: for line art several times faster than Cairo's own
-/// writer (zlib level 6 with adaptive filters), at a file of about its size.
+/// for every frame costs no allocation and no clearing. Filter None and
+/// deflate_scanlines: a drawn frame's bytes repeat the pixel to the left or the
+/// row above, which that compressor finds without searching.
 std::size_t encode_png(const PngScanlines& scanlines, std::vector<std::uint8_t>& png);
 
 /// Both steps at once, for a single image.

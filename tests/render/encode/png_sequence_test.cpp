@@ -24,7 +24,9 @@ using Catch::Matchers::Contains;
 using vibra::render::encode_png;
 using vibra::render::FramePattern;
 using vibra::render::OutputError;
+using vibra::render::pack_png_scanlines;
 using vibra::render::parse_frame_pattern;
+using vibra::render::PngScanlines;
 using vibra::render::PngSequenceWriter;
 using vibra::test::ScratchDirectory;
 
@@ -153,6 +155,32 @@ TEST_CASE("encode_png: an opaque image decodes to the same pixels, as RGB", "[pn
   REQUIRE(back.height == image.height);
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) REQUIRE(back.at(x, y) == image.at(x, y));
+}
+
+TEST_CASE("pack_png_scanlines: every width from 1 to 19 packs R, G, B in order, and one translucent pixel anywhere makes RGBA",
+          "[png]") {
+  for (int width = 1; width <= 19; ++width) {
+    Image image(width, 2, 1);
+    for (int x = 0; x < width; ++x) image.at(x, 0) = image.at(x, 1) = argb(255, 10 + x, 100 + x, 200 + x);
+    PngScanlines packed;
+    pack_png_scanlines(image.bytes(), width, 2, image.stride, packed);
+    INFO("width " << width);
+    REQUIRE(packed.opaque);
+    REQUIRE(packed.bytes.size() == 2 * (3 * std::size_t(width) + 1));
+    for (int y = 0; y < 2; ++y) {
+      const std::uint8_t* row = packed.bytes.data() + y * (3 * width + 1);
+      CHECK(row[0] == 0);  // filter None
+      for (int x = 0; x < width; ++x) CHECK((row[1 + 3 * x] == 10 + x && row[2 + 3 * x] == 100 + x && row[3 + 3 * x] == 200 + x));
+    }
+    for (int at = 0; at < width; ++at) {  // the alpha check sees every pixel, the vector loop's and the tail's
+      Image translucent = image;
+      translucent.at(at, 1) = argb(128, 5, 50, 100);
+      pack_png_scanlines(translucent.bytes(), width, 2, translucent.stride, packed);
+      INFO("translucent pixel at " << at);
+      CHECK_FALSE(packed.opaque);
+      CHECK(packed.bytes.size() == 2 * (4 * std::size_t(width) + 1));
+    }
+  }
 }
 
 TEST_CASE("encode_png: premultiplied alpha round-trips within 1", "[png]") {
