@@ -5,8 +5,12 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <vector>
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 namespace vibra::render {
 
@@ -342,7 +346,8 @@ struct Coverage {
   /// Ready for a stroke in a clip of `width` x `height` (all untouched: the
   /// last stroke put back what it touched, so a stroke costs what it covers).
   void prepare(int width, int height) {
-    if (cells.size() < std::size_t(width) * height) cells.assign(std::size_t(width) * height, 0);
+    // 3 cells of room past the last: a vector loop reads and rewrites them unchanged.
+    if (cells.size() < std::size_t(width) * height + 3) cells.assign(std::size_t(width) * height + 3, 0);
     if (lo.size() < std::size_t(height)) lo.assign(height, INT_MAX), hi.assign(height, INT_MIN);
   }
   void touch(int r, int first, int last) {
@@ -390,7 +395,7 @@ bool long_piece_columns(const Piece& p, const PieceGeometry& g, const Plan& plan
 /// across the segment from its start, not stepped column by column, so that
 /// a pixel's coverage is the same whatever part of the row a clip lets the
 /// stroke touch.
-void cover_plain_row(const Piece& p, const PieceGeometry& g, int row, int first, int last, std::uint8_t* cells) {
+void cover_plain_row_scalar(const Piece& p, const PieceGeometry& g, int row, int first, int last, std::uint8_t* cells) {
   const double py = row + 0.5 - p.a.y;
   for (int column = first; column <= last; ++column) {
     const double px = column + 0.5 - p.a.x;
@@ -399,6 +404,58 @@ void cover_plain_row(const Piece& p, const PieceGeometry& g, int row, int first,
     const double distance = beyond > 0 ? std::sqrt(beyond * beyond + across * across) + g.round_end : std::abs(across);
     cells[column] = std::max(cells[column], mask_of(std::clamp(g.h + 0.5 - distance, 0.0, 1.0)));
   }
+}
+
+#if defined(__x86_64__)
+/// The same, four pixels at a time (the last group masked: most rows of a
+/// curve's piece are a few pixels), with the same operations in the same
+/// order (IEEE arithmetic, no fused multiply-add), so the same masks to the
+/// bit: a fifth of a scene's drawing was this loop.
+[[gnu::target("avx2")]] void cover_plain_row_avx2(const Piece& p, const PieceGeometry& g, int row, int first, int last,
+                                                 std::uint8_t* cells) {
+  const double py = row + 0.5 - p.a.y;
+  const __m256d half = _mm256_set1_pd(0.5), ax = _mm256_set1_pd(p.a.x), ux = _mm256_set1_pd(g.ux),
+                uy = _mm256_set1_pd(g.uy), py_uy = _mm256_set1_pd(py * g.uy), py_ux = _mm256_set1_pd(py * g.ux),
+                zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1), length = _mm256_set1_pd(g.length),
+                round_end = _mm256_set1_pd(g.round_end), edge = _mm256_set1_pd(g.h + 0.5),
+                sign = _mm256_set1_pd(-0.0);
+  const __m128 scale = _mm_set1_ps(255), rounding = _mm_set1_ps(0.5f);
+  for (int column = first; column <= last; column += 4) {
+    const __m256d px = _mm256_sub_pd(_mm256_add_pd(_mm256_cvtepi32_pd(_mm_setr_epi32(column, column + 1, column + 2, column + 3)), half), ax);
+    const __m256d along = _mm256_add_pd(_mm256_mul_pd(px, ux), py_uy);
+    const __m256d across = _mm256_sub_pd(_mm256_mul_pd(px, uy), py_ux);
+    const __m256d beyond = _mm256_max_pd(_mm256_max_pd(zero, _mm256_xor_pd(along, sign)), _mm256_sub_pd(along, length));
+    const __m256d round = _mm256_add_pd(
+        _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(beyond, beyond), _mm256_mul_pd(across, across))), round_end);
+    const __m256d distance = _mm256_blendv_pd(_mm256_andnot_pd(sign, across), round, _mm256_cmp_pd(beyond, zero, _CMP_GT_OQ));
+    const __m256d coverage = _mm256_min_pd(_mm256_max_pd(_mm256_sub_pd(edge, distance), zero), one);
+    const __m128i masks = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(_mm256_cvtpd_ps(coverage), scale), rounding));
+    const __m128i bytes = _mm_packus_epi16(_mm_packus_epi32(masks, masks), _mm_setzero_si128());
+    // Past `last` (at most 3 cells, which Coverage keeps room for) each cell keeps its value.
+    const int valid = std::min(4, last - column + 1);
+    const std::uint32_t keep = valid == 4 ? 0xffffffffu : (std::uint32_t(1) << (8 * valid)) - 1;
+    std::uint32_t old_cells;
+    std::memcpy(&old_cells, cells + column, 4);
+    const __m128i ours = _mm_and_si128(bytes, _mm_cvtsi32_si128(int(keep)));
+    const std::uint32_t merged = static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_max_epu8(ours, _mm_cvtsi32_si128(int(old_cells)))));
+    std::memcpy(cells + column, &merged, 4);
+  }
+}
+#endif
+
+using CoverRow = void (*)(const Piece&, const PieceGeometry&, int, int, int, std::uint8_t*);
+
+CoverRow fastest_cover_plain_row() {
+#if defined(__x86_64__)
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx2")) return cover_plain_row_avx2;
+#endif
+  return cover_plain_row_scalar;
+}
+
+void cover_plain_row(const Piece& p, const PieceGeometry& g, int row, int first, int last, std::uint8_t* cells) {
+  static const CoverRow cover_row = fastest_cover_plain_row();
+  cover_row(p, g, row, first, last, cells);
 }
 
 /// One row's pixels of a piece with a cut end or a fence (see cover_plain_row).

@@ -1,7 +1,8 @@
-// OccupancyGrid: a drawing's outline rasterized into cells with a summed-area table, to test whether a box is free.
+// OccupancyGrid: a drawing's outline rasterized into cells, one bit each, to test whether a box is free.
 #include "render/labels/occupancy_grid.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace vibra::render {
@@ -18,8 +19,13 @@ int clamped_floor(double v, int lo, int hi) {
 
 namespace {
 /// Storage of grids that are gone, for the next grid in this thread.
-thread_local std::vector<std::vector<unsigned char>> spare_cells;
-thread_local std::vector<std::vector<int>> spare_sums;
+thread_local std::vector<std::vector<std::uint64_t>> spare_bits;
+
+/// Bits [first, last) of a 64-bit word, 0 <= first < last <= 64.
+std::uint64_t bits_between(int first, int last) {
+  const std::uint64_t below_last = last == 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << last) - 1;
+  return below_last & ~((std::uint64_t(1) << first) - 1);
+}
 }  // namespace
 
 OccupancyGrid::OccupancyGrid(const PixelRect& area, double cell, double clearance)
@@ -27,16 +33,38 @@ OccupancyGrid::OccupancyGrid(const PixelRect& area, double cell, double clearanc
       cell_(std::max(1.0, cell)),
       clearance_(clearance),
       columns_(std::max(1, static_cast<int>(std::ceil(area.w / cell_)))),
-      rows_(std::max(1, static_cast<int>(std::ceil(area.h / cell_)))) {
-  if (!spare_cells.empty()) buffers_.cells = std::move(spare_cells.back()), spare_cells.pop_back();
-  if (!spare_sums.empty()) buffers_.sums = std::move(spare_sums.back()), spare_sums.pop_back();
-  buffers_.cells.assign(static_cast<size_t>(columns_) * rows_, 0);
+      rows_(std::max(1, static_cast<int>(std::ceil(area.h / cell_)))),
+      words_per_row_((columns_ + 63) / 64) {
+  if (!spare_bits.empty()) bits_ = std::move(spare_bits.back()), spare_bits.pop_back();
+  bits_.assign(static_cast<size_t>(words_per_row_) * rows_, 0);
 }
 
 OccupancyGrid::~OccupancyGrid() {
   constexpr size_t kKept = 4;  // grids alive at once in one thread, at most
-  if (spare_cells.size() < kKept) spare_cells.push_back(std::move(buffers_.cells));
-  if (spare_sums.size() < kKept) spare_sums.push_back(std::move(buffers_.sums));
+  if (spare_bits.size() < kKept) spare_bits.push_back(std::move(bits_));
+}
+
+void OccupancyGrid::mark(int row, int first, int last) {
+  std::uint64_t* words = bits_.data() + static_cast<size_t>(row) * words_per_row_;
+  for (int column = first; column <= last;) {
+    const int word = column / 64, end = std::min(last + 1, (word + 1) * 64);
+    words[word] |= bits_between(column % 64, end - word * 64);
+    column = end;
+  }
+}
+
+#if defined(__x86_64__)
+[[gnu::target_clones("popcnt", "default")]]  // the instruction, where the processor has it, not libgcc's loop
+#endif
+long long OccupancyGrid::count(int row, int first, int last) const {
+  const std::uint64_t* words = bits_.data() + static_cast<size_t>(row) * words_per_row_;
+  long long n = 0;
+  for (int column = first; column < last;) {
+    const int word = column / 64, end = std::min(last, (word + 1) * 64);
+    n += std::popcount(words[word] & bits_between(column % 64, end - word * 64));
+    column = end;
+  }
+  return n;
 }
 
 OccupancyGrid::CellRange OccupancyGrid::cells_of(const PixelRect& r) const {
@@ -91,7 +119,7 @@ void OccupancyGrid::mark_segment(const Point& a, const Point& b, double reach) {
     // Columns whose centre x = area.x + (column + 0.5) cell lies in [lo, hi].
     const int c0 = clamped_floor(std::ceil((lo - area_.x) / cell_ - 0.5), 0, columns_);
     const int c1 = clamped_floor((hi - area_.x) / cell_ - 0.5, -1, columns_ - 1);
-    for (int column = c0; column <= c1; ++column) mark(column, row);
+    if (c0 <= c1) mark(row, c0, c1);
   }
 }
 
@@ -113,7 +141,7 @@ void OccupancyGrid::mark_polygon(const std::vector<Point>& polygon) {
     for (size_t k = 0; k + 1 < xs.size(); k += 2) {
       const int c0 = clamped_floor((xs[k] - area_.x) / cell_, 0, columns_);
       const int c1 = clamped_floor((xs[k + 1] - area_.x) / cell_, -1, columns_ - 1);
-      for (int column = c0; column <= c1; ++column) mark(column, row);
+      if (c0 <= c1) mark(row, c0, c1);
     }
   }
 }
@@ -127,7 +155,6 @@ void OccupancyGrid::add(const OutlineShape& shape) {
     return;
   for (const auto& [a, c] : shape.segments) mark_segment(a, c, shape.half_width + clearance_);
   for (const auto& polygon : shape.polygons) mark_polygon(polygon);
-  sums_current_ = false;
 }
 
 void OccupancyGrid::add_box(const PixelRect& r) {
@@ -135,41 +162,20 @@ void OccupancyGrid::add_box(const PixelRect& r) {
   if (range.c0 <= range.c1 && range.r0 <= range.r1) boxes_.push_back(range);
 }
 
-void OccupancyGrid::build_sums() {
-  const size_t stride = static_cast<size_t>(columns_) + 1;
-  std::vector<int>& sums = buffers_.sums;
-  sums.resize(static_cast<size_t>(rows_ + 1) * stride);
-  std::fill(sums.begin(), sums.begin() + static_cast<std::ptrdiff_t>(stride), 0);  // row 0
-  const unsigned char* cells = buffers_.cells.data();
-  for (int row = 0; row < rows_; ++row) {
-    int* above = sums.data() + static_cast<size_t>(row) * stride;
-    int* here = above + stride;
-    here[0] = 0;
-    int along = 0;  // this row's cells so far
-    for (int column = 0; column < columns_; ++column) {
-      along += cells[static_cast<size_t>(row) * columns_ + column];
-      here[column + 1] = above[column + 1] + along;
-    }
-  }
-  sums_current_ = true;
-}
-
-long long OccupancyGrid::taken(const PixelRect& r) {
-  if (!sums_current_) build_sums();
+long long OccupancyGrid::taken(const PixelRect& r) const {
   const int c0 = clamped_floor((r.x - area_.x) / cell_, 0, columns_);
   const int c1 = clamped_floor((r.x + r.w - area_.x) / cell_ + 1, 0, columns_);
   const int r0 = clamped_floor((r.y - area_.y) / cell_, 0, rows_);
   const int r1 = clamped_floor((r.y + r.h - area_.y) / cell_ + 1, 0, rows_);
-  const size_t stride = static_cast<size_t>(columns_) + 1;
-  auto at = [&](int row, int column) { return static_cast<long long>(buffers_.sums[static_cast<size_t>(row) * stride + column]); };
-  long long count = at(r1, c1) - at(r0, c1) - at(r1, c0) + at(r0, c0);
+  long long cells = 0;
+  for (int row = r0; row < r1; ++row) cells += count(row, c0, c1);
   // The query covers columns c0 .. c1 - 1 and rows r0 .. r1 - 1.
   for (const CellRange& b : boxes_) {
     const long long across = std::min(c1 - 1, b.c1) - std::max(c0, b.c0) + 1;
     const long long down = std::min(r1 - 1, b.r1) - std::max(r0, b.r0) + 1;
-    if (across > 0 && down > 0) count += across * down;
+    if (across > 0 && down > 0) cells += across * down;
   }
-  return count;
+  return cells;
 }
 
 }  // namespace vibra::render

@@ -1,9 +1,10 @@
 // The label placer's occupancy grid (render/labels/occupancy_grid.hpp):
 // which cells a stroke takes, against the definition cell by cell, and
-// placed labels' boxes counted without rebuilding the table.
+// placed labels' boxes counted, and a box's count the sum of its cells'.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "render/labels/occupancy_grid.hpp"
 #include "render/labels/outline.hpp"
@@ -61,4 +62,36 @@ TEST_CASE("occupancy grid: a placed label's box is taken with its clearance, and
   CHECK(grid.taken({label.x + label.w + kClearance + kCell + 1, label.y, 5, 5}) == 0);  // beyond it
   CHECK(grid.taken({label.x, label.y - kClearance - kCell - 6, 30, 5}) == 0);
   CHECK(grid.taken({0, 0, 1000, 1000}) == grid.taken({kArea.x, kArea.y, kArea.w, kArea.h}));
+}
+
+TEST_CASE("occupancy grid: a box's count is the sum of its cells', across every word boundary of the bit rows",
+          "[labels]") {
+  // 100 columns: rows of two 64-bit words, so boxes start and end on both
+  // sides of column 64 and at the row's last column.
+  const int columns = int(std::ceil(kArea.w / kCell)), rows = int(std::ceil(kArea.h / kCell));
+  REQUIRE(columns > 64);
+  OccupancyGrid grid(kArea, kCell, kClearance);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> x(0, 320), y(10, 230);
+  for (int k = 0; k < 12; ++k) {
+    OutlineShape shape;
+    const Point a(x(random), y(random)), b(x(random), y(random));
+    shape.segments = {{a, b}};
+    shape.half_width = 0.5;
+    shape.bounds = {std::min(a.x(), b.x()), std::min(a.y(), b.y()), std::abs(a.x() - b.x()) + 1, std::abs(a.y() - b.y()) + 1};
+    grid.add(shape);
+  }
+  std::vector<int> taken(static_cast<size_t>(columns) * rows);
+  for (int row = 0; row < rows; ++row)
+    for (int column = 0; column < columns; ++column) taken[row * columns + column] = grid.taken(inside_cell(column, row)) > 0;
+  for (int first : {0, 1, 62, 63, 64, 65, 90})
+    for (int last : {first, 63, 64, 65, 98, columns - 1}) {
+      if (last < first) continue;
+      long long expected = 0;
+      for (int row = 5; row <= 40; ++row)
+        for (int column = first; column <= last; ++column) expected += taken[row * columns + column];
+      const PixelRect box{kArea.x + (first + 0.25) * kCell, kArea.y + 5.25 * kCell, (last - first + 0.5) * kCell, 35.5 * kCell};
+      INFO("columns " << first << " to " << last);
+      CHECK(grid.taken(box) == expected);
+    }
 }
