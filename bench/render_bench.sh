@@ -6,6 +6,7 @@
 #
 #   bench/render_bench.sh [FRAMES] [png|video|window|scenes|trail|compare]   (default 300 frames,
 #                                             every case; installs the peers' packages first)
+#   REPEAT=N (rounds, default 5), VIBRA=path (the build to time), SCENES="pendulum orbit" (the scenes case's scenes)
 #
 # Cases: PNG sequences (--layout fbd) of the pendulum against png_frames.py
 # and of the spring-dashpot scene against spring_dashpot_frames.py; MP4 and
@@ -126,7 +127,7 @@ echo
 echo "== Built-in scenes, MP4 (layout fbd+plot), about $FRAMES frames (periods = FRAMES/60: 60 frames a period)"
 periods=$(( FRAMES / 60 > 0 ? FRAMES / 60 : 1 ))
 for dims in 1280x720 1920x1080; do
-  for scene in pendulum spring spring_dashpot bumpy_road washing_machine sliding_box bouncing_ball rlc elastic_pendulum orbit; do
+  for scene in ${SCENES:-pendulum spring spring_dashpot bumpy_road washing_machine sliding_box bouncing_ball rlc elastic_pendulum orbit}; do
     scene_against_x264 "$dims" $scene --set periods=$periods
   done
 done
