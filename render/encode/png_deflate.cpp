@@ -18,6 +18,7 @@ constexpr std::size_t kWindow = 32768;                    // deflate's farthest 
 constexpr std::size_t kLongestMatch = 258, kShortestMatch = 3;
 constexpr std::size_t kStoredMost = 65535;  // bytes in one stored block
 constexpr std::uint32_t kMatchFlag = 0x80000000u;
+constexpr int kHashBits = 14;  // where four bytes were last seen: 16K positions, 64 KiB
 constexpr int kEndOfBlock = 256, kLiteralLengthSymbols = 286, kDistanceSymbols = 30, kCodeLengthSymbols = 19;
 
 // RFC 1951, 3.2.5: the first length and distance of each symbol, and its extra bits.
@@ -64,7 +65,7 @@ struct BlockCounts {
 /// Tokens for data[begin, end): the longer of the repeats one pixel back and
 /// one row up, when it is at least deflate's shortest match; else a literal.
 void tokenize(const std::uint8_t* data, std::size_t begin, std::size_t end, std::size_t row_bytes, std::size_t pixel_bytes,
-              std::vector<std::uint32_t>& tokens, BlockCounts& counts) {
+              std::vector<std::uint32_t>& tokens, std::vector<std::uint32_t>& last_seen, BlockCounts& counts) {
   tokens.clear();
   const bool up_reaches = row_bytes <= kWindow;
   for (std::size_t at = begin; at < end;) {
@@ -78,6 +79,17 @@ void tokenize(const std::uint8_t* data, std::size_t begin, std::size_t end, std:
         if (at < d || d > kWindow) continue;
         if (const std::size_t up = repeat_length(data, at, d, limit); up > length) length = up, distance = d;
       }
+    // Where none of those repeat, the last place these four bytes were seen
+    // (a glyph, a tick, a hatch drawn again elsewhere), by a hash of them.
+    if (length < kShortestMatch + 1 && at + 4 <= end) {
+      std::uint32_t key;
+      std::memcpy(&key, data + at, 4);
+      std::uint32_t& seen = last_seen[(key * 2654435761u) >> (32 - kHashBits)];
+      if (seen != 0 && at + 1 - seen <= kWindow)
+        if (const std::size_t again = repeat_length(data, at, at + 1 - seen, limit); again > length)
+          length = again, distance = at + 1 - seen;
+      seen = static_cast<std::uint32_t>(at + 1);
+    }
     if (length < kShortestMatch) {
       tokens.push_back(data[at]);
       ++counts.literal_length[data[at++]];
@@ -242,11 +254,12 @@ std::size_t deflate_scanlines(const std::uint8_t* data, std::size_t size, std::s
   if (out.size() < bound) out.resize(bound);
   out[0] = 0x78, out[1] = 0x01;  // deflate, 32 KiB window, fastest-level hint
   BitWriter bits(out.data() + 2);
+  scratch.last_seen.assign(std::size_t(1) << kHashBits, 0);  // positions + 1 of this image; 0: none
   std::size_t begin = 0;
   do {
     const std::size_t end = std::min(size, begin + kBlockInput);
     BlockCounts counts;
-    tokenize(data, begin, end, row_bytes, static_cast<std::size_t>(pixel_bytes), scratch.tokens, counts);
+    tokenize(data, begin, end, row_bytes, static_cast<std::size_t>(pixel_bytes), scratch.tokens, scratch.last_seen, counts);
     const BlockCode code = plan_block(counts);
     if ((code.bits + 7) / 8 < stored_bytes(end - begin)) write_huffman_block(bits, code, scratch.tokens, end == size);
     else write_stored_blocks(bits, data, begin, end, end == size);

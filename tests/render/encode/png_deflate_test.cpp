@@ -130,3 +130,31 @@ TEST_CASE("deflate_scanlines: a white 1080p frame compresses like a run, a drawi
   CHECK(deflate_scanlines(blank.data(), blank.size(), 1920 * 3 + 1, 3, scratch, stream) < 8000);
   CHECK(deflate_scanlines(white.data(), white.size(), 1920 * 3 + 1, 3, scratch, stream) < white.size() / 50);
 }
+
+TEST_CASE("deflate_scanlines: a glyph drawn again elsewhere in the row costs a fraction of drawing it the first time",
+          "[png][deflate]") {
+  // A 12x12 patch of noise (no pixel repeats its left or upper neighbour),
+  // stamped at x = 40 and again at x = 300 of each row: the second stamp is
+  // found by where its bytes were last seen, 260 pixels back.
+  const int width = 400, height = 12;
+  std::mt19937 random(3);
+  std::vector<std::uint8_t> glyph(12 * 12 * 3);
+  for (auto& b : glyph) b = static_cast<std::uint8_t>(random());
+  auto image = [&](bool twice) {
+    std::vector<std::uint8_t> bytes((width * 3 + 1) * height, 255);
+    for (int y = 0; y < height; ++y) {
+      bytes[std::size_t(y) * (width * 3 + 1)] = 0;
+      for (int x0 : twice ? std::vector<int>{40, 300} : std::vector<int>{40})
+        std::copy_n(glyph.begin() + y * 36, 36, bytes.begin() + std::size_t(y) * (width * 3 + 1) + 1 + 3 * x0);
+    }
+    return bytes;
+  };
+  DeflateScratch scratch;
+  std::vector<std::uint8_t> stream;
+  const auto once = image(false), twice = image(true);
+  const std::size_t one = deflate_scanlines(once.data(), once.size(), width * 3 + 1, 3, scratch, stream);
+  const std::size_t two = deflate_scanlines(twice.data(), twice.size(), width * 3 + 1, 3, scratch, stream);
+  CHECK(inflate(stream, two, twice.size()) == twice);
+  INFO("one glyph: " << one << " bytes, two: " << two);
+  CHECK(two < one + (one - 40) / 4);  // the second stamp: a few matches a row, not 432 literals again
+}
