@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include "render/encode/png_encoder.hpp"
+#include "render/encode/png/png_encoder.hpp"
 #include "render/output/output_error.hpp"
 
 namespace vibra::render {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "render/encode/png_sequence.hpp"
+#include "render/encode/png/png_sequence.hpp"
 #include "render/encode/video_writer.hpp"
 #include "render/encode/y4m_stream.hpp"
 #include "render/output/output_error.hpp"

@@ -19,7 +19,7 @@
 #include "render/draw/canvas.hpp"
 #include "render/draw/text.hpp"
 #include "render/encode/output_kind.hpp"
-#include "render/encode/png_sequence.hpp"
+#include "render/encode/png/png_sequence.hpp"
 #include "render/encode/join/video_concat.hpp"
 #include "render/output/output_error.hpp"
 #include "render/output/output_path.hpp"

@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include "render/encode/huffman_code.hpp"
-#include "render/encode/png_deflate.hpp"
+#include "render/encode/png/huffman_code.hpp"
+#include "render/encode/png/png_deflate.hpp"
 
 using vibra::render::DeflateScratch;
 using vibra::render::deflate_scanlines;

@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "render/encode/png_encoder.hpp"  // PngScanlines, which the writer queues
+#include "render/encode/png/png_encoder.hpp"  // PngScanlines, which the writer queues
 #include "render/output/file_listing.hpp"
 #include "render/output/frame_ledger.hpp"
 #include "render/output/temporary_file.hpp"

@@ -1,5 +1,5 @@
 // PngSequenceWriter: frames as numbered PNG files, compressed on worker threads.
-#include "render/encode/png_sequence.hpp"
+#include "render/encode/png/png_sequence.hpp"
 
 #include <algorithm>
 #include <cctype>

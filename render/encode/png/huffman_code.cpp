@@ -1,5 +1,5 @@
 // Length-limited canonical Huffman codes from symbol counts, in deflate's form (RFC 1951, 3.2.2).
-#include "render/encode/huffman_code.hpp"
+#include "render/encode/png/huffman_code.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -16,7 +16,7 @@
 
 #include "argb_image.hpp"
 #include "cli_support.hpp"
-#include "render/encode/png_sequence.hpp"
+#include "render/encode/png/png_sequence.hpp"
 #include "render/output/output_error.hpp"
 
 namespace fs = std::filesystem;

@@ -1,5 +1,5 @@
 // Encodes one frame as PNG: scanlines packed as RGB or RGBA and compressed by deflate_scanlines.
-#include "render/encode/png_encoder.hpp"
+#include "render/encode/png/png_encoder.hpp"
 
 #include <libdeflate.h>
 
@@ -10,7 +10,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "render/encode/png_deflate.hpp"
+#include "render/encode/png/png_deflate.hpp"
 
 namespace vibra::render {
 

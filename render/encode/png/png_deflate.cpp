@@ -1,5 +1,5 @@
 // A fast zlib stream for PNG scanlines of drawn frames, whose bytes mostly repeat the pixel to the left or the row above.
-#include "render/encode/png_deflate.hpp"
+#include "render/encode/png/png_deflate.hpp"
 
 #include <libdeflate.h>
 
@@ -8,7 +8,7 @@
 #include <bit>
 #include <cstring>
 
-#include "render/encode/huffman_code.hpp"
+#include "render/encode/png/huffman_code.hpp"
 
 namespace vibra::render {
 
