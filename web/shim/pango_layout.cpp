@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,7 +24,7 @@ struct _PangoFontMap {};
 
 namespace vibra::web::shim {
 
-/// A run placed on the layout's line.
+/// A glyph placed on the layout's line.
 struct PlacedRun {
   std::string text, font;
   double x, rise, size;  ///< rise in pixels, upwards
@@ -51,15 +52,39 @@ std::string css_font(const _PangoFontDescription& f, const vibra::web::shim::Run
   return css + px + " '" + f.family + "'";
 }
 
+/// A text's extent, measured once per font (a frame sets the same few
+/// labels again and again); the cache starts over past a bound.
+vibra::web::TextExtent measured(const std::string& font, double size, const std::string& text) {
+  static std::map<std::string, vibra::web::TextExtent> cache;
+  constexpr std::size_t kMostTexts = 8192;
+  const std::string key = font + '\0' + text;
+  if (auto it = cache.find(key); it != cache.end()) return it->second;
+  if (cache.size() >= kMostTexts) cache.clear();
+  return cache[key] = vibra::web::text_measure()(font, size, text);
+}
+
+/// The runs split into glyphs (one per UTF-8 character). As Pango on an
+/// image surface (hinted metrics), each glyph advances a whole number of
+/// pixels: its advance within the run (kerning included) rounded.
 std::vector<PlacedRun> place(const _PangoLayout& layout, const std::vector<vibra::web::shim::MarkupRun>& runs) {
   std::vector<PlacedRun> placed;
   double x = 0;
   for (const auto& run : runs) {
     const double size = layout.font.size * run.style.scale;
-    PlacedRun p{run.text, css_font(layout.font, run.style, size), x, run.style.rise * layout.font.size, size, {}};
-    p.extent = vibra::web::text_measure()(p.font, size, run.text);
-    x += p.extent.advance;
-    placed.push_back(p);
+    const std::string font = css_font(layout.font, run.style, size);
+    double run_width = 0;  // of the run's text up to the glyph
+    for (std::size_t i = 0; i < run.text.size();) {
+      std::size_t next = i + 1;
+      while (next < run.text.size() && (static_cast<unsigned char>(run.text[next]) & 0xC0) == 0x80) ++next;
+      PlacedRun p{run.text.substr(i, next - i), font, x, run.style.rise * layout.font.size, size, {}};
+      p.extent = measured(font, size, p.text);
+      const double width = measured(font, size, run.text.substr(0, next)).advance;
+      p.extent.advance = std::round(width - run_width);
+      run_width = width;
+      x += p.extent.advance;
+      placed.push_back(p);
+      i = next;
+    }
   }
   return placed;
 }

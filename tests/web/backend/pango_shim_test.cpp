@@ -86,3 +86,19 @@ TEST_CASE("a layout wider than its width ends in an ellipsis that fits", "[web-b
   pango_layout_get_pixel_extents(layout.get(), nullptr, &logical);
   CHECK(logical.width == 30);  // "abcd…": five characters of 6 px
 }
+
+TEST_CASE("each glyph advances a whole number of pixels, as Pango's hinted metrics on an image", "[web-backend]") {
+  const cairo_rectangle_t extents{0, 0, 200, 100};
+  std::shared_ptr<cairo_surface_t> s(cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, &extents),
+                                     cairo_surface_destroy);
+  std::shared_ptr<cairo_t> cr(cairo_create(s.get()), cairo_destroy);
+  const auto layout = layout_of(cr.get(), "abc", 11);  // 6.6 px a glyph, measured
+  PangoRectangle logical;
+  pango_layout_get_pixel_extents(layout.get(), nullptr, &logical);
+  CHECK(logical.width == 21);  // each advance within the run, 6.6 px, rounded: 7 + 7 + 7, not 19.8
+  cairo_move_to(cr.get(), 0, 0);
+  pango_cairo_show_layout(cr.get(), layout.get());
+  const std::vector<double>& n = vibra::web::commands_of(s.get()).numbers();
+  REQUIRE(n.size() == 3 + 3 * 19);  // the move, then a text operation a glyph
+  CHECK((n[3 + 15] == 0 && n[22 + 15] == 7 && n[41 + 15] == 14));
+}
