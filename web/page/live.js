@@ -145,7 +145,8 @@ function renderCommand() {
 
 // The values and time a share link holds (#Theta=60&alpha=0.4&t=3).
 function readHash() {
-  const values = Object.assign({}, page.values);
+  const values = {};
+  for (const key of page.keys) values[key.name] = startValue(key);
   let t = 0;
   for (const part of location.hash.replace(/^#/, '').split('&').filter(Boolean)) {
     const [name, value] = part.split('=').map(decodeURIComponent);
@@ -162,6 +163,7 @@ function applyHash() {
   if (reason) open(page.values);
   else page.values = values;
   for (const key of page.keys) syncControls(key.name, String(page.values[key.name]));
+  if (!reason) for (const input of document.querySelectorAll('[data-key]')) input.setAttribute('aria-invalid', 'false');
   draw(Number.isFinite(t) ? t : 0);
 }
 
