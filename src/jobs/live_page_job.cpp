@@ -1,6 +1,8 @@
 // The live page job: the scene checked natively, then the page and its companion folder of browser files put in place together.
 #include "jobs/live_page_job.hpp"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -37,10 +39,12 @@ std::string read_all(const fs::path& file) {
   return text.str();
 }
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
-    text.replace(at, from.size(), to);
-  return text;
+std::string replaced(const std::string& text, const std::string& from, const std::string& to) {
+  std::string out;
+  std::size_t done = 0;
+  for (std::size_t at = text.find(from); at != std::string::npos; done = at + from.size(), at = text.find(from, done))
+    out.append(text, done, at - done).append(to);
+  return out.append(text, done, std::string::npos);
 }
 
 /// The page's settings as JSON: scene, model, base settings, the keys' starting values.
@@ -49,11 +53,13 @@ std::string config_json(const LivePageRequest& r) {
   for (const Setting& s : r.scene.model_settings) initial[s.key] = s.value;
   std::string json = "{\"scene\":" + render::json_string(r.scene_name) + ",\"model\":" +
                      render::json_string(r.scene.model) + ",\"base\":[";
-  for (std::size_t i = 0; i < r.base.size(); ++i) json += (i ? "," : "") + render::json_string(r.base[i]);
+  for (std::size_t i = 0; i < r.base.size(); ++i) json.append(i ? "," : "").append(render::json_string(r.base[i]));
   json += "],\"initial\":{";
-  bool first = true;
-  for (const auto& [key, value] : initial)
-    json += (first ? "" : ",") + render::json_string(key) + ":" + render::json_string(value), first = false;
+  const char* comma = "";
+  for (const auto& [key, value] : initial) {
+    json.append(comma).append(render::json_string(key)).append(":").append(render::json_string(value));
+    comma = ",";
+  }
   // "</" never closes the script element the JSON sits in.
   return replaced(json + "}}", "</", "<\\/");
 }
@@ -80,11 +86,20 @@ void check_scene(const LivePageRequest& r) {
 
 }  // namespace
 
-fs::path live_assets_folder() {
+/// Where this code is loaded from: the vibra executable, or Python's module.
+fs::path loaded_from() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<const void*>(&loaded_from), &info) && info.dli_fname)
+    return fs::absolute(info.dli_fname).lexically_normal();
   std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  for (const fs::path& folder : {exe.parent_path() / "live", exe.parent_path().parent_path() / "share/vibra/live"})
-    if (!ec && fs::exists(folder / "vibra_live.js")) return folder;
+  return fs::read_symlink("/proc/self/exe", ec);
+}
+
+fs::path live_assets_folder() {
+  // build/vibra and build/python/vibra/_vibra*.so both reach build/live/.
+  const fs::path here = fs::canonical(loaded_from()).parent_path();
+  for (const fs::path& folder : {here / "live", here.parent_path() / "share/vibra/live", here / "../../live"})
+    if (fs::exists(folder / "vibra_live.js")) return folder.lexically_normal();
   throw UsageError("--live needs the browser build (vibra_live.js), which this vibra was built without: "
                    "install the Debian package emscripten and build again with -DVIBRA_WEB=ON");
 }

@@ -19,8 +19,9 @@ struct LivePageRequest {
 };
 
 /// Where the browser build's files are (vibra_live.js, the page's script
-/// and style, the fonts): `live/` beside the executable in a build, else
-/// `share/vibra/live/` of the installation. Throws UsageError naming how to
+/// and style, the fonts): `live/` beside the executable in a build (and two
+/// folders up from Python's module there), else `share/vibra/live/` of the
+/// installation. Throws UsageError naming how to
 /// build them when neither is there.
 std::filesystem::path live_assets_folder();
 
