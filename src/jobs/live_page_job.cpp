@@ -86,20 +86,24 @@ void check_scene(const LivePageRequest& r) {
 
 }  // namespace
 
-/// Where this code is loaded from: the vibra executable, or Python's module.
-fs::path loaded_from() {
+/// The folders this code may be loaded from: the running executable's
+/// (vibra), and the file holding this function (Python's module; for the
+/// executable, dladdr names it as it was invoked, which may not be a path).
+std::vector<fs::path> loaded_from() {
+  std::vector<fs::path> folders;
+  std::error_code ec;
+  if (const fs::path exe = fs::canonical("/proc/self/exe", ec); !ec) folders.push_back(exe.parent_path());
   Dl_info info{};
   if (dladdr(reinterpret_cast<const void*>(&loaded_from), &info) && info.dli_fname)
-    return fs::absolute(info.dli_fname).lexically_normal();
-  std::error_code ec;
-  return fs::read_symlink("/proc/self/exe", ec);
+    if (const fs::path file = fs::canonical(info.dli_fname, ec); !ec) folders.push_back(file.parent_path());
+  return folders;
 }
 
 fs::path live_assets_folder() {
   // build/vibra and build/python/vibra/_vibra*.so both reach build/live/.
-  const fs::path here = fs::canonical(loaded_from()).parent_path();
-  for (const fs::path& folder : {here / "live", here.parent_path() / "share/vibra/live", here / "../../live"})
-    if (fs::exists(folder / "vibra_live.js")) return folder.lexically_normal();
+  for (const fs::path& here : loaded_from())
+    for (const fs::path& folder : {here / "live", here.parent_path() / "share/vibra/live", here / "../../live"})
+      if (fs::exists(folder / "vibra_live.js")) return folder.lexically_normal();
   throw UsageError("--live needs the browser build (vibra_live.js), which this vibra was built without: "
                    "install the Debian package emscripten and build again with -DVIBRA_WEB=ON");
 }
