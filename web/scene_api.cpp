@@ -1,8 +1,5 @@
 // The live page's C API: a scene set up from KEY=VALUE settings, drawn at any time as 2D-canvas operations by the same scene code.
-#include <cairo.h>
-
 #include <exception>
-#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -10,12 +7,6 @@
 
 #include "core/error.hpp"
 #include "core/input/quoted_value.hpp"
-#include "render/draw/canvas.hpp"
-#include "scenes/config/scene_config.hpp"
-#include "scenes/panels/history_feed.hpp"
-#include "scenes/scene_factory.hpp"
-#include "scenes/timing/scene_clock.hpp"
-#include "web/canvas/surface_commands.hpp"
 #include "web/live_scene.hpp"
 
 namespace {

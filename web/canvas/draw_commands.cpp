@@ -86,8 +86,11 @@ constexpr int kStrokeFixed = 13;  // rgba, width, join, cap, matrix; then the da
 std::string describe(const DrawCommands& commands) {
   std::ostringstream out;
   const std::vector<double>& n = commands.numbers();
+  constexpr int kOps = sizeof kOpShapes / sizeof kOpShapes[0];
   for (std::size_t i = 0; i < n.size();) {
-    const OpShape& shape = kOpShapes[int(n[i++])];
+    const int op = int(n[i++]);
+    if (op < 0 || op >= kOps) return out.str() + "unknown operation\n";
+    const OpShape& shape = kOpShapes[op];
     int count = shape.arguments;
     if (count < 0) count = kStrokeFixed + 2 + int(n[i + kStrokeFixed]);
     out << shape.name;

@@ -7,7 +7,7 @@
 #include <cstring>
 #include <system_error>
 
-#if defined(__EMSCRIPTEN__) || defined(VIBRA_FLOAT_CHARCONV_TEST)
+#ifdef __EMSCRIPTEN__
 namespace std {
 
 /// The shortest of %.1g ... %.17g that reads back as `value`.
