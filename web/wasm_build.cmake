@@ -31,3 +31,22 @@ if(VIBRA_WEB)
     BUILD_ALWAYS ON
     USES_TERMINAL_BUILD ON)
 endif()
+
+# The live page's files, where `vibra render --live` finds them (build/live/,
+# beside the executable; installed in share/vibra/live/): the module, the
+# page's script and style, and the fonts the scene code measures with.
+# The fonts are Debian's DejaVu files, the ones Pango draws with natively.
+set(VIBRA_DEJAVU_DIR /usr/share/fonts/truetype/dejavu)
+set(VIBRA_LIVE_DIR ${CMAKE_CURRENT_BINARY_DIR}/live)
+if(VIBRA_WEB)
+  set(VIBRA_LIVE_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/web/canvas/replay.js ${CMAKE_CURRENT_SOURCE_DIR}/web/page/live.js
+      ${CMAKE_CURRENT_SOURCE_DIR}/web/page/live.css ${CMAKE_CURRENT_SOURCE_DIR}/web/page/live.html.in
+      ${VIBRA_DEJAVU_DIR}/DejaVuSans.ttf ${VIBRA_DEJAVU_DIR}/DejaVuSans-Oblique.ttf ${VIBRA_DEJAVU_DIR}/DejaVuSans-Bold.ttf
+      ${VIBRA_DEJAVU_DIR}/DejaVuSans-BoldOblique.ttf)
+  add_custom_target(vibra_live_assets ALL
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${VIBRA_LIVE_DIR}
+    COMMAND ${CMAKE_COMMAND} -E copy_if_different ${VIBRA_LIVE_SOURCES} ${VIBRA_WEB_DIR}/vibra_live.js ${VIBRA_LIVE_DIR}
+    DEPENDS vibra_web ${VIBRA_LIVE_SOURCES}
+    COMMENT "The live page's files in ${VIBRA_LIVE_DIR}")
+  install(DIRECTORY ${VIBRA_LIVE_DIR}/ DESTINATION ${CMAKE_INSTALL_DATADIR}/vibra/live)
+endif()

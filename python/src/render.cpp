@@ -8,6 +8,7 @@
 #include "core/input/input_files.hpp"
 #include "core/input/value_ranges.hpp"
 #include "render/output/stop_signal.hpp"
+#include "jobs/live_page_job.hpp"
 #include "jobs/render_job.hpp"
 
 namespace vibra::python {
@@ -37,6 +38,19 @@ void render(const std::string& scene, const std::vector<std::pair<std::string, s
   py::gil_scoped_release release;
   scenes::run_render(request);
 }
+/// vibra.explore: the live page of `vibra render SCENE -o PAGE.html --live`.
+void live_page(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& settings,
+               const std::string& output, bool quiet) {
+  PythonStop stop;
+  forget_input_files();
+  scenes::LivePageRequest request{scene, scenes::load_scene(scene), {}, output, false, quiet};
+  for (const auto& [key, value] : settings) {
+    scenes::apply_setting(request.scene, {key, value, "vibra.explore"});
+    request.base.push_back(key + "=" + value);
+  }
+  py::gil_scoped_release release;
+  scenes::run_live_page(request);
+}
 }  // namespace
 
 void bind_render(py::module_& m) {
@@ -53,6 +67,7 @@ void bind_render(py::module_& m) {
       py::arg("frames_player"), py::arg("codec"), py::arg("quality"), py::arg("crf"), py::arg("preset"),
       py::arg("threads"), py::arg("transparent"), py::arg("quiet"));
   m.def("scene_names", &scenes::builtin_scene_names);
+  m.def("live_page", &live_page, py::arg("scene"), py::arg("settings"), py::arg("output"), py::arg("quiet"));
 }
 
 }  // namespace vibra::python

@@ -273,9 +273,6 @@ void replay_label_chain(Scene& scene, const FrameClock& clock, long long d, int 
     if (!clock.repeats(j)) scene.draw(scratch, row_at(clock.time(j)));
 }
 
-double steady_speed(const SceneConfig& scene, const TimeMesh& mesh) {
-  return scene.speed > 0 ? scene.speed : (mesh.period > 0 ? mesh.period / 2 : 1);
-}
 }  // namespace
 
 /// A page's companions (videos or frames, and the CSV) go in a folder of
@@ -307,16 +304,6 @@ void check_companion_folder(const fs::path& folder, bool force) {
   if (const std::string why = render::why_not_vibras(folder); !why.empty())
     throw render::OutputError("'" + folder.string() + "' exists and was not written by vibra for this page: it " + why +
                               ": move it away, or add --force to replace it");
-}
-
-double video_rate_of(const SceneConfig& scene, const TimeMesh& mesh) {
-  return scene.frame_per_step ? mesh.dt * scene.fps : steady_speed(scene, mesh);
-}
-
-FrameClock frame_clock_of(const SceneConfig& scene, const TimeMesh& mesh) {
-  if (!scene.frame_per_step) return FrameClock::paced(mesh.T, scene.fps, steady_speed(scene, mesh), scene.pacing);
-  if (scene.pacing.empty()) return FrameClock::per_step(mesh.dt, mesh.steps);
-  return FrameClock::paced(double(mesh.steps) * mesh.dt, scene.fps, video_rate_of(scene, mesh), scene.pacing);
 }
 
 namespace {

@@ -9,7 +9,7 @@
 #include "render/encode/join/frame_segment.hpp"
 #include "render/encode/frame_sink.hpp"
 #include "core/time_mesh.hpp"
-#include "scenes/timing/frame_clock.hpp"
+#include "scenes/timing/scene_clock.hpp"
 #include "scenes/config/scene_config.hpp"
 
 namespace vibra {
@@ -84,20 +84,6 @@ class PreparedRender {
   std::unique_ptr<State> state_;
 };
 
-/// Labels keep their spots from frame to frame within chains of this many
-/// frames (3 s at 30 fps): a still or a segment replays at most this many
-/// frames before its own, with nothing rasterized, to draw what the whole
-/// render draws. At each chain's start a label held in a spot that is no
-/// longer its best goes to the best: over 600 frames of five scenes, chains
-/// of 15 frames added 67 such jumps to the 84 that spots taken cause anyway,
-/// chains of 90 add 12.
-inline constexpr long long kLabelChainFrames = 90;
-
-/// The frame clock a render of `scene` uses for a run with this mesh: its
-/// speed (or one small-oscillation period in 2 s), fps, pacing, or one frame
-/// per step. Throws UsageError when the pacing reaches outside the run.
-FrameClock frame_clock_of(const SceneConfig& scene, const TimeMesh& mesh);
-
 /// A page's companions (videos or frames, the CSV, subtitles) go in a
 /// folder of their own beside it, PAGE_files/ (as browsers save a page), so
 /// the page never writes over a file the user did not name.
@@ -107,9 +93,5 @@ std::filesystem::path companion_folder(const std::string& page);
 /// (its manifest matches), or with `force`; never when it holds a file the
 /// run reads, or vibra may not read it. Throws OutputError otherwise.
 void check_companion_folder(const std::filesystem::path& folder, bool force);
-
-/// Simulated time per second of video outside slow motion: the scene's
-/// speed, one small-oscillation period in 2 s, or one step per frame.
-double video_rate_of(const SceneConfig& scene, const TimeMesh& mesh);
 
 }  // namespace vibra::scenes

@@ -18,6 +18,7 @@
 #include "core/stop_flag.hpp"
 #include "core/input/value_ranges.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
+#include "jobs/live_page_job.hpp"
 #include "jobs/render_job.hpp"
 #include "scenes/config/scene_config.hpp"
 
@@ -47,6 +48,7 @@ struct RenderOptions {
   bool skip_existing = false;
   bool force = false;
   bool quiet = false;
+  bool live = false;
   render::VideoSettings video;
 };
 
@@ -101,17 +103,39 @@ double still_time(const std::string& text) {
   return in_range("--at", time, text);  // a number, but too large: the range says so
 }
 
+/// The settings of the command line, as KEY=VALUE: where a live page starts from.
+std::vector<std::string> setting_lines(const std::vector<scenes::Setting>& given) {
+  std::vector<std::string> lines;
+  for (const scenes::Setting& s : given) lines.push_back(s.key + "=" + s.value);
+  return lines;
+}
+
+/// --live's page: the options a page of controls cannot take are refused.
+void run_live(const RenderOptions& o, const scenes::RenderRequest& request, const std::vector<scenes::Setting>& given) {
+  if (o.at || !o.segment.empty() || o.frames_player || o.skip_existing)
+    throw UsageError("--live writes a page that draws any time itself: drop --at, --segment, --frames-player and "
+                     "--skip-existing");
+  scenes::LivePageRequest live{o.scene, request.scene, setting_lines(given),
+                               o.output.empty() ? o.scene + ".html" : o.output, o.force, o.quiet};
+  scenes::run_live_page(live);
+}
+
 void run(const RenderOptions& o) {
   scenes::RenderRequest request;
   request.scene = scenes::load_scene(o.scene);
+  std::vector<scenes::Setting> given;  // every setting of the command line, in order
+  auto apply = [&](const scenes::Setting& setting) {
+    scenes::apply_setting(request.scene, setting);
+    given.push_back(setting);
+  };
   for (const auto& assignment : o.settings) {
     const auto eq = assignment.find('=');
     if (eq == std::string::npos || eq == 0)
       throw UsageError("'--set " + assignment + "' is not KEY=VALUE: write e.g. --set Theta=40");
-    scenes::apply_setting(request.scene, {assignment.substr(0, eq), assignment.substr(eq + 1), "--set"});
+    apply({assignment.substr(0, eq), assignment.substr(eq + 1), "--set"});
   }
   auto flag = [&](const std::string& key, const std::string& value, const char* name) {
-    if (!value.empty()) scenes::apply_setting(request.scene, {key, value, name});
+    if (!value.empty()) apply({key, value, name});
   };
   flag("size", o.size, "--size");
   flag("layout", o.layout, "--layout");
@@ -123,13 +147,14 @@ void run(const RenderOptions& o) {
   flag("panels", o.panels, "--panels");
   flag("annotate", o.annotate, "--annotate");
   flag("exaggerate", o.exaggerate, "--exaggerate");
-  for (const auto& range : o.slow) scenes::apply_setting(request.scene, {"slow", range, "--slow"});
-  for (const auto& pause : o.pauses) scenes::apply_setting(request.scene, {"pause", pause, "--pause"});
-  if (o.energy_bars) request.scene.energy_bars = true;
-  if (o.title) scenes::apply_setting(request.scene, {"title", *o.title, "--title"});
-  if (o.equation) request.scene.equation = true;
-  for (const auto& note : o.notes) scenes::apply_setting(request.scene, {"notes", note, "--note"});
-  if (o.frame_per_step) request.scene.frame_per_step = true;
+  for (const auto& range : o.slow) apply({"slow", range, "--slow"});
+  for (const auto& pause : o.pauses) apply({"pause", pause, "--pause"});
+  if (o.energy_bars) apply({"energy_bars", "true", "--energy-bars"});
+  if (o.title) apply({"title", *o.title, "--title"});
+  if (o.equation) apply({"equation", "true", "--equation"});
+  for (const auto& note : o.notes) apply({"notes", note, "--note"});
+  if (o.frame_per_step) apply({"frame_per_step", "true", "--frame-per-step"});
+  if (o.live) return run_live(o, request, given);
   request.output = o.output.empty() ? request.scene.name + ".mp4" : o.output;
   if (o.at) request.at = still_time(*o.at);
   request.frames_player = o.frames_player;
@@ -208,6 +233,9 @@ void add_render_command(CLI::App& app) {
       "(with --format), or a still .png/.svg/.pdf with --at (default: SCENE.mp4); missing folders are "
       "made");
   add_scene_flags(*cmd, *o);
+  cmd->add_flag("--live", o->live,
+                "With -o PAGE.html: a page that re-solves and draws the scene in the browser as its keys' controls move "
+                "(PAGE_files/ holds the WebAssembly and fonts)");
   cmd->add_flag("--frames-player", o->frames_player, "With -o PAGE.html: PNG frames and a page that steps through them");
   cmd->add_option("--every", o->every, "With -o PAGE.html: the CSV beside the page keeps every K-th step (and the last)")
       ->check(ranged("--every"));

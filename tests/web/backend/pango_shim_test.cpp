@@ -1,0 +1,104 @@
+// The browser build's Pango: markup parsed into runs, layouts measured and drawn as text runs where Pango would put them.
+#include <pango/pangocairo.h>
+
+#include <catch2/catch.hpp>
+#include <memory>
+
+#include "web/canvas/surface_commands.hpp"
+#include "web/canvas/text_measure.hpp"
+#include "web/shim/pango_markup.hpp"
+
+namespace {
+
+std::shared_ptr<PangoLayout> layout_of(cairo_t* cr, const char* markup, double size) {
+  std::shared_ptr<PangoLayout> layout(pango_cairo_create_layout(cr), g_object_unref);
+  PangoFontDescription* font = pango_font_description_from_string("DejaVu Sans");
+  pango_font_description_set_absolute_size(font, size * PANGO_SCALE);
+  pango_layout_set_font_description(layout.get(), font);
+  pango_font_description_free(font);
+  pango_layout_set_markup(layout.get(), markup, -1);
+  return layout;
+}
+
+}  // namespace
+
+TEST_CASE("markup becomes runs with italic, sizes, rises and entities", "[web-backend]") {
+  const auto runs = vibra::web::shim::parse_markup("<i>m</i>g &amp; <i>ε</i><sub>v</sub>&#960;");
+  REQUIRE(runs.size() == 5);
+  CHECK((runs[0].text == "m" && runs[0].style.italic));
+  CHECK((runs[1].text == "g & " && !runs[1].style.italic));
+  CHECK(runs[2].text == "ε");
+  CHECK((runs[3].text == "v" && runs[3].style.scale == Approx(1 / 1.2) && runs[3].style.rise == Approx(-0.2)));
+  CHECK(runs[4].text == "π");
+  CHECK_THROWS_AS(vibra::web::shim::parse_markup("<blink>x</blink>"), std::invalid_argument);
+}
+
+TEST_CASE("a layout is measured by the text measure and drawn at its baseline from the current point",
+          "[web-backend]") {
+  const cairo_rectangle_t extents{0, 0, 200, 100};
+  std::shared_ptr<cairo_surface_t> s(cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, &extents),
+                                     cairo_surface_destroy);
+  std::shared_ptr<cairo_t> cr(cairo_create(s.get()), cairo_destroy);
+  const auto layout = layout_of(cr.get(), "<i>m</i>g", 20);
+  PangoRectangle ink, logical;
+  pango_layout_get_pixel_extents(layout.get(), &ink, &logical);
+  // Native builds measure 0.6 em a character: two characters of 20 px.
+  CHECK((logical.x == 0 && logical.y == 0 && logical.width == 24));
+  CHECK(logical.height == std::lround(20 * (vibra::web::kAscentEm + vibra::web::kDescentEm)));
+  CHECK(pango_layout_get_baseline(layout.get()) == std::lround(20 * vibra::web::kAscentEm * PANGO_SCALE));
+  cairo_move_to(cr.get(), 10, 30);
+  cairo_set_source_rgb(cr.get(), 0, 0, 0);
+  pango_cairo_show_layout(cr.get(), layout.get());
+  const auto& commands = vibra::web::commands_of(s.get());
+  CHECK(commands.joined_strings() == "italic 20.000px 'DejaVu Sans'\nm\n20.000px 'DejaVu Sans'\ng");
+  const double baseline = 30 + 20 * vibra::web::kAscentEm;
+  const std::vector<double>& n = commands.numbers();
+  // The second run starts one advance (12 px) further along the same baseline.
+  REQUIRE(n.size() == 3 + 2 * 19);  // the move, then two text operations of 19 numbers
+  CHECK((n[3] == double(vibra::web::Op::kText) && n[3 + 15] == 10 && n[3 + 16] == Approx(baseline)));
+  CHECK((n[22 + 15] == 22 && n[22 + 16] == Approx(baseline)));
+}
+
+TEST_CASE("text laid on the path is stroked with the pen, as a label's halo", "[web-backend]") {
+  const cairo_rectangle_t extents{0, 0, 200, 100};
+  std::shared_ptr<cairo_surface_t> s(cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, &extents),
+                                     cairo_surface_destroy);
+  std::shared_ptr<cairo_t> cr(cairo_create(s.get()), cairo_destroy);
+  const auto layout = layout_of(cr.get(), "x", 10);
+  cairo_move_to(cr.get(), 0, 0);
+  pango_cairo_layout_path(cr.get(), layout.get());
+  cairo_set_line_width(cr.get(), 4);
+  cairo_stroke(cr.get());
+  const std::string text = vibra::web::describe(vibra::web::commands_of(s.get()));
+  CHECK(text.rfind("moveTo 0 0\nstroke ", 0) == 0);
+  CHECK(text.find("\ntext 1 0 0 0 1 4 0 0 1 0 0 1 0 0 0 ") != std::string::npos);
+}
+
+TEST_CASE("a layout wider than its width ends in an ellipsis that fits", "[web-backend]") {
+  const cairo_rectangle_t extents{0, 0, 200, 100};
+  std::shared_ptr<cairo_surface_t> s(cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, &extents),
+                                     cairo_surface_destroy);
+  std::shared_ptr<cairo_t> cr(cairo_create(s.get()), cairo_destroy);
+  const auto layout = layout_of(cr.get(), "abcdefghij", 10);  // 60 px
+  pango_layout_set_width(layout.get(), 30 * PANGO_SCALE);
+  pango_layout_set_ellipsize(layout.get(), PANGO_ELLIPSIZE_END);
+  PangoRectangle logical;
+  pango_layout_get_pixel_extents(layout.get(), nullptr, &logical);
+  CHECK(logical.width == 30);  // "abcd…": five characters of 6 px
+}
+
+TEST_CASE("each glyph advances a whole number of pixels, as Pango's hinted metrics on an image", "[web-backend]") {
+  const cairo_rectangle_t extents{0, 0, 200, 100};
+  std::shared_ptr<cairo_surface_t> s(cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, &extents),
+                                     cairo_surface_destroy);
+  std::shared_ptr<cairo_t> cr(cairo_create(s.get()), cairo_destroy);
+  const auto layout = layout_of(cr.get(), "abc", 11);  // 6.6 px a glyph, measured
+  PangoRectangle logical;
+  pango_layout_get_pixel_extents(layout.get(), nullptr, &logical);
+  CHECK(logical.width == 21);  // each advance within the run, 6.6 px, rounded: 7 + 7 + 7, not 19.8
+  cairo_move_to(cr.get(), 0, 0);
+  pango_cairo_show_layout(cr.get(), layout.get());
+  const std::vector<double>& n = vibra::web::commands_of(s.get()).numbers();
+  REQUIRE(n.size() == 3 + 3 * 19);  // the move, then a text operation a glyph
+  CHECK((n[3 + 15] == 0 && n[22 + 15] == 7 && n[41 + 15] == 14));
+}
