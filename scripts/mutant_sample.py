@@ -90,12 +90,12 @@ def diff_of(site, original, mutated):
                                         lineterm="\n", n=0)).replace("@@ -1 +1 @@", f"@@ line {line} @@")
 
 
-def run_suite(suite, spec, timeout, log):
+def run_suite(suite, spec, timeout, log, extra=()):
     """'KILLED' or 'SURVIVED', and the failing test's name where Catch2 printed it."""
     with open(log, "w") as out:
         try:
             # From the suite's folder, as ctest runs it; -# tags each case with its file, [#name_test].
-            rc = subprocess.run([str(suite), "-#", "--abort", spec], stdout=out, stderr=subprocess.STDOUT,
+            rc = subprocess.run([str(suite), "-#", "--abort", *extra, spec], stdout=out, stderr=subprocess.STDOUT,
                                 cwd=Path(suite).parent, timeout=timeout).returncode
         except subprocess.TimeoutExpired:
             return "KILLED", f"timed out after {timeout:.0f} s"
@@ -106,12 +106,29 @@ def run_suite(suite, spec, timeout, log):
     return "KILLED", f"by {failed.group(1)[:100]}" if failed else f"exit {rc}"
 
 
-def run_targeted_first(suite, spec, targets, timeout, log_stem):
+def durations(log):
+    """Each test case's seconds, from a run with --durations yes."""
+    found = re.findall(r"^(\d+\.\d+) s: (.+)$", Path(log).read_text(errors="replace"), re.M)
+    return {name: float(seconds) for seconds, name in found}
+
+
+def targeted_timeout(suite, spec, timeout, seconds_of):
+    """Five times what the targeted cases took unmutated (at least a minute), so that a
+    mutant that loops in them costs minutes, not the whole suite's limit."""
+    if not seconds_of:
+        return timeout
+    names = subprocess.run([str(suite), "-#", "--list-test-names-only", spec], capture_output=True, text=True,
+                           cwd=Path(suite).parent).stdout.splitlines()
+    return min(timeout, max(60.0, 5 * sum(seconds_of.get(n, 0.0) for n in names)))
+
+
+def run_targeted_first(suite, spec, targets, timeout, log_stem, seconds_of=None):
     """The target files' tests first; the rest of the suite only if they all pass.
     The verdict is the whole suite's; a kill says which part found it."""
     deadline = time.time() + timeout
     if targets:
-        outcome, detail = run_suite(suite, mutant_targets.targeted_spec(spec, targets), timeout,
+        targeted = mutant_targets.targeted_spec(spec, targets)
+        outcome, detail = run_suite(suite, targeted, targeted_timeout(suite, targeted, timeout, seconds_of),
                                     f"{log_stem}-targeted.log")
         if outcome == "KILLED":
             return outcome, f"{detail} [targeted]"
@@ -128,7 +145,7 @@ def restore_on_signals():
         signal.signal(s, stop)
 
 
-def try_site(site, tree, build_ok, suite, spec, timeout, logs):
+def try_site(site, tree, build_ok, suite, spec, baseline, logs):
     """Plants one site, builds, runs its targeted tests then the rest; restores the file whatever happens."""
     path = tree / site.file
     original = path.read_text()
@@ -139,7 +156,8 @@ def try_site(site, tree, build_ok, suite, spec, timeout, logs):
         if not build_ok(logs / f"{name}-build.log"):
             return "INVALID", "does not compile", ""
         targets = mutant_targets.targets(tree, site.file)
-        outcome, detail = run_targeted_first(suite, spec, targets, timeout, logs / f"{name}-tests")
+        timeout, seconds_of = baseline
+        outcome, detail = run_targeted_first(suite, spec, targets, timeout, logs / f"{name}-tests", seconds_of)
         return outcome, detail, diff_of(site, original, mutated)
     finally:
         path.write_text(original)
@@ -175,7 +193,7 @@ def suite_spec(spec, niceness):
 
 
 def baseline_timeout(spec, build_ok, suite, logs, key):
-    """Builds and runs the unmutated copy (it must pass); the time limit per mutant.
+    """Builds and runs the unmutated copy (it must pass); the time limit per mutant and each case's seconds.
     Kept in baseline.json beside the logs for its key (the copy's tree and the spec):
     a resumed run of the same tree does not pay for the baseline again."""
     kept_path = logs.parent / "baseline.json"
@@ -184,22 +202,22 @@ def baseline_timeout(spec, build_ok, suite, logs, key):
     except (OSError, ValueError):
         kept = {}
     if kept.get("key") == key and isinstance(kept.get("seconds"), (int, float)):
-        suite_seconds, how = kept["seconds"], "kept from a run of the same tree"
+        suite_seconds, seconds_of, how = kept["seconds"], kept.get("cases", {}), "kept from a run of the same tree"
     else:
         start = time.time()
         if not build_ok(logs / "baseline-build.log"):
             sys.exit(f"mutants: the unmutated copy does not build: {logs / 'baseline-build.log'}")
-        outcome, detail = run_suite(suite, spec, None, logs / "baseline-tests.log")
+        outcome, detail = run_suite(suite, spec, None, logs / "baseline-tests.log", ("--durations", "yes"))
         if outcome != "SURVIVED":
             sys.exit(f"mutants: the unmutated copy fails the fast suite ({detail}): {logs / 'baseline-tests.log'}")
-        suite_seconds, how = time.time() - start, "measured now"
+        suite_seconds, seconds_of, how = time.time() - start, durations(logs / "baseline-tests.log"), "measured now"
         temporary = kept_path.with_suffix(".tmp")
-        temporary.write_text(json.dumps({"key": key, "seconds": suite_seconds}) + "\n")
+        temporary.write_text(json.dumps({"key": key, "seconds": suite_seconds, "cases": seconds_of}) + "\n")
         os.replace(temporary, kept_path)
     timeout = max(60.0, 3 * suite_seconds)
     print(f"mutants: baseline built and passed '{spec}' in {suite_seconds:.0f} s ({how}); "
           f"{timeout:.0f} s per mutant at most")
-    return timeout
+    return timeout, seconds_of
 
 
 def judge_sample(args, by_folder, ledger, judge):
@@ -235,12 +253,12 @@ def run_sample(args, tree, build_ok, suite, logs):
     spec = suite_spec(args.spec, os.nice(0))
     if spec != args.spec:
         print(f"mutants: at niceness 19, without the tests that need room below it: '{spec}'")
-    timeout = None  # the baseline runs only when a mutant is to be judged
+    baseline = None  # the baseline runs only when a mutant is to be judged
 
     def judge(site):
-        nonlocal timeout
-        timeout = timeout or baseline_timeout(spec, build_ok, suite, logs, f"{tree_hash} {spec}")
-        return (*try_site(site, tree, build_ok, suite, spec, timeout, logs), revision)
+        nonlocal baseline
+        baseline = baseline or baseline_timeout(spec, build_ok, suite, logs, f"{tree_hash} {spec}")
+        return (*try_site(site, tree, build_ok, suite, spec, baseline, logs), revision)
 
     results = judge_sample(args, by_folder, ledger, judge)
     killed, scored = print_scores(results)
@@ -249,6 +267,6 @@ def run_sample(args, tree, build_ok, suite, logs):
         print(f"\n{len(survivors)} survived (a test to add, or an id for {EQUIVALENTS.name} with the reason):")
         for _, site, _, _, diff in survivors:
             print(f"\n{site.id}\n{diff}", end="")
-    if timeout:
+    if baseline:
         build_ok(logs / "restored-build.log")  # leave the copy built as the tree is
     return 0 if killed == scored else 1

@@ -59,6 +59,9 @@ FAKE_SUITE = """#!/usr/bin/env python3
 # A stand-in for vibra_tests: records each spec; fails a spec naming the tag in FAIL_TAG.
 import os, sys
 spec = sys.argv[-1]
+if "--list-test-names-only" in sys.argv:
+    print("fast case\\nslow case")
+    sys.exit(0)
 with open(os.environ["SPECS_LOG"], "a") as out:
     out.write(spec + "\\n")
 if os.environ["FAIL_TAG"] and os.environ["FAIL_TAG"] in spec and "~" + os.environ["FAIL_TAG"] not in spec:
@@ -67,15 +70,35 @@ if os.environ["FAIL_TAG"] and os.environ["FAIL_TAG"] in spec and "~" + os.enviro
 """
 
 
+def fake_suite(folder):
+    suite = Path(folder) / "vibra_tests"
+    suite.write_text(FAKE_SUITE)
+    suite.chmod(suite.stat().st_mode | stat.S_IEXEC)
+    return suite
+
+
 class TargetedFirst(unittest.TestCase):
     def judge(self, fail_tag, targets):
         with tempfile.TemporaryDirectory() as d:
-            suite = Path(d) / "vibra_tests"
-            suite.write_text(FAKE_SUITE)
-            suite.chmod(suite.stat().st_mode | stat.S_IEXEC)
+            suite = fake_suite(d)
             os.environ.update(SPECS_LOG=str(Path(d) / "specs"), FAIL_TAG=fail_tag)
             verdict = mutant_sample.run_targeted_first(suite, "~[heavy]", targets, 60, str(Path(d) / "m"))
             return verdict, (Path(d) / "specs").read_text().splitlines()
+
+    def test_the_targeted_tests_get_five_times_their_unmutated_seconds_within_the_suites_limit(self):
+        with tempfile.TemporaryDirectory() as d:
+            suite = fake_suite(d)
+            seconds_of = {"fast case": 1.0, "slow case": 30.0, "elsewhere": 500.0}
+            self.assertEqual(mutant_sample.targeted_timeout(suite, "[#x_test]", 1000, seconds_of), 155.0)
+            self.assertEqual(mutant_sample.targeted_timeout(suite, "[#x_test]", 100, seconds_of), 100)
+            self.assertEqual(mutant_sample.targeted_timeout(suite, "[#x_test]", 1000, {"fast case": 1.0}), 60.0)
+            self.assertEqual(mutant_sample.targeted_timeout(suite, "[#x_test]", 1000, {}), 1000)
+
+    def test_the_baselines_case_seconds_are_read_from_catch2s_durations(self):
+        with tempfile.TemporaryDirectory() as d:
+            log = Path(d) / "baseline.log"
+            log.write_text("Filters: ~[heavy]\n0.250 s: a case: with a colon\n12.000 s: another\n=====\n")
+            self.assertEqual(mutant_sample.durations(log), {"a case: with a colon": 0.25, "another": 12.0})
 
     def test_a_kill_by_a_targeted_test_runs_nothing_else_and_says_so(self):
         verdict, specs = self.judge("[#shapes_test]", ["tests/render/draw/shapes_test.cpp"])
@@ -107,10 +130,10 @@ class Baseline(unittest.TestCase):
         with tempfile.TemporaryDirectory() as d:
             logs = Path(d) / "logs"
             logs.mkdir()
-            (logs.parent / "baseline.json").write_text('{"key": "tree1 ~[heavy]", "seconds": 100}\n')
+            (logs.parent / "baseline.json").write_text('{"key": "tree1 ~[heavy]", "seconds": 100, "cases": {"a": 2}}\n')
             builds = []
             kept = mutant_sample.baseline_timeout("~[heavy]", builds.append, "/bin/true", logs, "tree1 ~[heavy]")
-            self.assertEqual((kept, builds), (300.0, []))
+            self.assertEqual((kept, builds), ((300.0, {"a": 2}), []))
             with self.assertRaises(SystemExit):  # another tree: built again (this stand-in build fails)
                 mutant_sample.baseline_timeout("~[heavy]", lambda log: builds.append(log), "/bin/true", logs,
                                                "tree2 ~[heavy]")
