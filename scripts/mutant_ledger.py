@@ -32,8 +32,10 @@ class Ledger:
             return None
         return entry
 
-    def record(self, site_id, folder, outcome, detail, diff, revision):
+    def record(self, site_id, folder, outcome, detail, diff, revision, seconds=None):
         entry = dict(zip(FIELDS, (self.seed, site_id, folder, outcome, detail, diff, revision)))
+        if seconds is not None:
+            entry["seconds"] = seconds  # what judging it cost (docs/contributing.md: the time per mutant)
         self.path.parent.mkdir(parents=True, exist_ok=True)
         with open(self.path, "a+") as out:
             # A line left unfinished by a killed run must not swallow this one.

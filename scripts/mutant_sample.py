@@ -4,11 +4,16 @@ mutants' copy of the tree and prints the mutation score per folder with the
 survivors as diffs (docs/contributing.md, "Mutants").
 
 Each mutant is one edit of one .cpp file (with --headers, .hpp too: each
-rebuilds every file that includes it). vibra and vibra_tests are rebuilt
-(ccache; ninja compiles the one object and relinks), then the fast suite
-runs as one process, Catch2's --abort ending it at the first failure, under
-a time limit of a few times the unmutated suite's. KILLED: a test failed or
-the time ran out; SURVIVED: all passed; INVALID: it does not compile (not
+rebuilds every file that includes it). vibra and vibra_tests are rebuilt in
+the copy's mutant build (-O1, no Python module, through ccache: ninja
+compiles the one object and relinks). Then the tests most likely to kill it
+run first (scripts/mutant_targets.py: the test files named after the
+mutated file, including its header, or in the mirrored test folder), and
+only when they all pass, the rest of the fast suite; each as one process
+that Catch2's --abort ends at the first failure, both within a time limit
+of a few times the unmutated suite's. KILLED: a test failed (the verdict
+names it, and whether it was a targeted one) or the time ran out;
+SURVIVED: the whole fast suite passed; INVALID: it does not compile (not
 scored; another site of its folder is drawn instead). The file is restored
 after each mutant whatever happens, also on Ctrl-C or SIGTERM.
 
@@ -18,6 +23,8 @@ reason, and never drawn again.
 """
 import difflib
 import hashlib
+import json
+import os
 import re
 import signal
 import subprocess
@@ -28,6 +35,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import mutant_sites  # noqa: E402
+import mutant_targets  # noqa: E402
 from mutant_ledger import Ledger  # noqa: E402
 
 SOURCE_FOLDERS = ["src/core", "src/cli", "src/jobs", "render", "scenes"]  # scored separately
@@ -82,12 +90,12 @@ def diff_of(site, original, mutated):
                                         lineterm="\n", n=0)).replace("@@ -1 +1 @@", f"@@ line {line} @@")
 
 
-def run_suite(suite, spec, timeout, log):
+def run_suite(suite, spec, timeout, log, extra=()):
     """'KILLED' or 'SURVIVED', and the failing test's name where Catch2 printed it."""
     with open(log, "w") as out:
         try:
-            # From the suite's folder, as ctest runs it.
-            rc = subprocess.run([str(suite), "--abort", spec], stdout=out, stderr=subprocess.STDOUT,
+            # From the suite's folder, as ctest runs it; -# tags each case with its file, [#name_test].
+            rc = subprocess.run([str(suite), "-#", "--abort", *extra, spec], stdout=out, stderr=subprocess.STDOUT,
                                 cwd=Path(suite).parent, timeout=timeout).returncode
         except subprocess.TimeoutExpired:
             return "KILLED", f"timed out after {timeout:.0f} s"
@@ -98,6 +106,37 @@ def run_suite(suite, spec, timeout, log):
     return "KILLED", f"by {failed.group(1)[:100]}" if failed else f"exit {rc}"
 
 
+def durations(log):
+    """Each test case's seconds, from a run with --durations yes."""
+    found = re.findall(r"^(\d+\.\d+) s: (.+)$", Path(log).read_text(errors="replace"), re.M)
+    return {name: float(seconds) for seconds, name in found}
+
+
+def targeted_timeout(suite, spec, timeout, seconds_of):
+    """Five times what the targeted cases took unmutated (at least a minute), so that a
+    mutant that loops in them costs minutes, not the whole suite's limit."""
+    if not seconds_of:
+        return timeout
+    names = subprocess.run([str(suite), "-#", "--list-test-names-only", spec], capture_output=True, text=True,
+                           cwd=Path(suite).parent).stdout.splitlines()
+    return min(timeout, max(60.0, 5 * sum(seconds_of.get(n, 0.0) for n in names)))
+
+
+def run_targeted_first(suite, spec, targets, timeout, log_stem, seconds_of=None):
+    """The target files' tests first; the rest of the suite only if they all pass.
+    The verdict is the whole suite's; a kill says which part found it."""
+    deadline = time.time() + timeout
+    if targets:
+        targeted = mutant_targets.targeted_spec(spec, targets)
+        outcome, detail = run_suite(suite, targeted, targeted_timeout(suite, targeted, timeout, seconds_of),
+                                    f"{log_stem}-targeted.log")
+        if outcome == "KILLED":
+            return outcome, f"{detail} [targeted]"
+    rest = mutant_targets.rest_spec(spec, targets)
+    outcome, detail = run_suite(suite, rest, max(1.0, deadline - time.time()), f"{log_stem}-rest.log")
+    return outcome, f"{detail} [rest of the suite]" if outcome == "KILLED" else detail
+
+
 def restore_on_signals():
     """SIGTERM and SIGHUP end the run through the finally blocks, as Ctrl-C does."""
     def stop(signum, _frame):
@@ -106,8 +145,8 @@ def restore_on_signals():
         signal.signal(s, stop)
 
 
-def try_site(site, tree, build_ok, suite, spec, timeout, logs):
-    """Plants one site, builds, runs the suite; restores the file whatever happens."""
+def try_site(site, tree, build_ok, suite, spec, baseline, logs):
+    """Plants one site, builds, runs its targeted tests then the rest; restores the file whatever happens."""
     path = tree / site.file
     original = path.read_text()
     mutated = site.apply(original)
@@ -116,7 +155,9 @@ def try_site(site, tree, build_ok, suite, spec, timeout, logs):
         path.write_text(mutated)
         if not build_ok(logs / f"{name}-build.log"):
             return "INVALID", "does not compile", ""
-        outcome, detail = run_suite(suite, spec, timeout, logs / f"{name}-tests.log")
+        targets = mutant_targets.targets(tree, site.file)
+        timeout, seconds_of = baseline
+        outcome, detail = run_targeted_first(suite, spec, targets, timeout, logs / f"{name}-tests", seconds_of)
         return outcome, detail, diff_of(site, original, mutated)
     finally:
         path.write_text(original)
@@ -139,18 +180,44 @@ def print_scores(results):
     return killed, scored
 
 
-def baseline_timeout(args, build_ok, suite, logs):
-    """Builds and runs the unmutated copy (it must pass); the time limit per mutant."""
-    start = time.time()
-    if not build_ok(logs / "baseline-build.log"):
-        sys.exit(f"mutants: the unmutated copy does not build: {logs / 'baseline-build.log'}")
-    outcome, detail = run_suite(suite, args.spec, None, logs / "baseline-tests.log")
-    if outcome != "SURVIVED":
-        sys.exit(f"mutants: the unmutated copy fails the fast suite ({detail}): {logs / 'baseline-tests.log'}")
-    suite_seconds = time.time() - start
+# Tests that cannot pass at the lowest priority: each lowers some threads'
+# priority below the run's own, and at niceness 19 there is no room below.
+NEEDS_ROOM_BELOW = ["the encoder's threads give way to the drawing thread*"]
+
+
+def suite_spec(spec, niceness):
+    """The spec a run at this niceness can pass: at 19 without the tests that need room below it."""
+    if niceness < 19:
+        return spec
+    return " ".join([spec, *(f'~"{name}"' for name in NEEDS_ROOM_BELOW)])
+
+
+def baseline_timeout(spec, build_ok, suite, logs, key):
+    """Builds and runs the unmutated copy (it must pass); the time limit per mutant and each case's seconds.
+    Kept in baseline.json beside the logs for its key (the copy's tree and the spec):
+    a resumed run of the same tree does not pay for the baseline again."""
+    kept_path = logs.parent / "baseline.json"
+    try:
+        kept = json.loads(kept_path.read_text())
+    except (OSError, ValueError):
+        kept = {}
+    if kept.get("key") == key and isinstance(kept.get("seconds"), (int, float)):
+        suite_seconds, seconds_of, how = kept["seconds"], kept.get("cases", {}), "kept from a run of the same tree"
+    else:
+        start = time.time()
+        if not build_ok(logs / "baseline-build.log"):
+            sys.exit(f"mutants: the unmutated copy does not build: {logs / 'baseline-build.log'}")
+        outcome, detail = run_suite(suite, spec, None, logs / "baseline-tests.log", ("--durations", "yes"))
+        if outcome != "SURVIVED":
+            sys.exit(f"mutants: the unmutated copy fails the fast suite ({detail}): {logs / 'baseline-tests.log'}")
+        suite_seconds, seconds_of, how = time.time() - start, durations(logs / "baseline-tests.log"), "measured now"
+        temporary = kept_path.with_suffix(".tmp")
+        temporary.write_text(json.dumps({"key": key, "seconds": suite_seconds, "cases": seconds_of}) + "\n")
+        os.replace(temporary, kept_path)
     timeout = max(60.0, 3 * suite_seconds)
-    print(f"mutants: baseline built and passed '{args.spec}' in {suite_seconds:.0f} s; {timeout:.0f} s per mutant")
-    return timeout
+    print(f"mutants: baseline built and passed '{spec}' in {suite_seconds:.0f} s ({how}); "
+          f"{timeout:.0f} s per mutant at most")
+    return timeout, seconds_of
 
 
 def judge_sample(args, by_folder, ledger, judge):
@@ -164,7 +231,7 @@ def judge_sample(args, by_folder, ledger, judge):
         entry = ledger.verdict(site.id, args.rejudge_survivors)
         kept = entry is not None
         if not kept:
-            entry = ledger.record(site.id, folder, *judge(site))
+            entry = ledger.record(site.id, folder, *judge(site), seconds=round(time.time() - t0, 1))
         scored += entry["outcome"] != "INVALID"
         results.append((folder, site, entry["outcome"], entry["detail"], entry["diff"]))
         when = "judged before" if kept else f"{time.time() - t0:.0f} s"
@@ -181,14 +248,17 @@ def run_sample(args, tree, build_ok, suite, logs):
     ledger = Ledger(logs.parent / "sample-verdicts.jsonl", args.seed)
     print(f"mutants: {total} sites in {', '.join(SOURCE_FOLDERS)} ({len(equivalents)} triaged as equivalent); "
           f"sampling {args.sample} with seed {args.seed}; {len(ledger.judged)} judged before ({ledger.path})")
-    revision = subprocess.run(["git", "-C", str(tree), "rev-parse", "--short", "HEAD"], capture_output=True,
-                              text=True).stdout.strip()
-    timeout = None  # the baseline runs only when a mutant is to be judged
+    revision, tree_hash = (subprocess.run(["git", "-C", str(tree), "rev-parse", "--short", rev], capture_output=True,
+                                          text=True).stdout.strip() for rev in ("HEAD", "HEAD^{tree}"))
+    spec = suite_spec(args.spec, os.nice(0))
+    if spec != args.spec:
+        print(f"mutants: at niceness 19, without the tests that need room below it: '{spec}'")
+    baseline = None  # the baseline runs only when a mutant is to be judged
 
     def judge(site):
-        nonlocal timeout
-        timeout = timeout or baseline_timeout(args, build_ok, suite, logs)
-        return (*try_site(site, tree, build_ok, suite, args.spec, timeout, logs), revision)
+        nonlocal baseline
+        baseline = baseline or baseline_timeout(spec, build_ok, suite, logs, f"{tree_hash} {spec}")
+        return (*try_site(site, tree, build_ok, suite, spec, baseline, logs), revision)
 
     results = judge_sample(args, by_folder, ledger, judge)
     killed, scored = print_scores(results)
@@ -197,6 +267,6 @@ def run_sample(args, tree, build_ok, suite, logs):
         print(f"\n{len(survivors)} survived (a test to add, or an id for {EQUIVALENTS.name} with the reason):")
         for _, site, _, _, diff in survivors:
             print(f"\n{site.id}\n{diff}", end="")
-    if timeout:
+    if baseline:
         build_ok(logs / "restored-build.log")  # leave the copy built as the tree is
     return 0 if killed == scored else 1

@@ -1,6 +1,7 @@
 // Colour: RGBA values, parsing "#rrggbb", and a palette that reads well projected (Okabe-Ito).
 #include "render/draw/color.hpp"
 
+#include <cctype>
 #include <stdexcept>
 
 namespace vibra::render {
@@ -17,6 +18,9 @@ Color parse_color(const std::string& hex) {
   if (hex[0] != '#') throw fail();
   double c[4] = {0, 0, 0, 1};
   for (size_t i = 1, k = 0; i < hex.size(); i += 2, ++k) {
+    // std::stoi alone would take " f" and "-1": each of the two must be a hex digit.
+    if (!std::isxdigit(static_cast<unsigned char>(hex[i])) || !std::isxdigit(static_cast<unsigned char>(hex[i + 1])))
+      throw fail();
     std::size_t used = 0;
     int v = 0;
     try {

@@ -11,7 +11,8 @@ ColumnEnvelope::ColumnEnvelope(int columns, double x0, double x1)
 
 int ColumnEnvelope::column_of(double x) const {
   const double f = (x - x0_) / (x1_ - x0_);
-  return std::clamp(static_cast<int>(std::floor(f * columns())), 0, columns() - 1);
+  // Clamped before the cast: x far outside the range would overflow an int (and land in column 0).
+  return static_cast<int>(std::clamp(std::floor(f * columns()), 0.0, columns() - 1.0));
 }
 
 int ColumnEnvelope::used_before(int column) const {

@@ -169,3 +169,29 @@ TEST_CASE("energy bars need a diagram to stand beside", "[energy-bars]") {
   test::ScratchDirectory dir;
   CHECK(test::run_vibra("render pendulum --layout fbd --energy-bars --at 1 -q -o " + (dir / "fbd.png")).exit_code == 0);
 }
+
+TEST_CASE("the bars' names are written under the bars, inside the panel, not above it", "[energy-bars]") {
+  auto run = test::trajectory("vibration", {"b=0.2", "F=cos(t)"});
+  FedBars fed(*run);
+  const render::PixelRect area{100, 50, 160, 400};
+  fed.bars.place(area, 1);
+  fed.bars.observe(fed.rows.back());
+  render::Canvas canvas = render::Canvas::image(400, 500);
+  canvas.clear(render::palette::paper);
+  fed.bars.draw(canvas, fed.rows.back());
+  canvas.flush();
+  // Dark text pixels (the names are in ink) in a band of rows, across the panel's width.
+  const auto dark_pixels = [&](double y0, double y1) {
+    int n = 0;
+    for (int y = std::max(0, int(y0)); y < std::min(500, int(y1)); ++y)
+      for (int x = int(area.x); x < int(area.x + area.w); ++x) {
+        const std::uint8_t* p = canvas.data() + y * canvas.stride() + 4 * x;  // B, G, R, A
+        n += p[0] < 100 && p[1] < 100 && p[2] < 100;
+      }
+    return n;
+  };
+  const render::PixelRect inner = fed.bars.bars_area();
+  // Two alternating lines of names, 4 and 22 px under the bars, each about 14 px high.
+  CHECK(dark_pixels(inner.y + inner.h + 2, inner.y + inner.h + 42) > 100);
+  CHECK(dark_pixels(0, area.y) == 0);  // nothing above the panel
+}

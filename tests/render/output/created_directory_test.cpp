@@ -59,3 +59,20 @@ TEST_CASE("render creates the directory of a frame pattern or a frames directory
   REQUIRE(directory.exit_code == 0);
   CHECK(fs::exists(dir / "made/tmp_0000.png"));
 }
+
+TEST_CASE("a moved CreatedDirectory hands over what it made, and one assigned over removes its own first", "[png]") {
+  ScratchDirectory dir;
+  {
+    CreatedDirectory first(dir / "one/two/");  // a trailing separator names the same directory
+    CHECK(first.created() == std::vector<fs::path>{dir / "one", dir / "one/two"});
+    CreatedDirectory second(std::move(first));
+    CHECK(first.created().empty());
+    CHECK(second.created().size() == 2);
+    CreatedDirectory third(dir / "three");
+    third = std::move(second);  // "three" was third's own: removed now; "one/two" is third's to remove
+    CHECK_FALSE(fs::exists(dir / "three"));
+    CHECK(fs::is_directory(dir / "one/two"));
+    CHECK(third.created().size() == 2);
+  }
+  CHECK(dir.empty());  // each made directory removed once, by its last owner
+}

@@ -76,3 +76,36 @@ TEST_CASE("a spike inside a column survives, at its own time", "[envelope]") {
   CHECK(spike);
   for (size_t k = 1; k < points.size(); ++k) CHECK(points[k].x() >= points[k - 1].x());
 }
+
+TEST_CASE("a coarsened envelope merges each run of columns in time order over the x range they cover", "[envelope]") {
+  ColumnEnvelope fine(10, 0, 10);
+  for (int i = 0; i < 10; ++i) fine.add(i + 0.5, i % 2 ? -i : i);  // 0, -1, 2, -3, ... one sample a column
+  fine.add(4.2, std::nan(""));                                        // not a number: left out
+  const ColumnEnvelope coarse = fine.coarsened(3);
+  REQUIRE(coarse.columns() == 4);
+  CHECK(coarse.x0() == 0);
+  CHECK(coarse.x1() == 12);  // four whole columns of 3: the last reaches past the data
+  CHECK(coarse.column_of(8.9) == 2);
+  // Each cell's extremes in the order they happened: 0, -1, 2 (min first); -3, 4, -5 (max first); 6, -7, 8.
+  CHECK(coarse.extremes_in_order(0) == std::pair{-1.0, 2.0});
+  CHECK(coarse.extremes_in_order(1) == std::pair{4.0, -5.0});
+  CHECK(coarse.extremes_in_order(2) == std::pair{-7.0, 8.0});
+  CHECK(coarse.extremes_in_order(3) == std::pair{-9.0, -9.0});  // the last column holds 9.5 alone
+}
+
+TEST_CASE("an envelope finds the last used column before one, clears, and widens an empty x range", "[envelope]") {
+  ColumnEnvelope e(8, 0, 8);
+  e.add(1.5, 1), e.add(4.5, 2);
+  CHECK(e.used_before(4) == 1);
+  CHECK(e.used_before(5) == 4);
+  CHECK(e.used_before(1) == -1);
+  CHECK(e.used_before(100) == 4);  // past the end: the last used
+  e.clear();
+  CHECK(e.used_before(8) == -1);
+  CHECK_FALSE(e.extremes_in_order(4));
+  const ColumnEnvelope point(4, 5, 5);
+  CHECK(point.x1() == 6);
+  CHECK(point.column_of(5.6) == 2);
+  CHECK(point.column_of(-1e9) == 0);
+  CHECK(point.column_of(1e9) == 3);  // far past the range: the last column, not an overflowed int
+}

@@ -439,3 +439,34 @@ TEST_CASE("typeset, table-driven: the glyphs each formula sets and how its boxes
     }
   }
 }
+
+TEST_CASE("a bracket and a parenthesis are drawn a tenth of the size inside their box: TeX-like side bearings",
+          "[typeset]") {
+  // At 30 px a bracket's box is 0.38 x 30 = 11.4 wide; its strokes keep 0.1 x 30 = 3 px from each side.
+  const auto strokes = [](const std::string& source) {
+    std::vector<const MathBox*> out;
+    std::function<void(const MathBox&)> walk = [&](const MathBox& b) {
+      if (b.role == Role::stroke) out.push_back(&b);
+      for (const MathBox& c : b.children) walk(c);
+    };
+    const MathBox tree = set(source);
+    walk(tree);
+    std::vector<std::vector<double>> xs;
+    for (const MathBox* s : out) {
+      CHECK(s->width == Approx(11.4));
+      xs.emplace_back();
+      for (const Point& p : s->points) xs.back().push_back(p.x());
+    }
+    return xs;
+  };
+  const auto brackets = strokes("\\left[ x \\right]");
+  REQUIRE(brackets.size() == 2);
+  CHECK_THAT(brackets[0], Catch::Approx(std::vector<double>{8.4, 3, 3, 8.4}));
+  CHECK_THAT(brackets[1], Catch::Approx(std::vector<double>{3, 8.4, 8.4, 3}));
+  const auto parens = strokes("\\left( x \\right)");
+  REQUIRE(parens.size() == 2);
+  REQUIRE(parens[0].size() == 25);
+  CHECK(parens[0].front() == Approx(8.4));  // the ends at the far side, the middle bulging to the near one
+  CHECK(parens[0][12] == Approx(3));
+  CHECK(parens[1][12] == Approx(8.4));
+}

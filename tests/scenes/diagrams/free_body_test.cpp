@@ -347,3 +347,19 @@ TEST_CASE("no force arrow passes through the ground or a wall, in any state", "[
   for (const auto& row : road.rows)
     for (const DrawnForce& f : car.forces(row)) CHECK(std::min(f.arrow.from.y(), f.arrow.to.y()) > car.axle(row).y());
 }
+
+TEST_CASE("the bumpy road's spring and damper arrows point against u and u' (-ku, -bu')", "[scene][diagram][free-body]") {
+  const Run road = run_of("bumpy_road");
+  int up = 0, down = 0;
+  for (const auto& row : road.rows) {
+    const auto forces = as<BumpyRoadDiagram>(road).forces(row);
+    REQUIRE(forces.size() == 2);
+    const double spring = forces[0].arrow.to.y() - forces[0].arrow.from.y();
+    const double damper = forces[1].arrow.to.y() - forces[1].arrow.from.y();
+    if (std::abs(row[1]) > 1e-9) CHECK(spring * row[1] < 0);  // y grows upwards in the world: u up, the spring pulls down
+    if (std::abs(row[2]) > 1e-9) CHECK(damper * row[2] < 0);
+    (spring > 0 ? up : down)++;
+  }
+  CHECK(up > 5);  // the run goes both ways
+  CHECK(down > 5);
+}

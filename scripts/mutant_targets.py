@@ -1,0 +1,67 @@
+# The tests a sampled mutant runs first: the test files most likely to kill a mutant of a given source file.
+"""Maps a mutated source file to the test files most likely to kill it, so
+that scripts/mutants --sample runs those first and stops at the first
+failure; only a mutant that survives them runs the rest of the fast suite.
+
+A test file is a target of a source file when, in this order:
+  1. it is named after it (shapes.cpp: shapes_test.cpp),
+  2. it includes the source's own header (shapes.hpp) by name,
+  3. it sits in the test folder that mirrors the source's folder
+     (render/draw/elements/ -> tests/render/draw/elements/, or the
+     nearest mirrored parent that exists; src/jobs is tested in tests/cli).
+Catch2 selects a test file's cases by the tag [#FILENAME] that -# gives
+every test case (the file's name without .cpp).
+"""
+import re
+from pathlib import Path
+
+# Where each source folder's tests live (policy as a table).
+TEST_FOLDER_OF = {"src/core": "tests/core", "src/cli": "tests/cli", "src/jobs": "tests/cli",
+                  "render": "tests/render", "scenes": "tests/scenes"}
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+
+
+def mirrored_folder(tree, source):
+    """The test folder mirroring the source's, or its nearest existing parent."""
+    for root, tests in TEST_FOLDER_OF.items():
+        if source.startswith(root + "/"):
+            rest = Path(source[len(root) + 1:]).parent
+            candidates = [Path(tests) / rest, *(Path(tests) / p for p in rest.parents)]
+            return next((c for c in candidates if (tree / c).is_dir()), None)
+    return None
+
+
+def test_files(tree):
+    """Every Catch2 test file of the tree, relative to it, sorted."""
+    return sorted(str(p.relative_to(tree)) for p in (tree / "tests").rglob("*_test.cpp"))
+
+
+def targets(tree, source, files=None):
+    """The test files (relative paths) that should catch a mutant of `source`, most likely first."""
+    tree = Path(tree)
+    files = test_files(tree) if files is None else files
+    stem = Path(source).stem
+    named = [f for f in files if Path(f).stem == stem + "_test"]
+    header = Path(source).with_suffix(".hpp").name
+    including = [f for f in files if any(Path(i).name == header for i in INCLUDE.findall((tree / f).read_text()))]
+    folder = mirrored_folder(tree, source)
+    mirrored = [f for f in files if folder is not None and Path(f).parent == folder]
+    ordered = []
+    for f in named + including + mirrored:
+        if f not in ordered:
+            ordered.append(f)
+    return ordered
+
+
+def tag_of(test_file):
+    return f"[#{Path(test_file).stem}]"
+
+
+def targeted_spec(spec, files):
+    """A Catch2 spec for the target files' cases that `spec` selects (one OR-term per file)."""
+    return ",".join(f"{tag_of(f)} {spec}" for f in files)
+
+
+def rest_spec(spec, files):
+    """A Catch2 spec for the cases of `spec` in every other file."""
+    return " ".join([spec, *(f"~{tag_of(f)}" for f in files)])
