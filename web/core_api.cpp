@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "setting_lines.hpp"
 #include "core/models/model.hpp"
 #include "core/input/quoted_value.hpp"
 #include "core/stop_flag.hpp"
@@ -23,14 +24,6 @@ struct LastRun {
   long long row_count = 0;
 };
 LastRun last;
-
-std::vector<std::string> lines_of(const char* text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text ? text : "");
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) lines.push_back(line);
-  return lines;
-}
 
 void solve(const std::string& model_name, const std::vector<std::string>& settings) {
   const vibra::Parameters p = vibra::model_settings(model_name, settings);
@@ -60,7 +53,7 @@ int vibra_solve(const char* model, const char* settings) {
   last = LastRun{};
   int code = 2;
   try {
-    solve(model ? model : "", lines_of(settings));
+    solve(model ? model : "", vibra::web::lines_of(settings));
     return 0;
   } catch (const vibra::UsageError& e) {
     last.error = e.what();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "setting_lines.hpp"
 #include "core/input/quoted_value.hpp"
 #include "web/live_scene.hpp"
 
@@ -34,14 +35,6 @@ int guarded(Work&& work) {
   }
 }
 
-std::vector<std::string> lines_of(const char* text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text ? text : "");
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) lines.push_back(line);
-  return lines;
-}
-
 }  // namespace
 
 extern "C" {
@@ -52,7 +45,7 @@ extern "C" {
 int vibra_scene_open(const char* scene, const char* settings) {
   return guarded([&] {
     live.reset();
-    live.emplace(scene ? scene : "", lines_of(settings));
+    live.emplace(scene ? scene : "", vibra::web::lines_of(settings));
   });
 }
 
