@@ -1,6 +1,9 @@
 // The lecture page: one HTML file with the run's video or frames, its plots, facts and player.
 #include "render/page/html_page.hpp"
 
+#include <fstream>
+#include <iterator>
+
 #include <cstdio>
 #include <map>
 
@@ -114,6 +117,13 @@ void write_text_file(const std::filesystem::path& path, const std::string& text)
   TemporaryFile file(path);
   write_text(file, text);
   file.commit();
+}
+
+std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.is_open() || in.bad()) throw OutputError("cannot read '" + path.string() + "': check the disk and its permissions");
+  return text;
 }
 
 }  // namespace vibra::render

@@ -73,4 +73,7 @@ void write_text(const TemporaryFile& file, const std::string& text);
 /// Writes text to `path` through a temporary file (nothing partial is left).
 void write_text_file(const std::filesystem::path& path, const std::string& text);
 
+/// A whole text file, as written; OutputError when it cannot be read.
+std::string read_text_file(const std::filesystem::path& path);
+
 }  // namespace vibra::render

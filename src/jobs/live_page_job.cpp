@@ -6,9 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include "core/error.hpp"
 #include "core/input/quoted_value.hpp"
@@ -17,6 +15,7 @@
 #include "render/output/place_together.hpp"
 #include "render/output/temporary_file.hpp"
 #include "render/page/html_page.hpp"
+#include "render/page/page_parts.hpp"
 #include "render/page/web_text.hpp"
 #include "scenes/scene_factory.hpp"
 
@@ -31,22 +30,6 @@ const char* const kLiveFiles[] = {"vibra_live.js",       "replay.js",           
                                   "live.css",            "DejaVuSans.ttf",      "DejaVuSans-Oblique.ttf",
                                   "DejaVuSans-Bold.ttf", "DejaVuSans-BoldOblique.ttf"};
 
-std::string read_all(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) throw render::OutputError("cannot read '" + file.string() + "'");
-  return text.str();
-}
-
-std::string replaced(const std::string& text, const std::string& from, const std::string& to) {
-  std::string out;
-  std::size_t done = 0;
-  for (std::size_t at = text.find(from); at != std::string::npos; done = at + from.size(), at = text.find(from, done))
-    out.append(text, done, at - done).append(to);
-  return out.append(text, done, std::string::npos);
-}
-
 /// The page's settings as JSON: scene, model, base settings, the keys' starting values.
 std::string config_json(const LivePageRequest& r) {
   std::map<std::string, std::string> initial;  // the last setting of a key wins, as in the run
@@ -60,17 +43,16 @@ std::string config_json(const LivePageRequest& r) {
     json.append(comma).append(render::json_string(key)).append(":").append(render::json_string(value));
     comma = ",";
   }
-  // "</" never closes the script element the JSON sits in.
-  return replaced(json + "}}", "</", "<\\/");
+  return json + "}}";  // json_string writes '<' as \u003c: nothing closes the script element it sits in
 }
 
 std::string page_html(const LivePageRequest& r, const fs::path& assets, const std::string& files) {
-  std::string html = read_all(assets / "live.html.in");
-  html = replaced(html, "@TITLE@", render::html_escape(r.scene_name + " — live"));
-  html = replaced(html, "@FILES@", render::html_escape(render::url_path_escape(files)));
-  html = replaced(html, "@WIDTH@", std::to_string(r.scene.width));
-  html = replaced(html, "@HEIGHT@", std::to_string(r.scene.height));
-  return replaced(html, "@CONFIG@", config_json(r));
+  return render::fill_page_template(render::read_text_file(assets / "live.html.in"),
+                                    {{"TITLE", render::html_escape(r.scene_name + " — live")},
+                                     {"FILES", render::html_escape(render::url_path_escape(files))},
+                                     {"WIDTH", std::to_string(r.scene.width)},
+                                     {"HEIGHT", std::to_string(r.scene.height)},
+                                     {"CONFIG", config_json(r)}});
 }
 
 /// The scene solved once natively: a setting the page could not start from

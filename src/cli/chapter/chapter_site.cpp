@@ -66,16 +66,9 @@ void check_site_folder(const fs::path& site) {
     throw UsageError("-o " + named + " " + why + ": give a new or empty folder, or move it");
 }
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw render::OutputError("cannot read '" + file.string() + "' back: check the disk");
-  return text;
-}
-
 /// A job's standard output, timings masked; "" (and the file removed) when it printed nothing.
 std::string kept_text(const fs::path& file) {
-  const std::string text = read_text(file);
+  const std::string text = render::read_text_file(file);
   if (text.empty()) {
     fs::remove(file);
     return "";
