@@ -34,8 +34,10 @@ alone() {
     times+="$t " rates+="$(echo "$frames / $t" | bc -l) "
   done
   MEDIAN_FPS=$(echo "$rates" | median) PEAK_KIB=$(cat "$WORK/peak" 2>/dev/null || echo 0)
-  printf "%-52s %8.1f frames/s (%.1f-%.1f) %7.2f s %8d KiB peak\n" "$label" "$MEDIAN_FPS" "$(echo "$rates" | smallest)" \
-    "$(echo "$rates" | largest)" "$(echo "$times" | median)" "$PEAK_KIB"
+  local peak=""  # a shell function's programs are not measured: no figure rather than 0
+  [ "$PEAK_KIB" -gt 0 ] && peak=$(printf " %8d KiB peak" "$PEAK_KIB")
+  printf "%-52s %8.1f frames/s (%.1f-%.1f) %7.2f s%s\n" "$label" "$MEDIAN_FPS" "$(echo "$rates" | smallest)" \
+    "$(echo "$rates" | largest)" "$(echo "$times" | median)" "$peak"
 }
 
 # pair FRAMES LABEL_A FUNCTION_A LABEL_B FUNCTION_B: A and B in turn, REPEAT rounds. Prints each one's
