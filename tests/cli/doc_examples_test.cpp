@@ -239,6 +239,25 @@ Outcome run_example(const std::string& command, const vibra::test::ScratchDirect
 const std::map<std::string, std::string> kKnownFailures = {
 };
 
+/// Optional parts of the build an example may need, by the option that uses
+/// them: a build without the part (the mutants' and sanitizers' builds skip
+/// the browser build) must refuse the example with one line naming the part.
+struct BuildPart {
+  const char* option;
+  bool built;
+  const char* refusal;  ///< what the one-line error says
+};
+constexpr BuildPart kBuildParts[] = {
+    {"--live", VIBRA_TESTS_HAVE_WEB, "needs the browser build"},
+};
+
+/// The part `command` needs that this build lacks, if any.
+const BuildPart* missing_part(const std::string& command) {
+  for (const BuildPart& part : kBuildParts)
+    if (!part.built && command.find(part.option) != std::string::npos) return &part;
+  return nullptr;
+}
+
 /// Rule 8: the docs hold at least this many runnable examples.
 constexpr size_t kMinimumExamples = 40;
 
@@ -329,7 +348,13 @@ TEST_CASE("doc examples: every command in README.md and docs/*.md runs as writte
     const Outcome outcome = run_example(command, dir, logs);
     INFO("exit status " << outcome.status << ", stderr:\n" << outcome.err);
     const auto known = kKnownFailures.find(code_of(example.command));
-    if (known != kKnownFailures.end()) {
+    const BuildPart* part = example.mark == DocExample::Mark::run ? missing_part(command) : nullptr;
+    if (part) {
+      INFO("this build lacks what " << part->option << " needs: the example must be refused in one line");
+      CHECK(outcome.status == 2);
+      CHECK(outcome.err.find(part->refusal) != std::string::npos);
+      CHECK(std::count(outcome.err.begin(), outcome.err.end(), '\n') == 1);
+    } else if (known != kKnownFailures.end()) {
       INFO("a known failure (" << known->second << "): when it passes, remove it from kKnownFailures");
       CHECK(outcome.status != 0);
     } else if (example.mark == DocExample::Mark::fails) {
