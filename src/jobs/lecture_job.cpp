@@ -9,10 +9,8 @@
 #include <optional>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <future>
 #include <memory>
-#include <sstream>
 #include <vector>
 
 #include "core/error.hpp"
@@ -64,13 +62,6 @@ struct PlannedShot {
   std::vector<render::PageMedia::TimePiece> time_map;  ///< a scene's pacing, as a page shows its clock
 };
 
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
 /// FNV-1a of what shapes a shot's frames and coding, so that a shot file of
 /// another storyboard, shot or video setting is never taken for this one.
 std::string shot_tag(const Storyboard& board, const Shot& shot, const render::VideoSettings& video) {
@@ -78,7 +69,7 @@ std::string shot_tag(const Storyboard& board, const Shot& shot, const render::Vi
                      std::to_string(board.fps) + "\n" + board.title + "\n" + shot.source + "\n" + video.codec + "\n" +
                      video.quality + "\n" + std::to_string(video.crf) + "\n" + video.preset;
   std::error_code ec;
-  if (!shot.is_card && fs::is_regular_file(shot.scene.name + ".toml", ec)) text += file_text(shot.scene.name + ".toml");
+  if (!shot.is_card && fs::is_regular_file(shot.scene.name + ".toml", ec)) text += render::read_text_file(shot.scene.name + ".toml");
   std::uint64_t hash = 14695981039346656037ull;
   for (unsigned char byte : text) hash = (hash ^ byte) * 1099511628211ull;
   char out[80];
@@ -318,7 +309,7 @@ void check_subtitles_file(const fs::path& vtt, bool force) {
   render::resolve_output_file(vtt);
   std::error_code ec;
   if (force || !fs::exists(vtt, ec)) return;
-  const std::string head = file_text(vtt.string()).substr(0, 64);
+  const std::string head = render::read_text_file(vtt).substr(0, 64);
   if (head.rfind(std::string("WEBVTT\n\n") + render::kWebVttMark, 0) != 0)
     throw render::OutputError("'" + vtt.string() + "' exists and was not written by vibra lecture: move it away, or "
                               "add --force to replace it");
