@@ -70,6 +70,12 @@ TEST_CASE("resonance model: the exact forced response, at the schemes' orders", 
   }
   // Undamped resonance grows as -t cos(t)/2.
   CHECK(l2_error("resonance", {"beta=0", "gamma=1", "periods=5", "scheme=rk4", "steps_per_period=200"}) < 1e-5);
+  // The free decay oscillates below beta = 2 only: just under it the exact
+  // response holds, at critical damping (its 1/sqrt(1 - beta^2/4) would be
+  // 1/0) and above it there is none, rather than a column of NaN.
+  CHECK(l2_error("resonance", {"beta=1.99", "gamma=0.7", "I=0.3", "periods=3", "scheme=rk4", "steps_per_period=200"}) < 1e-7);
+  CHECK_FALSE(trajectory("resonance", {"beta=2"})->info().exact);
+  CHECK_FALSE(trajectory("resonance", {"beta=3"})->info().exact);
 }
 
 TEST_CASE("resonance: measured steady amplitudes within 1% of 1/sqrt((1-g^2)^2 + (b g)^2) (Exercise 1.22)",
