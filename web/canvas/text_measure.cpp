@@ -1,6 +1,8 @@
 // The text measure in use: the browser's canvas in the browser build, fixed advances in a native build of the backend.
 #include "web/canvas/text_measure.hpp"
 
+#include <cmath>
+
 #ifdef __EMSCRIPTEN__
 #include <emscripten.h>
 #endif
@@ -8,6 +10,10 @@
 namespace vibra::web {
 
 namespace {
+
+/// How far under a whole pixel FreeType's rounded ascent may land: checked
+/// against Pango at every size from 5 to 80 px in steps of 0.037.
+constexpr double kFixedPointSlack = 1e-3;
 
 #ifdef __EMSCRIPTEN__
 // The page's 2D context measures; its five numbers come back through the heap.
@@ -40,6 +46,9 @@ MeasureText current = fixed_advance;
 #endif
 
 }  // namespace
+
+int hinted_ascent(double size) { return int(std::ceil(kAscentEm * size - kFixedPointSlack)); }
+int hinted_descent(double size) { return int(std::ceil(kDescentEm * size - kFixedPointSlack)); }
 
 MeasureText text_measure() { return current; }
 void set_text_measure(MeasureText measure) { current = measure; }

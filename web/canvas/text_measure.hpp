@@ -26,4 +26,13 @@ void set_text_measure(MeasureText measure);
 inline constexpr double kAscentEm = 1901.0 / 2048;
 inline constexpr double kDescentEm = 483.0 / 2048;
 
+/// The line's ascent and descent in whole pixels, as Pango has them on an
+/// image surface (hinted metrics: FreeType rounds each up to a pixel), for a
+/// font `size` pixels high. Pango's baseline is the ascent, its logical
+/// height their sum: the fractional ems would set text and stack rows up to
+/// a pixel off the native picture. The tolerance is FreeType's 26.6 fixed
+/// point, which lands a hair under a whole pixel where the double is over.
+int hinted_ascent(double size);
+int hinted_descent(double size);
+
 }  // namespace vibra::web

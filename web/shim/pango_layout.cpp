@@ -119,14 +119,15 @@ std::vector<PlacedRun> line_of(const _PangoLayout& layout) {
   return place(layout, {{"…", {}}});
 }
 
-double baseline_of(const _PangoLayout& layout) { return vibra::web::kAscentEm * layout.font.size; }
+double baseline_of(const _PangoLayout& layout) { return vibra::web::hinted_ascent(layout.font.size); }
 
 /// Extents in pixels, as doubles: ink (x0 y0 x1 y1), then logical.
 std::array<double, 8> extents_of(const _PangoLayout& layout) {
   const std::vector<PlacedRun> runs = line_of(layout);
   const double baseline = baseline_of(layout);
   std::array<double, 8> e{1e300, 1e300, -1e300, -1e300, 0, 0, advance_of(runs),
-                          (vibra::web::kAscentEm + vibra::web::kDescentEm) * layout.font.size};
+                          double(vibra::web::hinted_ascent(layout.font.size) +
+                                 vibra::web::hinted_descent(layout.font.size))};
   for (const PlacedRun& r : runs) {
     e[0] = std::min(e[0], r.x + r.extent.ink_left), e[2] = std::max(e[2], r.x + r.extent.ink_right);
     e[1] = std::min(e[1], baseline - r.rise - r.extent.ink_ascent);
