@@ -63,24 +63,37 @@ vibra::web::TextExtent measured(const std::string& font, double size, const std:
   return cache[key] = vibra::web::text_measure()(font, size, text);
 }
 
+/// The byte after the UTF-8 character that starts at `i` of `text`.
+std::size_t next_character(const std::string& text, std::size_t i) {
+  std::size_t next = i + 1;
+  while (next < text.size() && (static_cast<unsigned char>(text[next]) & 0xC0) == 0x80) ++next;
+  return next;
+}
+
 /// The runs split into glyphs (one per UTF-8 character). As Pango on an
 /// image surface (hinted metrics), each glyph advances a whole number of
-/// pixels: its advance within the run (kerning included) rounded.
+/// pixels: its own advance with the kerning to the next glyph of its run
+/// (harfbuzz puts a pair's kerning on the first glyph), rounded half up.
+/// Held to native Pango's glyph positions at the page's sizes by
+/// tests/browser/check_live_page.py; rounding the run's width up to each
+/// glyph instead sets an 'r' or a 'V' a pixel wider than Pango.
 std::vector<PlacedRun> place(const _PangoLayout& layout, const std::vector<vibra::web::shim::MarkupRun>& runs) {
   std::vector<PlacedRun> placed;
   double x = 0;
   for (const auto& run : runs) {
     const double size = layout.font.size * run.style.scale;
     const std::string font = css_font(layout.font, run.style, size);
-    double run_width = 0;  // of the run's text up to the glyph
     for (std::size_t i = 0; i < run.text.size();) {
-      std::size_t next = i + 1;
-      while (next < run.text.size() && (static_cast<unsigned char>(run.text[next]) & 0xC0) == 0x80) ++next;
+      const std::size_t next = next_character(run.text, i);
       PlacedRun p{run.text.substr(i, next - i), font, x, run.style.rise * layout.font.size, size, {}};
       p.extent = measured(font, size, p.text);
-      const double width = measured(font, size, run.text.substr(0, next)).advance;
-      p.extent.advance = std::round(width - run_width);
-      run_width = width;
+      double advance = p.extent.advance;
+      if (next < run.text.size()) {
+        const std::size_t after = next_character(run.text, next);
+        advance = measured(font, size, run.text.substr(i, after - i)).advance -
+                  measured(font, size, run.text.substr(next, after - next)).advance;
+      }
+      p.extent.advance = std::floor(advance + 0.5);
       x += p.extent.advance;
       placed.push_back(p);
       i = next;

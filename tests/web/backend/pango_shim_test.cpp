@@ -120,3 +120,33 @@ TEST_CASE("each glyph advances a whole number of pixels, as Pango's hinted metri
   REQUIRE(n.size() == 3 + 3 * 19);  // the move, then a text operation a glyph
   CHECK((n[3 + 15] == 0 && n[22 + 15] == 7 && n[41 + 15] == 14));
 }
+
+namespace {
+/// DejaVu Sans at 11.25 px as the browser measures it: 'r' 4.625 px and 'e'
+/// 6.92 px alone, "re" 0.43 px tighter (its kerning), every other text 6 px a character.
+vibra::web::TextExtent kerned_measure(const std::string&, double, const std::string& text) {
+  const double advance = text == "r" ? 4.625 : text == "e" ? 6.92 : text == "re" ? 11.115 : 6.0 * text.size();
+  return {advance, 0, advance, 8, 0};
+}
+}  // namespace
+
+TEST_CASE("a glyph's advance carries its kerning with the next glyph before it is rounded, as harfbuzz and Pango",
+          "[web-backend]") {
+  const cairo_rectangle_t extents{0, 0, 200, 100};
+  std::shared_ptr<cairo_surface_t> s(cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, &extents),
+                                     cairo_surface_destroy);
+  std::shared_ptr<cairo_t> cr(cairo_create(s.get()), cairo_destroy);
+  const vibra::web::MeasureText before = vibra::web::text_measure();
+  vibra::web::set_text_measure(kerned_measure);
+  const auto layout = layout_of(cr.get(), "re", 11.25);
+  cairo_move_to(cr.get(), 0, 0);
+  pango_cairo_show_layout(cr.get(), layout.get());
+  PangoRectangle logical;
+  pango_layout_get_pixel_extents(layout.get(), nullptr, &logical);
+  vibra::web::set_text_measure(before);
+  // Native Pango sets "wire force" at 11.25 px with 'r' 4 px wide: 4.625 - 0.43 rounded, not 4.625 rounded.
+  const std::vector<double>& n = vibra::web::commands_of(s.get()).numbers();
+  REQUIRE(n.size() == 3 + 2 * 19);
+  CHECK((n[3 + 15] == 0 && n[22 + 15] == 4));
+  CHECK(logical.width == 11);  // 4 + round(6.92)
+}
