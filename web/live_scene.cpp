@@ -72,13 +72,19 @@ void LiveScene::replay_chain(long long d) {
 void LiveScene::draw(double t, bool whole_chain) {
   if (!(t >= 0 && t <= mesh_.T * (1 + 1e-12)))
     throw UsageError("t = " + std::to_string(t) + " is outside the run [0, " + std::to_string(mesh_.T) + "]");
-  if (t < last_t_) start_over();  // the scene has seen the history up to the last time
   const long long k = clock_->first_frame_from(t);
   const long long d = k < clock_->frames() && clock_->time(k) == t ? clock_->drawn_frame(k) : k;
-  // A frame of its chain already drawn keeps the chain; else the chain's frames before it are replayed.
-  if (d / scenes::kLabelChainFrames != last_frame_ / scenes::kLabelChainFrames || last_frame_ < 0)
-    last_frame_ = whole_chain ? d - d % scenes::kLabelChainFrames - 1 : d - 1;
-  scene_->set_label_chain(d / scenes::kLabelChainFrames);
+  constexpr long long kChain = scenes::kLabelChainFrames;
+  const bool same_chain = last_frame_ >= 0 && d / kChain == last_frame_ / kChain;
+  // The scene has seen the history up to the last time; and a chain begun
+  // part way (a control moved) holds its labels' spots from there, so the
+  // still's whole chain is drawn afresh.
+  if (t < last_t_ || (same_chain && whole_chain && !chain_whole_)) start_over();
+  if (last_frame_ < 0 || d / kChain != last_frame_ / kChain) {
+    chain_whole_ = whole_chain;
+    last_frame_ = whole_chain ? d - d % kChain - 1 : d - 1;
+  }
+  scene_->set_label_chain(d / kChain);
   replay_chain(d);
   commands_of(canvas_->surface()).clear();
   scene_->draw(*canvas_, history_->row_at(t));

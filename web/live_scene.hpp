@@ -54,6 +54,7 @@ class LiveScene {
   std::optional<scenes::HistoryFeed> history_;
   std::optional<render::Canvas> canvas_, scratch_;
   long long last_frame_ = -1;
+  bool chain_whole_ = false;  ///< the frames of last_frame_'s chain were drawn from its start
   double last_t_ = -1;
 };
 
