@@ -93,5 +93,6 @@ void LiveScene::draw(double t, bool whole_chain) {
 }
 
 const DrawCommands& LiveScene::commands() const { return commands_of(canvas_->surface()); }
+int LiveScene::dropped() const { return skipped_of(canvas_->surface()); }
 
 }  // namespace vibra::web

@@ -31,6 +31,8 @@ class LiveScene {
   /// control moves; the page draws the whole chain when it settles).
   void draw(double t, bool whole_chain);
   const DrawCommands& commands() const;
+  /// Operations the page's canvas was not handed (web/canvas/surface_commands.hpp).
+  int dropped() const;
 
   double end_time() const { return mesh_.T; }
   int width() const { return config_.width; }

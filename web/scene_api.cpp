@@ -75,5 +75,8 @@ double vibra_scene_fps() { return live ? live->fps() : 0; }
 /// The simulated time frame k of the scene's clock shows (its playback).
 double vibra_scene_frame_time(int k) { return live ? live->frame_time(k) : 0; }
 int vibra_scene_frame_count() { return live ? int(live->frame_count()) : 0; }
+/// How many strokes and paints the page's canvas was not handed since the
+/// scene was opened (a surface as their source): the tests hold every scene to 0.
+int vibra_scene_dropped() { return live ? live->dropped() : 0; }
 
 }  // extern "C"

@@ -55,6 +55,16 @@ void DrawCommands::composite(int cairo_operator) {
   op(Op::kComposite, {canvas_operator});
 }
 
+void DrawCommands::fill_pattern(const DrawCommands& tile, int width, int height, const std::array<double, 6>& to_page,
+                                bool repeat, bool smooth, bool even_odd) {
+  op(Op::kFillPattern, {double(width), double(height), double(repeat), double(smooth)});
+  numbers_.insert(numbers_.end(), to_page.begin(), to_page.end());
+  numbers_.insert(numbers_.end(), {double(even_odd), double(tile.numbers_.size()), double(strings_.size()),
+                                   double(tile.strings_.size())});
+  numbers_.insert(numbers_.end(), tile.numbers_.begin(), tile.numbers_.end());
+  strings_.insert(strings_.end(), tile.strings_.begin(), tile.strings_.end());
+}
+
 std::string DrawCommands::joined_strings() const {
   std::string joined;
   for (std::size_t i = 0; i < strings_.size(); ++i) joined += (i ? "\n" : "") + strings_[i];
@@ -77,26 +87,38 @@ struct OpShape {
 constexpr OpShape kOpShapes[] = {
     {"save", 0},   {"restore", 0},        {"beginPath", 0}, {"moveTo", 2}, {"lineTo", 2},
     {"closePath", 0}, {"fill", 5},        {"stroke", -1},   {"clip", 1},   {"paint", 4},
-    {"text", 18},  {"composite", 1},      {"pushGroup", 0}, {"popGroupPaint", 1},
+    {"text", 18},  {"composite", 1},      {"pushGroup", 0}, {"popGroupPaint", 1}, {"fillPattern", 14},
 };
-constexpr int kStrokeFixed = 13;  // rgba, width, join, cap, matrix; then the dashes
+constexpr int kStrokeFixed = 13;    // rgba, width, join, cap, matrix; then the dashes
+constexpr int kPatternCount = 11;   // where a pattern's count of tile numbers sits among its arguments
+constexpr int kMostTileDepth = 8;   // tiles drawn with tiles: deeper is not described
+
+/// The operations of n[begin, end), each line after `indent`; a tile's
+/// operations follow its fillPattern line, indented.
+bool describe_into(std::ostringstream& out, const std::vector<double>& n, std::size_t begin, std::size_t end,
+                   const std::string& indent) {
+  constexpr int kOps = sizeof kOpShapes / sizeof kOpShapes[0];
+  for (std::size_t i = begin; i < end;) {
+    const int op = int(n[i++]);
+    if (op < 0 || op >= kOps || indent.size() > 2 * kMostTileDepth) return out << indent << "unknown operation\n", false;
+    const OpShape& shape = kOpShapes[op];
+    int count = shape.arguments;
+    if (count < 0 && i + kStrokeFixed < end) count = kStrokeFixed + 2 + int(n[i + kStrokeFixed]);
+    out << indent << shape.name;
+    const std::size_t tile = op == int(Op::kFillPattern) && i + kPatternCount < end ? std::size_t(n[i + kPatternCount]) : 0;
+    for (int k = 0; k < count && i < end; ++k) out << ' ' << n[i++];
+    out << '\n';
+    if (tile > end - i || !describe_into(out, n, i, i + tile, indent + "  ")) return false;
+    i += tile;
+  }
+  return true;
+}
 
 }  // namespace
 
 std::string describe(const DrawCommands& commands) {
   std::ostringstream out;
-  const std::vector<double>& n = commands.numbers();
-  constexpr int kOps = sizeof kOpShapes / sizeof kOpShapes[0];
-  for (std::size_t i = 0; i < n.size();) {
-    const int op = int(n[i++]);
-    if (op < 0 || op >= kOps) return out.str() + "unknown operation\n";
-    const OpShape& shape = kOpShapes[op];
-    int count = shape.arguments;
-    if (count < 0) count = kStrokeFixed + 2 + int(n[i + kStrokeFixed]);
-    out << shape.name;
-    for (int k = 0; k < count && i < n.size(); ++k) out << ' ' << n[i++];
-    out << '\n';
-  }
+  describe_into(out, commands.numbers(), 0, commands.numbers().size(), "");
   return out.str();
 }
 

@@ -26,6 +26,10 @@ enum class Op : int {
   kComposite,      ///< operator: 0 source-over, 1 copy, 2 destination-out (Cairo's OVER, SOURCE, CLEAR)
   kPushGroup,      ///< —: later operations go to a new transparent layer
   kPopGroupPaint,  ///< alpha: the layer painted onto the one below
+  /// width height repeat(0|1) smooth(0|1) xx yx xy yy x0 y0 evenodd count first_string string_count, then
+  /// `count` numbers: the path filled with a tile (a surface drawn by its own operations, whose strings are
+  /// string_count from first_string), placed on the page by the matrix from the tile's pixels to the page's.
+  kFillPattern,
 };
 
 /// What a stroke or a text run is drawn with: colour, pen and user matrix.
@@ -55,6 +59,10 @@ class DrawCommands {
   void composite(int cairo_operator);
   void push_group() { op(Op::kPushGroup); }
   void pop_group_paint(double alpha) { op(Op::kPopGroupPaint, {alpha}); }
+  /// The path filled with `tile` (width x height pixels), repeated or once,
+  /// `to_page` taking the tile's pixels to the page's (xx yx xy yy x0 y0).
+  void fill_pattern(const DrawCommands& tile, int width, int height, const std::array<double, 6>& to_page,
+                    bool repeat, bool smooth, bool even_odd);
 
   const std::vector<double>& numbers() const { return numbers_; }
   const std::vector<std::string>& strings() const { return strings_; }

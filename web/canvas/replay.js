@@ -23,13 +23,34 @@ function setPen(ctx, n, i, style) {
   return i + 13;
 }
 
+// A transparent canvas of width x height pixels to draw into, made by ctx's
+// makeCanvas where it has one (the tests' recording context), else as the browser does.
+function newCanvas(ctx, width, height) {
+  if (ctx.makeCanvas) return ctx.makeCanvas(width, height);
+  return typeof OffscreenCanvas !== 'undefined' ? new OffscreenCanvas(width, height)
+                                                : Object.assign(document.createElement('canvas'), { width, height });
+}
+
 // A group: a transparent layer as large as the canvas, drawn into until it
 // is painted on the layer below.
 function newLayer(ctx) {
-  const canvas = typeof OffscreenCanvas !== 'undefined' ? new OffscreenCanvas(ctx.canvas.width, ctx.canvas.height)
-                                                        : Object.assign(document.createElement('canvas'),
-                                                                        { width: ctx.canvas.width, height: ctx.canvas.height });
-  return canvas.getContext('2d');
+  return newCanvas(ctx, ctx.canvas.width, ctx.canvas.height).getContext('2d');
+}
+
+// The path filled with a tile drawn by its own operations (DrawCommands::fill_pattern):
+// a canvas pattern, repeated or once, placed by the tile-to-page matrix.
+function fillPattern(s, n, i) {
+  const [width, height, repeat, smooth, xx, yx, xy, yy, x0, y0, evenOdd, count, first, strings] = n.slice(i, i + 14);
+  const tile = newCanvas(s.ctx, Math.max(1, width), Math.max(1, height));
+  const tileStrings = s.strings.slice(first, first + strings);
+  replayInto({ ctx: tile.getContext('2d'), layers: [], strings: tileStrings }, n, i + 14, i + 14 + count);
+  const pattern = s.ctx.createPattern(tile, repeat ? 'repeat' : 'no-repeat');
+  pattern.setTransform({ a: xx, b: yx, c: xy, d: yy, e: x0, f: y0 });
+  s.ctx.imageSmoothingEnabled = Boolean(smooth);
+  s.ctx.fillStyle = pattern;
+  s.ctx.fill(evenOdd ? 'evenodd' : 'nonzero');
+  s.ctx.imageSmoothingEnabled = true;
+  return i + 14 + count;
 }
 
 // Each operation reads its numbers from n at i and returns the index after them.
@@ -87,14 +108,19 @@ const kOperations = [
     s.ctx.restore();
     return i + 1;
   },
+  /* fillPattern */ fillPattern,
 ];
 
 // Draws the operations (numbers: an array or Float64Array; strings: the
 // list joined by '\n') on ctx, whose transform is left the identity.
 function replayCommands(ctx, numbers, joinedStrings) {
-  const state = { ctx, layers: [], strings: (joinedStrings || '').split('\n') };
   ctx.setTransform(1, 0, 0, 1, 0, 0);
-  for (let i = 0; i < numbers.length;) {
+  replayInto({ ctx, layers: [], strings: (joinedStrings || '').split('\n') }, numbers, 0, numbers.length);
+}
+
+// The operations of numbers[begin, end) drawn in state's context.
+function replayInto(state, numbers, begin, end) {
+  for (let i = begin; i < end;) {
     const operation = kOperations[numbers[i]];
     if (!operation) throw new Error(`drawing operation ${numbers[i]} at ${i} is unknown`);
     i = operation(state, numbers, i + 1);

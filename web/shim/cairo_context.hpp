@@ -27,6 +27,9 @@ struct _cairo_pattern {
   cairo_pattern_type_t type = CAIRO_PATTERN_TYPE_SOLID;
   std::array<double, 4> rgba{0, 0, 0, 1};
   cairo_surface_t* surface = nullptr;  ///< a surface pattern's (not owned: the scene code keeps it)
+  std::array<double, 6> matrix{1, 0, 0, 1, 0, 0};  ///< user space to the surface's pixels, as Cairo's
+  cairo_extend_t extend = CAIRO_EXTEND_NONE;
+  cairo_filter_t filter = CAIRO_FILTER_GOOD;
 };
 
 namespace vibra::web::shim {
@@ -39,6 +42,9 @@ struct DevicePoint {
 struct GraphicsState {
   Pen pen;  ///< colour, width, join, cap, dashes, and the user matrix
   _cairo_pattern source;
+  /// The user matrix when the source was set: Cairo locks a pattern to the
+  /// user space of that moment.
+  std::array<double, 6> source_user{1, 0, 0, 1, 0, 0};
   bool group_source = false;  ///< the source is a popped group
   cairo_operator_t op = CAIRO_OPERATOR_OVER;
   cairo_antialias_t antialias = CAIRO_ANTIALIAS_DEFAULT;

@@ -1,5 +1,6 @@
 // The browser build's Cairo drawing: stroke, fill, clip and paint handed on as 2D-canvas operations.
 #include <algorithm>
+#include <array>
 #include <limits>
 
 #include "web/shim/cairo_context.hpp"
@@ -8,12 +9,38 @@ namespace {
 
 using vibra::web::shim::commands;
 
-/// A surface as the source: the 2D canvas is not handed it (the scene code
-/// takes image-only paths there); counted, so that tests see it.
+/// A surface as the source of a stroke or paint: the 2D canvas is not
+/// handed it (no scene strokes or paints with one in the browser); counted,
+/// so that tests see it.
 bool skipped(cairo_t* cr) {
   if (cr->state.source.type != CAIRO_PATTERN_TYPE_SURFACE) return false;
   ++cr->target->skipped;
   return true;
+}
+
+using Matrix = std::array<double, 6>;  // xx yx xy yy x0 y0, as cairo_matrix_t
+
+/// a after b.
+Matrix after(const Matrix& a, const Matrix& b) {
+  return {a[0] * b[0] + a[2] * b[1], a[1] * b[0] + a[3] * b[1], a[0] * b[2] + a[2] * b[3],
+          a[1] * b[2] + a[3] * b[3], a[0] * b[4] + a[2] * b[5] + a[4], a[1] * b[4] + a[3] * b[5] + a[5]};
+}
+
+Matrix inverse(const Matrix& m) {
+  const double det = m[0] * m[3] - m[1] * m[2];
+  return {m[3] / det, -m[1] / det, -m[2] / det, m[0] / det, (m[2] * m[5] - m[3] * m[4]) / det,
+          (m[1] * m[4] - m[0] * m[5]) / det};
+}
+
+/// The path filled with the source surface as Cairo fills it: the surface's
+/// own drawing as a tile, repeated or once, its pixels taken to the page
+/// through the pattern's matrix and the user space it was set in.
+void fill_with_surface(cairo_t* cr) {
+  const _cairo_pattern& p = cr->state.source;
+  const Matrix to_page = after(cr->state.source_user, inverse(p.matrix));
+  const bool smooth = p.filter != CAIRO_FILTER_NEAREST && p.filter != CAIRO_FILTER_FAST;
+  commands(cr).fill_pattern(p.surface->commands, p.surface->width, p.surface->height, to_page,
+                            p.extend == CAIRO_EXTEND_REPEAT, smooth, false);
 }
 
 /// The text runs laid on the path, stroked or filled with the pen.
@@ -26,7 +53,9 @@ void draw_path_text(cairo_t* cr, bool stroked) {
 }
 
 void fill(cairo_t* cr, bool preserve) {
-  if (!skipped(cr)) {
+  if (cr->state.source.type == CAIRO_PATTERN_TYPE_SURFACE) {
+    fill_with_surface(cr);
+  } else {
     commands(cr).fill(cr->state.pen.rgba, false);
     draw_path_text(cr, false);
   }

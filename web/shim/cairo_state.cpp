@@ -84,13 +84,15 @@ void cairo_set_source_rgb(cairo_t* cr, double r, double g, double b) { cairo_set
 
 void cairo_set_source(cairo_t* cr, cairo_pattern_t* source) {
   cr->state.source = *source;
+  cr->state.source_user = cr->state.pen.matrix;
   cr->state.pen.rgba = source->rgba;
   cr->state.group_source = false;
 }
 
-void cairo_set_source_surface(cairo_t* cr, cairo_surface_t* surface, double, double) {
-  cr->state.source = _cairo_pattern{CAIRO_PATTERN_TYPE_SURFACE, {0, 0, 0, 0}, surface};
-  cr->state.group_source = false;
+void cairo_set_source_surface(cairo_t* cr, cairo_surface_t* surface, double x, double y) {
+  _cairo_pattern pattern{CAIRO_PATTERN_TYPE_SURFACE, {0, 0, 0, 0}, surface};
+  pattern.matrix = {1, 0, 0, 1, -x, -y};  // the surface's origin at (x, y)
+  cairo_set_source(cr, &pattern);
 }
 
 cairo_pattern_t* cairo_get_source(cairo_t* cr) { return &cr->state.source; }

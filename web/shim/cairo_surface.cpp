@@ -104,8 +104,10 @@ cairo_status_t cairo_pattern_get_rgba(cairo_pattern_t* p, double* r, double* g, 
   *r = p->rgba[0], *g = p->rgba[1], *b = p->rgba[2], *a = p->rgba[3];
   return CAIRO_STATUS_SUCCESS;
 }
-void cairo_pattern_set_extend(cairo_pattern_t*, cairo_extend_t) {}
-void cairo_pattern_set_filter(cairo_pattern_t*, cairo_filter_t) {}
-void cairo_pattern_set_matrix(cairo_pattern_t*, const cairo_matrix_t*) {}
+void cairo_pattern_set_extend(cairo_pattern_t* p, cairo_extend_t extend) { p->extend = extend; }
+void cairo_pattern_set_filter(cairo_pattern_t* p, cairo_filter_t filter) { p->filter = filter; }
+void cairo_pattern_set_matrix(cairo_pattern_t* p, const cairo_matrix_t* m) {
+  p->matrix = {m->xx, m->yx, m->xy, m->yy, m->x0, m->y0};
+}
 
 }  // extern "C"

@@ -114,3 +114,29 @@ TEST_CASE("a group is a layer painted at its alpha, and a surface source is coun
   CHECK(vibra::web::skipped_of(r.surface.get()) == 1);
   CHECK(cairo_surface_get_type(r.surface.get()) == CAIRO_SURFACE_TYPE_RECORDING);
 }
+
+TEST_CASE("a fill with a surface pattern carries the surface's own drawing as a tile, placed as Cairo places it",
+          "[web-backend]") {
+  const Recording r = recording(40, 20);
+  cairo_t* cr = r.cr.get();
+  std::shared_ptr<cairo_surface_t> tile(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 4, 4), cairo_surface_destroy);
+  std::shared_ptr<cairo_t> tile_cr(cairo_create(tile.get()), cairo_destroy);
+  cairo_set_source_rgb(tile_cr.get(), 0, 0, 1);
+  cairo_paint(tile_cr.get());
+  cairo_pattern_t* pattern = cairo_pattern_create_for_surface(tile.get());
+  cairo_pattern_set_extend(pattern, CAIRO_EXTEND_REPEAT);
+  cairo_pattern_set_filter(pattern, CAIRO_FILTER_NEAREST);
+  cairo_matrix_t to_pattern;
+  cairo_matrix_init_translate(&to_pattern, 3, 0);  // user (3, 0) is the tile's (0, 0)
+  cairo_pattern_set_matrix(pattern, &to_pattern);
+  cairo_translate(cr, 10, 0);
+  cairo_set_source(cr, pattern);  // locked to this user space: the tile's origin at device (7, 0)
+  cairo_translate(cr, 5, 5);      // a later transform moves the path, not the pattern
+  cairo_rectangle(cr, 0, 0, 2, 2);
+  cairo_fill(cr);
+  cairo_pattern_destroy(pattern);
+  CHECK(drawn(r) ==
+        "moveTo 15 5\nlineTo 17 5\nlineTo 17 7\nlineTo 15 7\nclosePath\n"
+        "fillPattern 4 4 1 0 1 0 0 1 7 0 0 5 0 0\n  paint 0 0 1 1\nbeginPath\n");
+  CHECK(vibra::web::skipped_of(r.surface.get()) == 0);
+}
