@@ -32,8 +32,9 @@ std::string caption_of(const scenes::SceneConfig& config, const Trajectory& runs
 
 }  // namespace
 
-LiveScene::LiveScene(const std::string& scene, const std::vector<std::string>& settings)
-    : config_(scenes::load_scene(scene)) {
+LiveScene::LiveScene(const std::string& scene, const std::vector<std::string>& settings,
+                     const std::string& scene_text)
+    : config_(scene_text.empty() ? scenes::load_scene(scene) : scenes::parse_scene(scene_text, scene)) {
   for (const std::string& s : settings) scenes::apply_setting(config_, setting_of(s));
   const std::unique_ptr<Trajectory> runs = scenes::build_scene_runs(config_);
   mesh_ = runs->info().mesh;

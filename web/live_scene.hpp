@@ -21,7 +21,9 @@ namespace vibra::web {
 class LiveScene {
  public:
   /// Throws UsageError with the CLI's reason for a bad scene, key or value.
-  LiveScene(const std::string& scene, const std::vector<std::string>& settings);
+  /// `scene` is a built-in scene's or a model's name, or, with `scene_text`
+  /// (a scene file's text, carried in the page), that file's name.
+  LiveScene(const std::string& scene, const std::vector<std::string>& settings, const std::string& scene_text = "");
 
   /// Draws the frame at t (0 <= t <= end_time()) into commands(). Playing
   /// forward draws each frame once; a jump back solves the run again.

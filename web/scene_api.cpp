@@ -49,6 +49,15 @@ int vibra_scene_open(const char* scene, const char* settings) {
   });
 }
 
+/// Sets up the scene of a scene file, from its name (for its messages) and
+/// its text, which the page carries, with settings as vibra_scene_open.
+int vibra_scene_open_file(const char* file, const char* text, const char* settings) {
+  return guarded([&] {
+    live.reset();
+    live.emplace(file ? file : "", vibra::web::lines_of(settings), text ? text : "");
+  });
+}
+
 /// Draws the scene at simulated time t; its operations are then read by
 /// vibra_scene_numbers and vibra_scene_strings. `whole_chain` 1: as the
 /// still at t (LiveScene::draw); 0: at once.

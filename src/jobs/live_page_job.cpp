@@ -9,6 +9,9 @@
 #include <map>
 
 #include "core/error.hpp"
+#include "core/input/input_files.hpp"
+#include "core/input/name_spelling.hpp"
+#include "core/models/model.hpp"
 #include "core/input/quoted_value.hpp"
 #include "jobs/render_job.hpp"
 #include "render/output/output_error.hpp"
@@ -30,12 +33,29 @@ const char* const kLiveFiles[] = {"vibra_live.js",       "replay.js",           
                                   "live.css",            "DejaVuSans.ttf",      "DejaVuSans-Oblique.ttf",
                                   "DejaVuSans-Bold.ttf", "DejaVuSans-BoldOblique.ttf"};
 
-/// The page's settings as JSON: scene, model, base settings, the keys' starting values.
+/// Whether `scene` names a built-in scene or a model (spelled as load_scene takes them), not a scene file.
+bool names_builtin(const std::string& scene) {
+  for (const std::string& name : builtin_scene_names())
+    if (same_name(name, scene)) return true;
+  for (const auto& model : all_models())
+    if (same_name(model.name, scene)) return true;
+  return false;
+}
+
+/// A scene file's text, for the page to set the scene up from ("" for a built-in scene).
+std::string scene_text(const LivePageRequest& r) {
+  if (names_builtin(r.scene_name)) return "";
+  return read_input_file(r.scene_name, "the scene file", "the scene file", kMostSettingsBytes);
+}
+
+/// The page's settings as JSON: scene (and a scene file's text), its name, model, base settings, the keys'
+/// starting values.
 std::string config_json(const LivePageRequest& r) {
   std::map<std::string, std::string> initial;  // the last setting of a key wins, as in the run
   for (const Setting& s : r.scene.model_settings) initial[s.key] = s.value;
-  std::string json = "{\"scene\":" + render::json_string(r.scene_name) + ",\"model\":" +
-                     render::json_string(r.scene.model) + ",\"base\":[";
+  std::string json = "{\"scene\":" + render::json_string(r.scene_name) + ",\"sceneText\":" +
+                     render::json_string(scene_text(r)) + ",\"name\":" + render::json_string(r.scene.name) +
+                     ",\"model\":" + render::json_string(r.scene.model) + ",\"base\":[";
   for (std::size_t i = 0; i < r.base.size(); ++i) json.append(i ? "," : "").append(render::json_string(r.base[i]));
   json += "],\"initial\":{";
   const char* comma = "";
@@ -56,14 +76,16 @@ std::string page_html(const LivePageRequest& r, const fs::path& assets, const st
 }
 
 /// The scene solved once natively: a setting the page could not start from
-/// is refused here, with the reason the render gives.
+/// is refused here, with the reason the render gives, and so is a file the
+/// run reads besides the scene file (the page has no files to read).
 void check_scene(const LivePageRequest& r) {
   const std::unique_ptr<Trajectory> runs = build_scene_runs(r.scene);
   if (!std::isfinite(runs->info().mesh.T)) throw UsageError("a render needs a finite end time: give T or periods");
-  const std::vector<std::string> names = builtin_scene_names();
-  if (std::find(names.begin(), names.end(), r.scene_name) == names.end())
-    throw UsageError("--live takes a built-in scene (vibra render --help lists them), not '" + r.scene_name +
-                     "': start from one and give its settings with --set");
+  for (const InputFile& file : input_files())
+    if (file.role != "the scene file")
+      throw UsageError("--live cannot take '" + quoted_value(file.path.string(), 80) + "', " + file.role +
+                       ", into the page, which reads no files: give that key a value that names no file (vibra solve " +
+                       r.scene.model + " --help lists them)");
 }
 
 }  // namespace

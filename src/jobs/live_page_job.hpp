@@ -9,7 +9,9 @@
 namespace vibra::scenes {
 
 struct LivePageRequest {
-  std::string scene_name;  ///< a built-in scene's name: the page's WebAssembly holds those only
+  /// A built-in scene's or a model's name, or a scene file: the page's
+  /// WebAssembly holds the built-in ones, and the page carries a file's text.
+  std::string scene_name;
   SceneConfig scene;  ///< with every setting applied (checked: the page starts from it)
   /// The settings of the command line (scene and model keys), as KEY=VALUE:
   /// the page applies them, then the keys its controls changed.
@@ -26,7 +28,9 @@ struct LivePageRequest {
 std::filesystem::path live_assets_folder();
 
 /// Writes PAGE.html and PAGE_files/ (the WebAssembly core and scene code,
-/// the page's script, style and fonts), each only when complete.
+/// the page's script, style and fonts), each only when complete. A scene
+/// file's text goes into the page; a scene that reads another file (a road
+/// of heights) is refused naming it, as the page reads no files.
 void run_live_page(const LivePageRequest&);
 
 }  // namespace vibra::scenes

@@ -240,6 +240,36 @@ OTHER_SCENES = [
 ]
 
 
+# A user's scene file: its text goes into the page, which sets it up with the same keys.
+SCENE_FILE = """# A damped pendulum of the user's own
+model = "pendulum"
+Theta = 70
+alpha = 0.3
+periods = 4
+"""
+
+
+def check_scene_file(browser, vibra, work):
+    """`vibra render swing.toml --live`: the page re-solves the file's scene and draws its still."""
+    (work / "swing.toml").write_text(SCENE_FILE)
+    page = work / "swing.html"
+    r = native(vibra, ["render", "swing.toml", "--size", "960x540", "-o", str(page), "--live"], work)
+    check(r.returncode == 0, "a scene file: vibra render swing.toml --live writes its page" + ("" if r.returncode == 0 else ": " + r.stderr))
+    browser.send("Page.navigate", {"url": page.resolve().as_uri() + "#t=2"})
+    ready = browser.wait_for("document.body.dataset.ready === 'true' && vibraLivePage.settled", 60)
+    check(ready and browser.js("vibraLivePage.values.Theta") == "70", "a scene file: its page starts from the file's keys (Theta 70)")
+    move(browser, "input[type=number][data-key=alpha]", "0.6")
+    settings = page_settings(browser)
+    worst = largest_difference(page_rows(browser), native_rows(vibra, settings, work))
+    check(worst <= 1e-12 and "Theta=70" in settings, f"a scene file: a number box re-solves the file's scene to the rows of "
+                                                     f"`vibra solve pendulum` ({worst:.1e})")
+    browser.js("(() => { const e = document.getElementById('time'); e.value = '2'; e.dispatchEvent(new Event('input')); })()")
+    check(browser.wait_for("vibraLivePage.settled", 10), "a scene file: the frame at rest")
+    command, still = native_still(browser, vibra, work, "swing")
+    check(shlex.split(command)[:3] == ["vibra", "render", "swing.toml"], f"a scene file: \"Render this\" names it: {command}")
+    check_picture("a scene file", page_frame(browser), still)
+
+
 def check_other_scenes(browser, vibra, work):
     for scene, args, t in OTHER_SCENES:
         page = work / f"{scene}.html"
@@ -340,6 +370,7 @@ def main():
                 print("      screenshot: " + str(screenshot))
             check_speed(browser)
             check_other_scenes(browser, vibra, work)
+            check_scene_file(browser, vibra, work)
             check_no_problems(*browser.problems())
         finally:
             browser.close()

@@ -16,7 +16,10 @@ function settingsText(values) {
 
 // Sets the scene up with these values; the CLI's one-line reason when they are refused.
 function open(values) {
-  const code = page.core.ccall('vibra_scene_open', 'number', ['string', 'string'], [config.scene, settingsText(values)]);
+  const code = config.sceneText
+    ? page.core.ccall('vibra_scene_open_file', 'number', ['string', 'string', 'string'],
+                      [config.scene, config.sceneText, settingsText(values)])
+    : page.core.ccall('vibra_scene_open', 'number', ['string', 'string'], [config.scene, settingsText(values)]);
   if (code !== 0) return page.core.UTF8ToString(page.core._vibra_scene_error());
   page.end = page.core._vibra_scene_end_time();
   page.frames = page.core._vibra_scene_frame_count();
@@ -139,7 +142,7 @@ function renderCommand() {
   for (const line of config.base)
     if (!changed.some(key => line.startsWith(key.name + '='))) words.push('--set', line);
   for (const key of changed) words.push('--set', `${key.name}=${page.values[key.name]}`);
-  words.push('--at', String(Number(page.t.toPrecision(12))), '-o', `${config.scene}.png`);
+  words.push('--at', String(Number(page.t.toPrecision(12))), '-o', `${config.name}.png`);
   return words.map(shellWord).join(' ');
 }
 

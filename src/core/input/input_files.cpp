@@ -33,6 +33,13 @@ void note_input_file(const std::filesystem::path& path, std::string role) {
   noted.push_back({{path, std::move(role)}, status.st_dev, status.st_ino});
 }
 
+std::vector<InputFile> input_files() {
+  std::lock_guard lock(mutex);
+  std::vector<InputFile> files;
+  for (const Noted& n : noted) files.push_back(n.file);
+  return files;
+}
+
 std::string read_input_file(const std::string& path, const std::string& what, std::string role,
                             std::size_t most_bytes) {
   const auto refuse = [&](int error) {

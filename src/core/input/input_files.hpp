@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace vibra {
 
@@ -32,6 +33,9 @@ std::string read_input_file(const std::string& path, const std::string& what, st
 
 /// The most a text file of settings (a scene file, a storyboard) may hold: 1 MiB.
 inline constexpr std::size_t kMostSettingsBytes = std::size_t(1) << 20;
+
+/// Every input noted so far, in the order they were opened.
+std::vector<InputFile> input_files();
 
 /// Forgets every input: a process that runs several commands (the Python
 /// module) starts each afresh.
