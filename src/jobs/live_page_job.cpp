@@ -20,6 +20,7 @@
 #include "render/page/html_page.hpp"
 #include "render/page/page_parts.hpp"
 #include "render/page/web_text.hpp"
+#include "scenes/config/scene_keys.hpp"
 #include "scenes/scene_factory.hpp"
 
 namespace fs = std::filesystem;
@@ -48,11 +49,23 @@ std::string scene_text(const LivePageRequest& r) {
   return read_input_file(r.scene_name, "the scene file", "the scene file", kMostSettingsBytes);
 }
 
+/// The scene's keys the page has a control for besides the model's, as JSON
+/// entries of its key table: the comparison's values, when it compares.
+std::string scene_keys_json(const LivePageRequest& r) {
+  if (r.scene.compare.empty()) return "[]";
+  for (const SceneKey& key : scene_key_table())
+    if (key.spec.name == "compare")
+      return "[{\"name\":\"compare\",\"control\":\"text\",\"default\":\"-\",\"unit\":\"\",\"meaning\":" +
+             render::json_string(key.spec.meaning) + "}]";
+  return "[]";
+}
+
 /// The page's settings as JSON: scene (and a scene file's text), its name, model, base settings, the keys'
-/// starting values.
+/// starting values, the scene's keys with controls.
 std::string config_json(const LivePageRequest& r) {
   std::map<std::string, std::string> initial;  // the last setting of a key wins, as in the run
   for (const Setting& s : r.scene.model_settings) initial[s.key] = s.value;
+  if (!r.scene.compare.empty()) initial["compare"] = r.scene.compare;
   std::string json = "{\"scene\":" + render::json_string(r.scene_name) + ",\"sceneText\":" +
                      render::json_string(scene_text(r)) + ",\"name\":" + render::json_string(r.scene.name) +
                      ",\"model\":" + render::json_string(r.scene.model) + ",\"base\":[";
@@ -63,7 +76,7 @@ std::string config_json(const LivePageRequest& r) {
     json.append(comma).append(render::json_string(key)).append(":").append(render::json_string(value));
     comma = ",";
   }
-  return json + "}}";  // json_string writes '<' as \u003c: nothing closes the script element it sits in
+  return json + "},\"sceneKeys\":" + scene_keys_json(r) + "}";  // json_string writes '<' as \u003c: nothing closes the script element it sits in
 }
 
 std::string page_html(const LivePageRequest& r, const fs::path& assets, const std::string& files) {

@@ -2,7 +2,8 @@
 """Drives vibra's live page (`vibra render SCENE -o PAGE.html --live`) in headless Chromium.
 
 Writes a 960x540 pendulum page of a 10-period run into a directory whose name
-has a space and non-ASCII letters, opens it from file:// and checks: it starts
+has a space and non-ASCII letters, opens it from file:// with the network off
+and checks: it starts
 with nothing fetched but file: and data: URLs; moving a slider, choosing in a
 select and typing in a number box re-solves in the page, whose rows equal the
 native `vibra solve` rows to 1e-12; a
@@ -286,6 +287,26 @@ def check_other_scenes(browser, vibra, work):
             data = browser.js("document.getElementById('frame').toDataURL('image/png')")
             (keep / f"{scene}_page.png").write_bytes(base64.b64decode(data.split(",", 1)[1]))
         check_picture(scene, frame, still)
+        if "compare=dt=0.3,0.15" in args:
+            check_comparison_control(browser, vibra, work)
+
+
+def check_comparison_control(browser, vibra, work):
+    """The comparison's values have a control: typed in, the runs are solved again and drawn as the CLI
+    draws them; a bad one is refused with the CLI's reason."""
+    move(browser, "input[data-key=compare]", "dt=0.3,0.1")
+    settings = page_settings(browser)
+    check("compare=dt=0.3,0.1" in settings, f"the comparison's values have a control: {' '.join(settings)}")
+    browser.js("(() => { const e = document.getElementById('time'); e.value = '4.5'; e.dispatchEvent(new Event('input')); })()")
+    check(browser.wait_for("vibraLivePage.settled", 10), "the comparison: the frame at rest")
+    command, still = native_still(browser, vibra, work, "spring")
+    check("compare=dt=0.3,0.1" in command, f"the comparison: \"Render this\" compares the values typed: {command}")
+    check_picture("the comparison with the values typed", page_frame(browser), still)
+    move(browser, "input[data-key=compare]", "dt=0.3,-1")
+    shown = browser.js("document.getElementById('refusal').textContent")
+    cli = native(vibra, ["render", "spring", "--set", "compare=dt=0.3,-1", "--at", "0", "-o", "refused.png"], work)
+    check(cli.returncode == 2 and shown == cli.stderr.strip().removeprefix("vibra: error: "),
+          f"the comparison: a bad value is refused with the CLI's reason: '{shown}'")
 
 
 def check_share(browser, page):
@@ -348,8 +369,11 @@ def main():
         browser = Chromium(chromium, str(Path(tmp) / "profile"))
         try:
             browser.open_tab(1280, 1100)
+            # The network off: the page needs nothing but its files.
+            browser.send("Network.emulateNetworkConditions",
+                         {"offline": True, "latency": 0, "downloadThroughput": -1, "uploadThroughput": -1})
             browser.load(page)
-            check(browser.wait_for("document.body.dataset.ready === 'true'", 60), "the page starts from file://")
+            check(browser.wait_for("document.body.dataset.ready === 'true'", 60), "the page starts from file:// with the network off")
             kinds = browser.js("[...new Set([...document.querySelectorAll('[data-key]')].map(e => e.dataset.kind))].sort()")
             check(kinds == ["number", "range", "select", "text"] or kinds == ["number", "range", "select"],
                   f"the keys have sliders, number boxes and selects: {kinds}")

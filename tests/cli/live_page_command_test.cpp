@@ -32,6 +32,7 @@ TEST_CASE("render --live writes the page, its settings and its browser files, an
   CHECK_THAT(html, Catch::Contains(R"("scene":"pendulum","sceneText":"","name":"pendulum","model":"pendulum",)"
                                    R"("base":["Theta=45","size=640x360"])"));
   CHECK_THAT(html, Catch::Contains(R"(width="640" height="360")"));
+  CHECK_THAT(html, Catch::Contains(R"("sceneKeys":[])"));  // compares nothing: no control beyond the model's keys
   for (const char* file : {"vibra_live.js", "replay.js", "live.js", "live.css", "DejaVuSans.ttf", "DejaVuSans-Oblique.ttf"})
     CHECK(std::filesystem::file_size(dir.path / "explore_files" / file) > 1000);
   // Its own folder (its manifest proves it) is replaced by the next run.
@@ -68,4 +69,15 @@ TEST_CASE("render --live takes a scene file into the page, and refuses one that 
   CHECK(std::count(refused.err.begin(), refused.err.end(), '\n') == 1);
   CHECK(!std::filesystem::exists(road_page));
   CHECK(!std::filesystem::exists(dir.path / "road_files"));
+}
+
+TEST_CASE("render --live gives a comparison's values a control of the page, starting from them", "[cli][live]") {
+  ScratchDirectory dir;
+  const std::string page = dir / "compare.html";
+  const auto r = run_vibra("render spring --set compare=dt=0.3,0.15 -o " + page + " --live");
+  if (r.exit_code == 2 && r.err.find("--live needs the browser build") != std::string::npos) return;
+  REQUIRE(r.exit_code == 0);
+  const std::string html = read_file(page);
+  CHECK_THAT(html, Catch::Contains(R"("compare":"dt=0.3,0.15")"));
+  CHECK_THAT(html, Catch::Contains(R"("sceneKeys":[{"name":"compare","control":"text",)"));
 }

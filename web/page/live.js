@@ -207,7 +207,8 @@ function frameOf(t) {
 
 async function start() {
   page.core = await createVibraLive();
-  page.keys = JSON.parse(page.core.UTF8ToString(page.core.ccall('vibra_model_keys', 'number', ['string'], [config.model])));
+  page.keys = JSON.parse(page.core.UTF8ToString(page.core.ccall('vibra_model_keys', 'number', ['string'], [config.model])))
+    .concat(config.sceneKeys);  // the scene's own keys with a control: the comparison's values
   for (const key of page.keys) page.values[key.name] = startValue(key);
   for (const key of page.keys) $('keys').append(controlFor(key));
   $('play').addEventListener('click', play);
