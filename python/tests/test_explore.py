@@ -30,3 +30,18 @@ def test_explore_refuses_a_bad_value_with_the_cli_reason_and_writes_nothing(in_t
     with pytest.raises(ValueError, match="give -o PAGE.html"):
         vibra.explore(out="page.mp4")
     assert list(in_tmp.iterdir()) == []
+
+
+def test_explore_takes_a_scene_file_into_the_page_and_refuses_one_that_reads_a_road_file(in_tmp):
+    (in_tmp / "swing.toml").write_text('model = "pendulum"\nTheta = 70\nperiods = 4\n')
+    page = vibra.explore("swing.toml", alpha=0.5)
+    assert os.fspath(page) == "swing_live.html"
+    text = (in_tmp / "swing_live.html").read_text()
+    config = json.loads(re.search(r'<script id="config" type="application/json">(.*?)</script>', text).group(1))
+    assert config["sceneText"] == 'model = "pendulum"\nTheta = 70\nperiods = 4\n'
+    assert config["name"] == "swing" and config["initial"]["Theta"] == "70" and config["base"] == ["alpha=0.5"]
+    (in_tmp / "road.txt").write_text("0\n0.01\n" * 100)
+    (in_tmp / "road.toml").write_text('model = "bumpy-road"\nroad = "road.txt"\ndx = 0.5\nT = 2\n')
+    with pytest.raises(ValueError, match=r"--live cannot take 'road.txt', the road profile \(--set road\), into the page"):
+        vibra.explore("road.toml")
+    assert not (in_tmp / "road_live.html").exists() and not (in_tmp / "road_live_files").exists()

@@ -36,7 +36,8 @@ def explore(scene="pendulum", out=None, *, size=None, quiet=True, **keys):
     --live` does (default out: SCENE_live.html, with SCENE_live_files/), and
     returns a LivePage that shows it inline in a notebook: a control for
     every key of the model (Theta, alpha, scheme...), play, pause, speed and
-    a time scrubber, re-solved and drawn in the browser. Keywords are the
+    a time scrubber, re-solved and drawn in the browser. SCENE is a built-in
+    scene, a model or a scene file (its text goes into the page). Keywords are the
     model's keys (Theta=45, alpha=0.8), the page's starting state, or scene
     keys such as size=(960, 540). Raises ValueError with the CLI's reason for
     a bad key or value."""
