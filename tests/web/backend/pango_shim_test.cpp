@@ -28,7 +28,9 @@ TEST_CASE("markup becomes runs with italic, sizes, rises and entities", "[web-ba
   CHECK((runs[0].text == "m" && runs[0].style.italic));
   CHECK((runs[1].text == "g & " && !runs[1].style.italic));
   CHECK(runs[2].text == "ε");
-  CHECK((runs[3].text == "v" && runs[3].style.scale == Approx(1 / 1.2) && runs[3].style.rise == Approx(-0.2)));
+  // <sub>: DejaVu's OS/2 subscript size and drop, as Pango 1.50 sets it (7.871 px under 11.25 px text).
+  CHECK((runs[3].text == "v" && runs[3].style.scale == Approx(1433.0 / 2048) &&
+         runs[3].style.rise == Approx(-286.0 / 2048)));
   CHECK(runs[4].text == "π");
   CHECK_THROWS_AS(vibra::web::shim::parse_markup("<blink>x</blink>"), std::invalid_argument);
 }
@@ -58,6 +60,37 @@ TEST_CASE("a layout is measured by the text measure and drawn at its baseline fr
   REQUIRE(n.size() == 3 + 2 * 19);  // the move, then two text operations of 19 numbers
   CHECK((n[3] == double(vibra::web::Op::kText) && n[3 + 15] == 10 && n[3 + 16] == Approx(baseline)));
   CHECK((n[22 + 15] == 22 && n[22 + 16] == Approx(baseline)));
+}
+
+TEST_CASE("a layout shown at a fractional point sets its glyphs at whole pixels, as Cairo's image compositor",
+          "[web-backend]") {
+  const cairo_rectangle_t extents{0, 0, 200, 100};
+  std::shared_ptr<cairo_surface_t> s(cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, &extents),
+                                     cairo_surface_destroy);
+  std::shared_ptr<cairo_t> cr(cairo_create(s.get()), cairo_destroy);
+  const auto layout = layout_of(cr.get(), "x", 20);
+  cairo_move_to(cr.get(), 10.3, 30.6);
+  pango_cairo_show_layout(cr.get(), layout.get());
+  const std::vector<double>& n = vibra::web::commands_of(s.get()).numbers();
+  REQUIRE(n.size() == 3 + 19);
+  CHECK((n[3 + 15] == 10 && n[3 + 16] == 50));  // (10.3, 30.6 + 19) rounded, not (10.3, 49.6)
+}
+
+TEST_CASE("a superscript raises the line's baseline and a subscript lowers its bottom, as native Pango",
+          "[web-backend]") {
+  const cairo_rectangle_t extents{0, 0, 200, 100};
+  std::shared_ptr<cairo_surface_t> s(cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, &extents),
+                                     cairo_surface_destroy);
+  std::shared_ptr<cairo_t> cr(cairo_create(s.get()), cairo_destroy);
+  // Native Pango 1.50's baselines of "10<sup>−8</sup>x": 13.3994 px at 11.25 px, 17.2002 px at 15 px (the
+  // superscript 983/2048 em up, its own hinted ascent over that), where plain text has 11 and 14.
+  CHECK(pango_layout_get_baseline(layout_of(cr.get(), "10<sup>−8</sup>x", 11.25).get()) == 13721);
+  CHECK(pango_layout_get_baseline(layout_of(cr.get(), "10<sup>−8</sup>x", 15).get()) == 17613);
+  CHECK(pango_layout_get_baseline(layout_of(cr.get(), "10x", 15).get()) == 14 * PANGO_SCALE);
+  // A subscript 286/2048 em down lowers the line's bottom: native height 19.0947 px of "C<sub>R</sub>x" at 15 px.
+  PangoRectangle logical;
+  pango_layout_get_extents(layout_of(cr.get(), "C<sub>R</sub>x", 15).get(), nullptr, &logical);
+  CHECK(logical.height == 19553);
 }
 
 TEST_CASE("a line's ascent and descent are the whole pixels native Pango gives DejaVu Sans", "[web-backend]") {
