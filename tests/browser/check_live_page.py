@@ -9,9 +9,9 @@ select and typing in a number box re-solves in the page, whose rows equal the
 native `vibra solve` rows to 1e-12; a
 share link restores a state; "Render this" shows the command, which run
 natively draws the still the page shows (PSNR at least 30 dB, and no part of
-the frame, body, arrow or label, more than a pixel off: for the pendulum, a
-spring comparing two dt with its plot panels and legend, the bumpy road's
-hatched ground and the RLC circuit's symbols); a bad value typed in a number box is
+the frame, body, arrow or label, more than a pixel off: for the pendulum and
+every other built-in scene, a spring comparing two dt with its plot panels
+and legend among them, and a user's scene file); a bad value typed in a number box is
 refused with the CLI's one-line reason; frames per second while playing and
 the latency of a moved control. Prints the figures; saves a screenshot.
 
@@ -231,13 +231,20 @@ def check_still(browser, vibra, work):
     return frame, still, db
 
 
-# Scenes beyond the pendulum, each a page of its own at a time a share link gives: plot panels and a
-# legend of compared runs, the bumpy road's hatched ground, the RLC circuit's sub- and superscripted
-# symbols.
+# Every other built-in scene, each a page of its own at a time a share link gives: among them plot
+# panels and a legend of compared runs, the bumpy road's hatched ground, subscripts (the bouncing ball's
+# C_R, the RLC circuit's symbols) and a superscript (the orbit's panel's x10^-8).
 OTHER_SCENES = [
     ("spring", ["--set", "compare=dt=0.3,0.15"], 4.5),
     ("bumpy_road", [], 2.5),
     ("rlc", [], 6),
+    ("orbit", [], 5),
+    ("bouncing_ball", [], 2),
+    ("elastic_pendulum", [], 4),
+    ("sliding_box", [], 3),
+    ("washing_machine", [], 8),
+    ("spring_dashpot", [], 3),
+    ("pendulum_book", [], 4),
 ]
 
 
