@@ -384,6 +384,10 @@ def main():
             kinds = browser.js("[...new Set([...document.querySelectorAll('[data-key]')].map(e => e.dataset.kind))].sort()")
             check(kinds == ["number", "range", "select", "text"] or kinds == ["number", "range", "select"],
                   f"the keys have sliders, number boxes and selects: {kinds}")
+            # The pendulum's L has no default (the wire's length is derived): its box says 'unset', not blank.
+            unset = browser.js("(() => { const e = document.querySelector('input[type=number][data-key=L]');"
+                               " return [e.value, e.placeholder]; })()")
+            check(unset == ["", "unset"], f"a key with no value says 'unset' in its box: value and placeholder {unset}")
             latencies = check_controls(browser, vibra, work)
             check(max(latencies) <= 100, f"a new picture {max(latencies):.0f} ms at most after a control moves "
                                          f"at t = 0 (10 periods; {', '.join(f'{x:.0f}' for x in latencies)} ms)")

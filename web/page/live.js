@@ -105,7 +105,9 @@ function controlFor(key) {
     const span = sliderSpan(key);
     if (span) inputs.push(Object.assign(document.createElement('input'),
                                         { type: 'range', min: span[0], max: span[1], step: 'any', value }));
-    inputs.push(Object.assign(document.createElement('input'), { type: span ? 'number' : 'text', step: 'any', value }));
+    // An unset key (no default: derived from others, or not used) says so rather than showing an empty box.
+    inputs.push(Object.assign(document.createElement('input'),
+                              { type: span ? 'number' : 'text', step: 'any', value, placeholder: 'unset' }));
   }
   for (const input of inputs) {
     input.dataset.key = key.name;
