@@ -1,6 +1,7 @@
 // Registers vibra analyze convergence and its options.
 #include "cli/analyze/analyses.hpp"
 #include "cli/analyze/analysis_output.hpp"
+#include "cli/option_checks.hpp"
 
 namespace vibra::cli {
 
@@ -24,7 +25,8 @@ void add_convergence_analysis(CLI::App& analyze) {
       ->allow_extra_args(false);
   cmd->add_option("--levels", o->experiment.levels,
                   "Number of dt values, each half the one before (default: halve until the last two rates agree "
-                  "within 0.05, 4 to 14 levels)");
+                  "within 0.05, 4 to 14 levels)")
+      ->check(ranged("--levels"));
   cmd->add_option("--compare", o->experiment.compare,
                   "scheme=A,B,...: a study per scheme, one table and one log-log figure with a line per scheme");
   add_output_options(*cmd, o->output);

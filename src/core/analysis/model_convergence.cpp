@@ -1,14 +1,17 @@
 // A convergence study of one model and scheme, as vibra analyze convergence runs it.
 #include "core/analysis/model_convergence.hpp"
 
+#include <string>
+
 #include "core/analysis/parameters_with_dt.hpp"
 #include "core/error.hpp"
+#include "core/input/value_ranges.hpp"
 #include "core/models/model.hpp"
 
 namespace vibra {
 
 ModelConvergence model_convergence(const std::string& model_name, const std::vector<std::string>& settings, int levels) {
-  if (levels != 0 && (levels < 2 || levels > 20)) throw UsageError("--levels must be 2..20 (each level halves dt), e.g. --levels 5");
+  if (levels != 0) in_range("--levels", levels, std::to_string(levels));  // 0: halve until the rates agree
   const ModelDefinition& model = find_model(model_name);
   Parameters base = model_parameters(model);
   for (const auto& s : settings) base.assign(s);

@@ -36,7 +36,7 @@ const std::vector<ValueRange>& value_ranges() {
       {"--jobs", 1, 64, false, true, false, "commands at once, e.g. --jobs 2"},
       {"--crf", 0, 63, false, true, false, "e.g. --crf 23 (lower is better)"},
       {"--orbits", 1, 1e9, false, true, false, "e.g. --orbits 1000"},
-      {"--levels", 1, 30, false, true, false, "e.g. --levels 5"},
+      {"--levels", 2, 20, false, true, false, "each level halves dt, e.g. --levels 5"},
       {"--rate", 0, 1e6, false, false, false, "lines per second, e.g. --rate 10 (0: as fast as it computes)"},
       // The Python module's arguments.
       {"chunk", 1, 1 << 24, false, true, false, "rows per chunk, e.g. chunk=65536"},
