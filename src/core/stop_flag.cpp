@@ -50,15 +50,22 @@ void report_long_work(long long done, long long total) {
   next_line = now + std::chrono::seconds(10);
   const double seconds = std::chrono::duration<double>(now - start).count();
   const double left = seconds * double(total - done) / double(done - first_done);
-  // The estimate in the unit a person reads: 40 s, 12 min, 3.5 h, 9 days, 2.7e+02 years.
-  char estimate[48];
-  if (left < 120) std::snprintf(estimate, sizeof estimate, "%.0f s", left);
-  else if (left < 7200) std::snprintf(estimate, sizeof estimate, "%.0f min", left / 60);
-  else if (left < 2 * 86400) std::snprintf(estimate, sizeof estimate, "%.1f h", left / 3600);
-  else if (left < 365.25 * 86400) std::snprintf(estimate, sizeof estimate, "%.0f days", left / 86400);
-  else std::snprintf(estimate, sizeof estimate, "%.2g years", left / (365.25 * 86400));
   std::fprintf(stderr, "vibra: step %lld of %lld (%.1f%%), about %s left; Ctrl-C stops it\n", done, total,
-               100.0 * double(done) / double(total), estimate);
+               100.0 * double(done) / double(total), time_left_text(left).c_str());
+}
+
+std::string time_left_text(double seconds) {
+  constexpr double kMinute = 60, kHour = 3600, kDay = 86400, kYear = 365.25 * kDay;
+  char text[48];
+  if (seconds < 2 * kMinute) std::snprintf(text, sizeof text, "%.0f s", seconds);
+  else if (seconds < 2 * kHour) std::snprintf(text, sizeof text, "%.0f min", seconds / kMinute);
+  else if (seconds < 2 * kDay) std::snprintf(text, sizeof text, "%.1f h", seconds / kHour);
+  else if (seconds < kYear) std::snprintf(text, sizeof text, "%.0f days", seconds / kDay);
+  else {
+    std::snprintf(text, sizeof text, "%.2g", seconds / kYear);
+    return text + std::string(text == std::string("1") ? " year" : " years");
+  }
+  return text;
 }
 
 }  // namespace vibra

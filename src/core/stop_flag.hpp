@@ -4,6 +4,7 @@
 // its temporaries and exits with 128 + signal. In core so that the solver
 // itself can look at it.
 #pragma once
+#include <string>
 
 namespace vibra {
 
@@ -37,6 +38,9 @@ void set_stop_poll(StopPoll);
 /// (1e8 or more; not an endless one), a line on stderr every 10 s or so,
 /// "vibra: step N of M (P%), about S s left", unless quiet_long_work.
 void report_long_work(long long done, long long total);
+/// Seconds left in the unit a person reads: "40 s", "12 min", "3.5 h",
+/// "9 days", "2.7e+02 years" (report_long_work's estimate).
+std::string time_left_text(double seconds);
 /// No progress lines (-q, the Python module, the fuzz targets).
 void quiet_long_work(bool quiet);
 
