@@ -470,3 +470,28 @@ TEST_CASE("a bracket and a parenthesis are drawn a tenth of the size inside thei
   CHECK(parens[0][12] == Approx(3));
   CHECK(parens[1][12] == Approx(8.4));
 }
+
+TEST_CASE("a bar is one upright stroke in the middle of its box, a double bar two at its thirds", "[typeset]") {
+  // At 30 px a bar's box is 0.3 x 30 = 9 wide, a double bar's 0.45 x 30 = 13.5.
+  const auto stroke_xs = [](const std::string& source) {
+    std::vector<std::vector<double>> xs;
+    std::function<void(const MathBox&)> walk = [&](const MathBox& b) {
+      if (b.role == Role::stroke) {
+        xs.emplace_back();
+        for (const Point& p : b.points) xs.back().push_back(p.x());
+      }
+      for (const MathBox& c : b.children) walk(c);
+    };
+    walk(set(source));
+    return xs;
+  };
+  const auto bars = stroke_xs("\\left| x \\right|");
+  REQUIRE(bars.size() == 2);
+  for (const auto& bar : bars) CHECK_THAT(bar, Catch::Approx(std::vector<double>{4.5, 4.5}));
+  const auto double_bars = stroke_xs("\\left\\| x \\right\\|");
+  REQUIRE(double_bars.size() == 4);
+  for (size_t i = 0; i < 4; ++i) {
+    const double third = i % 2 == 0 ? 0.33 * 13.5 : 0.67 * 13.5;
+    CHECK_THAT(double_bars[i], Catch::Approx(std::vector<double>{third, third}));
+  }
+}
