@@ -161,3 +161,23 @@ TEST_CASE("a scene file chooses panels and energy bars", "[panels]") {
   CHECK(config.energy_bars);
   CHECK_THROWS_WITH(scenes::parse_scene("panels = \" , \"\n", "lecture.toml"), Catch::Contains("panels is empty"));
 }
+
+TEST_CASE("a window narrower than the run moves the panels' time axis, one wider than the run leaves it whole",
+          "[panels][render]") {
+  // T = 8 at t = 7: a window of 2 shows 5..7; one of 9 covers the whole run, as no window does.
+  test::ScratchDirectory dir;
+  const auto still = [&](const std::string& window, const std::string& name) {
+    const auto r = test::run_vibra("render pendulum --set T=8 --at 7 --size 320x180" + window + " -q -o " + (dir / name));
+    INFO(r.err);
+    CHECK(r.exit_code == 0);
+    return test::read_file(dir / name);
+  };
+  // Compared as booleans: Catch would print the pictures' bytes.
+  const std::string whole = still("", "whole.png");
+  const bool narrow_moves = still(" --window 2", "narrow.png") != whole;
+  const bool jumps_move = still(" --window 2 --window-mode jumps", "jumps.png") != whole;
+  const bool wide_stays = still(" --window 9", "wide.png") == whole;
+  CHECK(narrow_moves);
+  CHECK(jumps_move);
+  CHECK(wide_stays);
+}
