@@ -279,6 +279,27 @@ TEST_CASE("other formats hold the right codec and every frame", "[video]") {
   }
 }
 
+TEST_CASE("GIF keeps a colour of its 6x6x6 cube exactly, white as white and a light grey as a grey", "[video]") {
+  // The fixed palette: every channel a multiple of 51, plus 40 greys. The
+  // bob (51, 102, 204) is in the cube; the grid's (200, 200, 200) is not, and
+  // its nearest colour is a grey within 4 levels (199, one of the 40).
+  ScratchDir dir;
+  encode(dir.path / "d.gif", small(), 3);
+  const std::string rgb = run("ffmpeg -v error -i " + quoted(dir.path / "d.gif") +
+                              " -frames:v 1 -f rawvideo -pix_fmt rgb24 -");
+  REQUIRE(rgb.size() == 320 * 240 * 3);
+  const auto pixel = [&](int x, int y) {
+    const std::size_t at = (std::size_t(y) * 320 + x) * 3;
+    return std::array<int, 3>{std::uint8_t(rgb[at]), std::uint8_t(rgb[at + 1]), std::uint8_t(rgb[at + 2])};
+  };
+  // Frame 0's bob is centred at (160 + 144 sin 0.8, 10 + 144 cos 0.8) = (263.3, 110.3).
+  CHECK(pixel(263, 110) == std::array<int, 3>{51, 102, 204});
+  CHECK(pixel(5, 5) == std::array<int, 3>{255, 255, 255});
+  const std::array<int, 3> grid = pixel(40, 20);
+  CHECK((grid[0] == grid[1] && grid[1] == grid[2]));
+  CHECK(std::abs(grid[0] - 200) <= 4);
+}
+
 TEST_CASE("raw YUV holds the very frames the encoders get, and H.264 reproduces them", "[video]") {
   ScratchDir dir;
   VideoOptions options = small();
