@@ -39,3 +39,34 @@ TEST_CASE("the phase panel draws the current point at (u, v) and keeps a bounded
   CHECK(std::abs(blue - 0.70 * 255) < 30);  // the point's blue, not paper
   CHECK(red < 60);
 }
+
+TEST_CASE("a row whose u or v is not finite draws the trail alone, as a row of neither does", "[panels][phase]") {
+  // A compared run that blows up can have u finite and v infinite: the trail
+  // ends at its last finite point, with no current point and no broken path.
+  auto run = test::trajectory("undamped", {"steps_per_period=60", "periods=2"});
+  const auto rows = test::rows(*run);
+  scenes::PhasePanel panel({0, 0, 400, 300}, 1, "<i>u</i>", "<i>v</i>",
+                           {{"", render::palette::blue, [](std::span<const double> r) { return r[1]; },
+                             [](std::span<const double> r) { return r[2]; }}},
+                           run->info().mesh.period);
+  for (const auto& row : rows) panel.record(row);
+  panel.finish_recording();
+  const size_t last = rows.size() / 2;
+  for (size_t i = 0; i <= last; ++i) panel.observe(rows[i]);
+  const auto picture = [&](double u, double v) {
+    render::Canvas canvas = render::Canvas::image(400, 300);
+    canvas.clear(render::palette::paper);
+    panel.draw_static(canvas, false);
+    std::vector<double> row = rows[last + 1];
+    row[1] = u, row[2] = v;
+    panel.draw(canvas, row[0], row, false);
+    canvas.flush();
+    CHECK(cairo_status(canvas.cr()) == CAIRO_STATUS_SUCCESS);
+    return std::string(reinterpret_cast<const char*>(canvas.data()), std::size_t(canvas.stride()) * 300);
+  };
+  const std::string neither = picture(NAN, NAN);
+  const bool same_without_v = picture(0.5, INFINITY) == neither;
+  const bool same_without_u = picture(NAN, 0.5) == neither;
+  CHECK(same_without_v);
+  CHECK(same_without_u);
+}
