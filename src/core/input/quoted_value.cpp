@@ -32,7 +32,9 @@ std::string cut_middle(const std::string& text, std::size_t limit, bool say_leng
     while (at > 0 && at < text.size() && (static_cast<unsigned char>(text[at]) & 0xc0) == 0x80) --at;
     return at;
   };
-  const std::string note = say_length ? "... (" + std::to_string(text.size()) + " characters) ..." : " ... ";
+  std::size_t characters = 0;  // UTF-8: the bytes that start a character
+  for (const char c : text) characters += (static_cast<unsigned char>(c) & 0xc0) != 0x80;
+  const std::string note = say_length ? "... (" + std::to_string(characters) + " characters) ..." : " ... ";
   const std::size_t keep = limit > note.size() + 8 ? limit - note.size() : 8;
   const std::size_t head = boundary(keep * 2 / 3), tail = boundary(text.size() - (keep - keep * 2 / 3));
   return text.substr(0, head) + note + text.substr(tail);
