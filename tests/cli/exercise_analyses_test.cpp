@@ -48,6 +48,10 @@ TEST_CASE("analyze convergence --compare: a study per scheme, each at its rate, 
   CHECK(rows[15][0] == "rk3");
   CHECK(std::stod(rows[15][4]) == Approx(3).margin(0.1));
   CHECK(std::filesystem::file_size(dir.path / "f.png") > 1000);
+  // The table's title names the schemes as read, whatever the spacing typed.
+  const auto titled = run_vibra("analyze convergence undamped --compare 'scheme=centered, rk4' --levels 3");
+  REQUIRE(titled.exit_code == 0);
+  CHECK(titled.out.rfind("Convergence of undamped, schemes centered,rk4: ", 0) == 0);
 }
 
 TEST_CASE("analyze energy --rates: the energy error's convergence rate (Exercise 1.9)", "[analysis][cli]") {

@@ -67,7 +67,9 @@ ExperimentResult convergence_experiment(const ConvergenceOptions& o) {
     conclusion += (conclusion.empty() ? "" : "\n") + settled_or_not(study, compare ? study.scheme + ": " : "");
   }
   const ModelConvergence& first = studies.front();
-  const std::string what = compare ? o.model + ", schemes " + o.compare.substr(7)
+  std::string scheme_names;  // as parsed: "centered,rk4" whatever the spacing typed
+  for (const ModelConvergence& study : studies) scheme_names += (scheme_names.empty() ? "" : ",") + study.scheme;
+  const std::string what = compare ? o.model + ", schemes " + scheme_names
                                    : o.model + ", scheme " + first.scheme + " (order " + std::to_string(first.order) + ")";
   ExperimentResult result;
   result.tables.push_back(
