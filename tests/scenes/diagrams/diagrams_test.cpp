@@ -207,6 +207,8 @@ TEST_CASE("bouncing ball diagram: the ball on the ground at h, v to one scale, t
     const auto v = d.velocity_arrow(row);
     const Arrow w = d.forces(row).front().arrow;
     CHECK(v.to.x() == v.from.x());
+    // Beside the ball, 2.2 radii right of its centre: clear of it by 1.2 radii.
+    CHECK(v.from.x() == Approx(d.ball_center(row).x() + 2.2 * d.radius()));
     if (std::abs(row[2]) > 0.1) {
       if (per_speed == 0) per_speed = (v.to.y() - v.from.y()) / row[2];
       CHECK((v.to.y() - v.from.y()) / row[2] == Approx(per_speed).epsilon(1e-12));
@@ -218,6 +220,11 @@ TEST_CASE("bouncing ball diagram: the ball on the ground at h, v to one scale, t
   }
   CHECK(per_speed > 0);
   CHECK(longest == Approx(0.42 * highest).epsilon(1e-9));
+  // The view: the ball's column in the middle (0.75 of the height to each
+  // side, for the labels and the tally), the hatching under the ground.
+  CHECK(r.world.min().x() == Approx(-0.75 * highest));
+  CHECK(r.world.max().x() == Approx(0.75 * highest));
+  CHECK(r.world.min().y() == Approx(-0.12 * highest));
 }
 
 TEST_CASE("rlc diagram: the current's arrow follows I, the plates' signs follow q", "[scene][diagram]") {
