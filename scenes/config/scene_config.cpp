@@ -171,20 +171,16 @@ std::string builtin_scene_summary(const std::string& name) {
   return "";
 }
 
-SceneConfig load_scene(const std::string& name_or_path) {
-  std::string text, file;
+bool names_builtin_scene(const std::string& name_or_path) {
   for (const auto& [name, preset] : builtin_scenes())
-    if (same_name(name, name_or_path)) text = preset, file = name + ".toml";
-  // A model's name is a scene too (after the presets, so `pendulum` is the
-  // preset): the pendulums' diagram, any model's moving plot.
-  for (const auto& model : all_models()) {
-    if (!file.empty() || !same_name(model.name, name_or_path)) continue;
-    SceneConfig config;
-    config.name = config.model = model.name;
-    config.layout = default_diagram(model.name) ? Layout::fbd_plot : Layout::plot;
-    return config;
-  }
-  if (file.empty()) {
+    if (same_name(name, name_or_path)) return true;
+  for (const auto& model : all_models())
+    if (same_name(model.name, name_or_path)) return true;
+  return false;
+}
+
+SceneConfig load_scene(const std::string& name_or_path) {
+  if (!names_builtin_scene(name_or_path)) {
     namespace fs = std::filesystem;
     std::error_code ec;
     if (!fs::is_regular_file(name_or_path, ec)) {
@@ -193,10 +189,18 @@ SceneConfig load_scene(const std::string& name_or_path) {
       throw UsageError("no scene '" + name_or_path + "': give a scene file (.toml), a built-in scene (" + names +
                        ") or a model name (vibra solve --help lists them)");
     }
-    text = read_input_file(name_or_path, "the scene file", "the scene file", kMostSettingsBytes);
-    file = name_or_path;
+    return parse_scene(read_input_file(name_or_path, "the scene file", "the scene file", kMostSettingsBytes),
+                       name_or_path);
   }
-  return parse_scene(text, file);
+  for (const auto& [name, preset] : builtin_scenes())
+    if (same_name(name, name_or_path)) return parse_scene(preset, name + ".toml");
+  // A model's name is a scene too (after the presets, so `pendulum` is the
+  // preset): the pendulums' diagram, any model's moving plot.
+  const ModelDefinition& model = find_model(name_or_path);
+  SceneConfig config;
+  config.name = config.model = model.name;
+  config.layout = default_diagram(model.name) ? Layout::fbd_plot : Layout::plot;
+  return config;
 }
 
 SceneConfig parse_scene(const std::string& text, const std::string& file) {

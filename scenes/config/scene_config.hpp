@@ -62,6 +62,9 @@ const std::vector<KeySpec>& scene_keys();
 /// A built-in scene by name (`pendulum`, `pendulum_book`) or a TOML file.
 /// Throws UsageError naming the file, line and key for bad content.
 SceneConfig load_scene(const std::string& name_or_path);
+/// Whether load_scene takes `name_or_path` as a built-in scene or a model's
+/// name (these come before files), not as a scene file.
+bool names_builtin_scene(const std::string& name_or_path);
 /// A scene from TOML text; `file` names it in messages ("lecture.toml").
 SceneConfig parse_scene(const std::string& text, const std::string& file);
 

@@ -10,8 +10,6 @@
 
 #include "core/error.hpp"
 #include "core/input/input_files.hpp"
-#include "core/input/name_spelling.hpp"
-#include "core/models/model.hpp"
 #include "core/input/quoted_value.hpp"
 #include "jobs/render_job.hpp"
 #include "render/output/output_error.hpp"
@@ -34,18 +32,9 @@ const char* const kLiveFiles[] = {"vibra_live.js",       "replay.js",           
                                   "live.css",            "DejaVuSans.ttf",      "DejaVuSans-Oblique.ttf",
                                   "DejaVuSans-Bold.ttf", "DejaVuSans-BoldOblique.ttf"};
 
-/// Whether `scene` names a built-in scene or a model (spelled as load_scene takes them), not a scene file.
-bool names_builtin(const std::string& scene) {
-  for (const std::string& name : builtin_scene_names())
-    if (same_name(name, scene)) return true;
-  for (const auto& model : all_models())
-    if (same_name(model.name, scene)) return true;
-  return false;
-}
-
 /// A scene file's text, for the page to set the scene up from ("" for a built-in scene).
 std::string scene_text(const LivePageRequest& r) {
-  if (names_builtin(r.scene_name)) return "";
+  if (names_builtin_scene(r.scene_name)) return "";
   return read_input_file(r.scene_name, "the scene file", "the scene file", kMostSettingsBytes);
 }
 
