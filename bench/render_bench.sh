@@ -4,7 +4,7 @@
 # of the whole process as median (min-max) and the ratio pair by pair, so a
 # reader sees the machine's noise (bench/wall_time.sh); file sizes beside.
 #
-#   bench/render_bench.sh [FRAMES] [png|video|window|scenes|trail|compare]   (default 300 frames,
+#   bench/render_bench.sh [FRAMES] [png|video|window|scenes|overlap|trail|compare]   (default 300 frames,
 #                                             every case; installs the peers' packages first)
 #   REPEAT=N (rounds, default 5), VIBRA=path (the build to time), SCENES="pendulum orbit" (the scenes case's scenes)
 #
@@ -14,7 +14,8 @@
 # frames from raw YUV in memory with the same settings (the encoder's own
 # ceiling); the moving window against moving_window.py; the built-in scenes
 # spring_dashpot, bumpy_road, elastic_pendulum and orbit as MP4 against the
-# encoder's ceiling (and the other built-in scenes at 720p); the orbit's
+# encoder's ceiling (and the other built-in scenes at 720p); x264 alone
+# beside a separate drawing process (the bound for any pipeline); the orbit's
 # trail over 1e3 and 1e6 steps; a 4-run
 # comparison (--compare scheme=...) against one run of the same scene, and
 # one with u and phase panels against x264 alone on its frames.
@@ -135,6 +136,32 @@ done
 # still at its time.
 scene_against_x264 1280x720 pendulum --set periods=$(( periods / 4 > 0 ? periods / 4 : 1 )) --speed 0.25
 scene_against_x264 1280x720 spring --set periods=$periods --slow 1-2:0.2
+}
+
+# The bound no pipeline can pass on this machine: x264 alone on the frames
+# while the same frames are drawn by a separate process (-o - --format y4m,
+# thrown away), both started together. vibra against it says what its own
+# pipeline costs; it against x264 alone, what the drawing's CPU costs x264.
+wanted overlap && {
+echo
+echo "== Drawing beside the encoder, MP4 720p, about $FRAMES frames"
+periods=$(( FRAMES / 60 > 0 ? FRAMES / 60 : 1 ))
+overlap_case() {
+  local args=("$@")
+  "$VIBRA" render "${args[@]}" --size "$dims" -q -o "$WORK/raw.yuv"
+  local frames=$(( $(stat -c %s "$WORK/raw.yuv") / (1280 * 720 * 3 / 2) ))
+  ours() { "$VIBRA" render "${args[@]}" --size "$dims" -q -o "$WORK/v.mp4"; }
+  beside() { "$VIBRA" render "${args[@]}" --size "$dims" -q -o - --format y4m >/dev/null & ceiling; wait $!; }
+  x264_alone() { ceiling; }
+  PAIR_SAYS="vibra / x264 beside a drawing process" pair "$frames" "vibra MP4 ${args[*]:0:1} ($frames frames)" ours \
+    "x264 alone beside vibra -o - --format y4m" beside
+  PAIR_SAYS="x264 beside a drawing process / x264 alone (the bound)" pair "$frames" \
+    "x264 alone beside vibra -o - --format y4m" beside "ffmpeg CLI x264 encoder only, same frames" x264_alone
+  rm -f "$WORK/raw.yuv" "$WORK"/*.mp4
+}
+dims=1280x720
+for scene in ${SCENES:-spring washing_machine bumpy_road sliding_box}; do overlap_case $scene --set periods=$periods; done
+overlap_case spring --set periods=$periods --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 --panels u,phase
 }
 
 wanted trail && {
