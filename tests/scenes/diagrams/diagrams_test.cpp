@@ -133,6 +133,26 @@ TEST_CASE("washing machine diagram: the drum's mass at the forcing's phase, arro
   }
 }
 
+TEST_CASE("washing machine's u panel: the steady amplitude's lines at +A and -A, the forcing panel sin(gamma t)",
+          "[scene][diagram][panels]") {
+  // u'' + beta u' + u = sin(gamma t) settles to amplitude A = 1/sqrt((1 - gamma^2)^2 + (beta gamma)^2).
+  const Recorded r = record("washing_machine");
+  const double gamma = 1.1, beta = 0.05;
+  const double A = 1 / std::sqrt(std::pow(1 - gamma * gamma, 2) + std::pow(beta * gamma, 2));
+  const std::vector<PanelSpec> panels = as<WashingMachineDiagram>(r).panels();
+  REQUIRE(panels.size() == 2);
+  const auto& u = panels[0].series;
+  REQUIRE(u.size() == 4);  // numerical, exact, then the two lines
+  const std::vector<double> row = r.rows.at(r.rows.size() / 2);
+  CHECK(u[0].value(row) == row[1]);
+  CHECK(u[2].label == "±steady amplitude");
+  CHECK(u[2].value(row) == Approx(A).epsilon(1e-12));
+  CHECK(u[3].value(row) == Approx(-A).epsilon(1e-12));
+  CHECK(u[3].label.empty());  // one legend entry for the pair
+  REQUIRE(panels[1].series.size() == 1);
+  CHECK(panels[1].series[0].value(row) == Approx(std::sin(gamma * row[0])).margin(1e-12));
+}
+
 TEST_CASE("bumpy road diagram: the wheel on the road, the body at L + u over the axle, arrows -k u and -b u'",
           "[scene][diagram]") {
   const Recorded r = record("bumpy_road", {{"exaggerate", "1"}});
