@@ -39,6 +39,18 @@ TEST_CASE("plot --compare draws every member in its own palette colour", "[compa
   }
 }
 
+TEST_CASE("plot --compare with one value draws that one run, in the first colour", "[compare]") {
+  // A comparison of one member is allowed (a figure in the comparison's style
+  // for one dt): nothing may assume a second member.
+  ScratchDirectory dir;
+  const auto r = run_vibra("plot undamped --compare dt=0.1 --set periods=3 -o " + (dir / "one.png"));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err == "vibra: wrote " + (dir / "one.png") + "\n");
+  CHECK(colour_pixels(dir / "one.png", render::palette::series(0)) > 400);
+  CHECK(colour_pixels(dir / "one.png", render::palette::series(1)) == 0);
+}
+
 TEST_CASE("a member that leaves the view is marked and the others run to the end", "[compare]") {
   Comparison c(find_model("undamped"), settings("undamped", {"steps_per_period=20", "periods=8"}),
                parse_comparison("scheme=forward-euler,rk4"));
