@@ -59,6 +59,12 @@ class SystemScene final : public Scene {
   const render::PixelRect& diagram_area() const { return diagram_area_; }
   /// The title and equation across the top.
   const FrameHeading& heading() const { return heading_; }
+  /// Where its labels may go: the drawing area short of the energy bars (after a frame is drawn).
+  render::PixelRect label_area(double scale) const;
+  /// The energy bars' area, if it has bars (after a frame is drawn).
+  std::optional<render::PixelRect> bars_area() const {
+    return bars_ ? std::optional<render::PixelRect>(bars_->area()) : std::nullopt;
+  }
 
  private:
   void prepare();
@@ -72,8 +78,6 @@ class SystemScene final : public Scene {
   std::unique_ptr<Diagram> diagram_;
   /// Where the diagram may draw: its area without the legend's column.
   render::PixelRect drawing_area() const;
-  /// Where its labels may go: the drawing area short of the energy bars.
-  render::PixelRect label_area(double scale) const;
   /// The legend column's top right corner.
   render::Point legend_corner(double scale) const;
   /// How wide the force key may be: the diagram's part, short of the energy bars.

@@ -14,6 +14,7 @@
 #include "scenes/config/scene_config.hpp"
 #include "scene_run_support.hpp"
 #include "scenes/scene_factory.hpp"
+#include "scenes/system_scene.hpp"
 
 using vibra::render::Canvas;
 using vibra::render::DrawingRecord;
@@ -129,6 +130,42 @@ TEST_CASE("labels overlap nothing in comparisons, energy bars and large swings",
     INFO(describe(s));
     CHECK(v.frames == 24);
     CHECK(v.labels > 0);
+  }
+}
+
+TEST_CASE("labels keep 8 px (at 720p) clear of the energy bars: their area ends there, and no label crosses it",
+          "[labels]") {
+  for (const auto& [width, height] : {std::pair{640, 360}, std::pair{1280, 720}}) {
+    vibra::scenes::SceneConfig config = vibra::scenes::load_scene("spring_dashpot");
+    vibra::scenes::apply_setting(config, {"energy_bars", "true", "test"});
+    config.width = width, config.height = height;
+    long long steps = 0;
+    auto scene = vibra::test::scene_after_pre_pass(config, steps);
+    auto* system = dynamic_cast<vibra::scenes::SystemScene*>(scene.get());
+    REQUIRE(system);
+    Canvas canvas = Canvas::image(width, height);
+    auto runs = vibra::scenes::build_scene_runs(config);
+    std::vector<double> row(runs->width());
+    long long step = 0;
+    int frames = 0;
+    do {
+      runs->row(row);
+      scene->observe(row);
+      if (step % std::max(1LL, steps / 24) != 0) continue;
+      scene->draw(canvas, row);
+      ++frames;
+      const auto bars = system->bars_area();
+      REQUIRE(bars);
+      const double limit = bars->x - 8 * canvas.scale();
+      const PixelRect area = system->label_area(canvas.scale());
+      INFO(width << "x" << height << " at t = " << row[0]);
+      CHECK(area.x + area.w == Approx(limit));
+      for (const PlacedLabel& label : scene->last_layout()->placed) {
+        INFO("label '" << label.request.markup << "'");
+        CHECK(label.box.x + label.box.w <= limit + 1e-9);
+      }
+    } while (++step, runs->advance());
+    CHECK(frames >= 24);
   }
 }
 
