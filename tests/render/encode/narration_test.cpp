@@ -19,6 +19,8 @@
 #include "stop_support.hpp"
 #include "render/encode/audio/audio_source.hpp"
 #include "render/encode/audio/loudness.hpp"
+#include "scenes/lecture/narration.hpp"
+#include "scenes/lecture/storyboard.hpp"
 
 using vibra::test::check_refused;
 using vibra::test::read_file;
@@ -189,6 +191,25 @@ TEST_CASE("a recorded take comes through as recorded, resampled to 48 kHz", "[na
       crossings += (sound[n] < 0) != (sound[n + 1] < 0);
     CHECK(crossings == Approx(2 * 440 * 1.3).epsilon(0.01));
     CHECK_THAT(read_file(dir / "tone.vtt"), Catch::Contains("00:00:00.250 --> 00:00:01.750\nA tone."));
+  }
+}
+
+TEST_CASE("a shot's words are said sentence by sentence: split after . ! or ? and a space, an ellipsis kept with its sentence",
+          "[narration]") {
+  // Each sentence is its own piece (and its own subtitle), said right after the one before.
+  const auto board = vibra::scenes::parse_storyboard(
+      "size = \"320x180\"\n[[shot]]\ncard = \"A\"\nsay = \"Does it swing? Yes! It slows... down. Wait. ... e.g.3 stays whole.\"\n",
+      "story.toml");
+  const auto narration = vibra::scenes::narrate_lecture(board);
+  REQUIRE(narration.size() == 1);
+  const auto& said = narration[0].said;
+  std::vector<std::string> texts;
+  for (const auto& piece : said) texts.push_back(piece.text);
+  CHECK(texts == std::vector<std::string>{"Does it swing?", "Yes!", "It slows...", "down.", "Wait. ...", "e.g.3 stays whole."});
+  for (std::size_t i = 1; i < said.size(); ++i) {
+    INFO("piece " << i);
+    CHECK(said[i].clip.seconds() > 0);
+    CHECK(said[i].start == Approx(said[i - 1].start + said[i - 1].clip.seconds()));
   }
 }
 
