@@ -66,3 +66,25 @@ TEST_CASE("a stream of samples yields one cycle per completed period", "[analysi
   // Maxima at t = 0.25, 1.25, ..., 9.25: nine periods between ten maxima.
   CHECK(cycles == 9);
 }
+
+TEST_CASE("an extremum no sinusoid about zero fits is the parabola's through its three samples, time and value",
+          "[analysis]") {
+  // Samples every 0.25 of a period-2 signal: maxima 10 at t = 0, 2, 4 (equal
+  // neighbours: the sinusoid's fit is the sample itself), minima on the
+  // parabola 3 + (t - 1.1)^2 around t = 1.1, between mesh points. There
+  // (u^{n-1} + u^{n+1}) / (2 u^n) > 1, so no sinusoid about zero fits and the
+  // parabola through the three samples, exact for them, places the minimum:
+  // at t = 1.1 with u = 3, so the amplitude is (10 - 3) / 2.
+  const double period[] = {10, 9, 6, 3.1225, 3.01, 3.0225, 6, 9};
+  EmpiricalOscillation oscillation(ExtremumTiming::fitted);
+  std::vector<OscillationCycle> cycles;
+  for (int k = 0; k <= 8 * 4; ++k)
+    if (auto cycle = oscillation.add(0.25 * k, period[k % 8])) cycles.push_back(*cycle);
+  REQUIRE(cycles.size() == 2);
+  for (const OscillationCycle& c : cycles) {
+    INFO("cycle " << c.i);
+    CHECK(c.t == Approx(2.0 * (c.i + 1)));
+    CHECK(c.period == Approx(2.0).epsilon(1e-12));
+    CHECK(c.amplitude == Approx(3.5).epsilon(1e-12));
+  }
+}
