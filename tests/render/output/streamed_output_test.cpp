@@ -53,6 +53,23 @@ TEST_CASE("standard output in y4m: a YUV4MPEG2 header and every frame", "[stream
                  Catch::Contains("width=320") && Catch::Contains("color_range=\"tv\""));
 }
 
+TEST_CASE("y4m at an odd size: chroma planes of the size rounded up, every frame whole", "[stream][render]") {
+  // 321x181: 4:2:0 chroma is 161x91 (a half pixel more on each side), not 160x90.
+  const auto r = run_vibra("render --size 321x181 --set periods=0.2 -q -o - --format y4m");
+  REQUIRE(r.exit_code == 0);
+  const std::size_t eol = r.out.find('\n');
+  REQUIRE(eol != std::string::npos);
+  const auto header = words(r.out.substr(0, eol));
+  REQUIRE(header.size() >= 3);
+  CHECK(header[1] == "W321");
+  CHECK(header[2] == "H181");
+  const std::size_t frame = 6 + 321 * 181 + 2 * 161 * 91;
+  const std::size_t body = r.out.size() - (eol + 1);
+  CHECK(body % frame == 0);
+  CHECK(body / frame == 13);  // 0.2 of a period, played at a period in 2 s: 0.4 s at 30 fps, 13 frames
+  for (std::size_t at = eol + 1; at + frame <= r.out.size(); at += frame) REQUIRE(r.out.compare(at, 6, "FRAME\n") == 0);
+}
+
 TEST_CASE("standard output in NUT or Matroska: H.264 that a pipe reader decodes", "[stream][render][video]") {
   for (const char* format : {"nut", "matroska"}) {
     INFO(format);
