@@ -197,6 +197,7 @@ TEST_CASE("bumpy road diagram: heights drawn F times larger, F chosen so that th
   const BumpyRoadDiagram::Vehicle v{6e4, 600, 0.3, 0.6};
   CHECK(BumpyRoadDiagram::automatic_exaggeration(0.08, 0.06, v) == 3);       // 3.75 and 4 allowed
   CHECK(BumpyRoadDiagram::automatic_exaggeration(1e-4, 1e-4, v) == 2000);    // 0.24 / 1e-4 = 2400
+  CHECK(BumpyRoadDiagram::automatic_exaggeration(0.01, 1e-4, v) == 30);      // the swing binds: 0.3 / 0.01 = 30
   CHECK(BumpyRoadDiagram::automatic_exaggeration(0.1, 0.01, v) == 1);        // a swing of L/6 shows already
   CHECK(BumpyRoadDiagram::automatic_exaggeration(0, 0, v) == 1);             // nothing moves
   const Recorded automatic = record("bumpy_road");
