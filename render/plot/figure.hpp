@@ -47,6 +47,8 @@ class Figure {
 
   int width() const { return width_; }
   int height() const { return height_; }
+  /// The curves of panel `panel` (0 at the top), in the order added.
+  const std::vector<std::unique_ptr<Series>>& series_of(int panel) const { return panels_.at(panel).series; }
   /// No background: PNG with alpha, SVG/PDF without the paper rectangle.
   void set_transparent(bool transparent) { transparent_ = transparent; }
   void draw(Canvas&) const;

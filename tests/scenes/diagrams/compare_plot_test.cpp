@@ -2,6 +2,7 @@
 // colour, the exact solution dashed, blow-ups marked, bad input refused.
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <memory>
 
 #include "cli_support.hpp"
@@ -60,6 +61,25 @@ TEST_CASE("a member that leaves the view is marked and the others run to the end
   CHECK_FALSE(c.blew_up(1));
   CHECK(c.trajectory(1).done());
   CHECK(scenes::comparison_caption("undamped", c) == "Δ<i>t</i> = 0.05 · comparing scheme");
+}
+
+TEST_CASE("a comparison's exact phase curve is the undamped circle u^2 + (v/w)^2 = I^2", "[compare]") {
+  // u = I cos(w t), v = -I w sin(w t): in the phase panel's (u, v/w) a circle of radius I.
+  Comparison c(find_model("undamped"), settings("undamped", {"I=1.5", "steps_per_period=20", "periods=2"}),
+               parse_comparison("scheme=centered,rk4"));
+  const render::Figure figure = scenes::comparison_figure(c, {"u", "phase"}, 800, 600, "");
+  int exact_curves = 0;
+  for (const auto& series : figure.series_of(1)) {
+    if (!series->style().dashed || series->kind() != render::Series::Kind::path) continue;
+    ++exact_curves;
+    int points = 0;
+    series->for_each_point([&](double u, double v_over_w) {
+      ++points;
+      CHECK(std::hypot(u, v_over_w) == Approx(1.5).epsilon(1e-6));
+    });
+    CHECK(points > 100);
+  }
+  CHECK(exact_curves == 1);
 }
 
 TEST_CASE("plot --compare refuses bad input with one line, exit code 2 and no file", "[compare]") {
