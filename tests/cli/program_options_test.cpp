@@ -1,4 +1,5 @@
 // vibra's own options: --version (the version and the build's git describe, "unknown" outside a checkout), `vibra help COMMAND`, usage lines that say vibra, and the hidden generators of the man pages and shell completions, held against the CLI's own --help and the registries.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <regex>
@@ -113,6 +114,26 @@ TEST_CASE("vibra(1) lists every scene, model and scheme from the registries", "[
   for (const auto& scene : vibra::scenes::builtin_scene_names()) CHECK_THAT(top, Catch::Contains(roff(scene)));
   for (const auto& model : vibra::all_models()) CHECK_THAT(top, Catch::Contains(roff(model.name)));
   for (const auto& scheme : vibra::all_schemes()) CHECK_THAT(top, Catch::Contains(roff(std::string(scheme.name))));
+}
+
+TEST_CASE("the completion scripts offer each choice-valued option's choices, three or more (not true/false)",
+          "[cli][completion]") {
+  // --layout and --window-mode complete to their scene key's choices in every shell.
+  int options = 0;
+  for (const auto& key : vibra::scenes::scene_keys()) {
+    if (key.choices.size() <= 2) continue;
+    std::string option = "--" + key.name, words;
+    std::replace(option.begin(), option.end(), '_', '-');
+    for (const auto& choice : key.choices) words += (words.empty() ? "" : " ") + choice;
+    const std::string bash = run_vibra("--completion bash").out;
+    if (bash.find("'render|" + option + "')") == std::string::npos) continue;  // not an option of render
+    ++options;
+    INFO(option);
+    CHECK_THAT(bash, Catch::Contains("'render|" + option + "') REPLY='choices:" + words + "'"));
+    CHECK_THAT(run_vibra("--completion zsh").out, Catch::Contains("'render|" + option + "') REPLY='choices:" + words + "'"));
+    CHECK_THAT(run_vibra("--completion fish").out, Catch::Contains("-l " + option.substr(2) + " -x -a '" + words + "'"));
+  }
+  CHECK(options == 2);  // --layout (four choices) and --window-mode (three)
 }
 
 TEST_CASE("the completion scripts hold every command, scene, model and scheme", "[cli][completion]") {
