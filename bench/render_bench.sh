@@ -108,14 +108,21 @@ theirs() { $PY "$PEERS/moving_window.py" --frames "$FRAMES" --size 720p --window
 PAIR_SAYS="vibra / matplotlib" pair "$FRAMES" "vibra moving window" ours "matplotlib moving window (moving_window.py)" theirs
 }
 
+# raw_frames SIZE RENDER_ARGS...: the render's YUV frames into $WORK/raw.yuv
+# (the encoder's input in ceiling); prints how many there are.
+raw_frames() {
+  local size=$1; shift
+  "$VIBRA" render "$@" --size "$size" -q -o "$WORK/raw.yuv"
+  local w=${size%x*} h=${size#*x}
+  echo $(( $(stat -c %s "$WORK/raw.yuv") / (w * h * 3 / 2) ))
+}
+
 # A scene as MP4 against x264 alone on the same frames: vibra's YUV frames
 # first, then the two in turn. scene_against_x264 SIZE RENDER_ARGS...
 scene_against_x264() {
-  dims=$1; shift
+  dims=$1; shift  # global: ceiling encodes at this size
   local args=("$@")
-  "$VIBRA" render "${args[@]}" --size "$dims" -q -o "$WORK/raw.yuv"
-  local w=${dims%x*} h=${dims#*x}
-  local frames=$(( $(stat -c %s "$WORK/raw.yuv") / (w * h * 3 / 2) ))
+  local frames; frames=$(raw_frames "$dims" "${args[@]}")
   ours() { "$VIBRA" render "${args[@]}" --size "$dims" -q -o "$WORK/v.mp4"; }
   x264_alone() { ceiling; }
   PAIR_SAYS="vibra / x264 alone (target >= ${TARGET:-0.90})" pair "$frames" "vibra MP4 $dims ${args[*]:0:1} ($frames frames)" ours \
@@ -146,10 +153,11 @@ wanted overlap && {
 echo
 echo "== Drawing beside the encoder, MP4 720p, about $FRAMES frames"
 periods=$(( FRAMES / 60 > 0 ? FRAMES / 60 : 1 ))
+# overlap_case SIZE RENDER_ARGS...
 overlap_case() {
+  dims=$1; shift  # global: ceiling encodes at this size
   local args=("$@")
-  "$VIBRA" render "${args[@]}" --size "$dims" -q -o "$WORK/raw.yuv"
-  local frames=$(( $(stat -c %s "$WORK/raw.yuv") / (1280 * 720 * 3 / 2) ))
+  local frames; frames=$(raw_frames "$dims" "${args[@]}")
   ours() { "$VIBRA" render "${args[@]}" --size "$dims" -q -o "$WORK/v.mp4"; }
   beside() { "$VIBRA" render "${args[@]}" --size "$dims" -q -o - --format y4m >/dev/null & ceiling; wait $!; }
   x264_alone() { ceiling; }
@@ -159,9 +167,8 @@ overlap_case() {
     "x264 alone beside vibra -o - --format y4m" beside "ffmpeg CLI x264 encoder only, same frames" x264_alone
   rm -f "$WORK/raw.yuv" "$WORK"/*.mp4
 }
-dims=1280x720
-for scene in ${SCENES:-spring washing_machine bumpy_road sliding_box}; do overlap_case $scene --set periods=$periods; done
-overlap_case spring --set periods=$periods --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 --panels u,phase
+for scene in ${SCENES:-spring washing_machine bumpy_road sliding_box}; do overlap_case 1280x720 $scene --set periods=$periods; done
+overlap_case 1280x720 spring --set periods=$periods --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 --panels u,phase
 }
 
 wanted trail && {
@@ -170,8 +177,7 @@ echo "== The orbit's trail (layout fbd: the diagram alone), 720p MP4, the same f
 echo "   (the whole process: the 1e6-step run also solves a thousand times more steps, twice)"
 periods=$(( FRAMES / 60 > 0 ? FRAMES / 60 : 1 ))
 for steps in 1000 1000000; do
-  "$VIBRA" render orbit --layout fbd --set periods=$periods --set steps_per_period=$((steps / periods)) -q -o "$WORK/raw.yuv"
-  frames=$(( $(stat -c %s "$WORK/raw.yuv") / (1280 * 720 * 3 / 2) ))
+  frames=$(raw_frames 1280x720 orbit --layout fbd --set periods=$periods --set steps_per_period=$((steps / periods)))
   rm -f "$WORK/raw.yuv"
   alone "vibra orbit, $steps steps, $frames frames" "$frames" "$VIBRA" render orbit --layout fbd --set periods=$periods \
     --set steps_per_period=$((steps / periods)) -q -o "$WORK/v.mp4"
@@ -188,8 +194,7 @@ SCHEMES=scheme=forward-euler,backward-euler,crank-nicolson,rk4
 for scene in spring pendulum; do
   one() { "$VIBRA" render $scene --set periods=$periods -q -o "$WORK/one.mp4"; }
   four() { "$VIBRA" render $scene --set periods=$periods -q -o "$WORK/four.mp4" --compare $SCHEMES; }
-  "$VIBRA" render $scene --set periods=$periods -q -o "$WORK/raw.yuv"
-  frames=$(( $(stat -c %s "$WORK/raw.yuv") / (1280 * 720 * 3 / 2) ))
+  frames=$(raw_frames 1280x720 $scene --set periods=$periods)
   rm -f "$WORK/raw.yuv"
   PAIR_SAYS="4 runs / one run (target >= 0.75)" pair "$frames" "vibra $scene, 4 runs (--compare scheme=...)" four \
     "vibra $scene, one run" one
