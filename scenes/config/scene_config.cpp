@@ -160,47 +160,55 @@ std::vector<std::string> builtin_scene_names() {
   return names;
 }
 
+namespace {
+/// The built-in preset (its name and TOML text) spelled `name`, if any.
+const std::pair<std::string, std::string>* builtin_preset(const std::string& name) {
+  for (const auto& preset : builtin_scenes())
+    if (same_name(preset.first, name)) return &preset;
+  return nullptr;
+}
+
+/// The model spelled `name`, if any: a model's name is a scene too.
+const ModelDefinition* scene_model(const std::string& name) {
+  for (const auto& model : all_models())
+    if (same_name(model.name, name)) return &model;
+  return nullptr;
+}
+}  // namespace
+
 std::string builtin_scene_summary(const std::string& name) {
-  for (const auto& [preset, text] : builtin_scenes()) {
-    if (!same_name(preset, name)) continue;
-    std::istringstream lines(text);
-    std::string line;
-    while (std::getline(lines, line))
-      if (line.rfind("# ", 0) == 0) return line.substr(2);
-  }
+  const auto* preset = builtin_preset(name);
+  if (!preset) return "";
+  std::istringstream lines(preset->second);
+  std::string line;
+  while (std::getline(lines, line))
+    if (line.rfind("# ", 0) == 0) return line.substr(2);
   return "";
 }
 
 bool names_builtin_scene(const std::string& name_or_path) {
-  for (const auto& [name, preset] : builtin_scenes())
-    if (same_name(name, name_or_path)) return true;
-  for (const auto& model : all_models())
-    if (same_name(model.name, name_or_path)) return true;
-  return false;
+  return builtin_preset(name_or_path) || scene_model(name_or_path);
 }
 
 SceneConfig load_scene(const std::string& name_or_path) {
-  if (!names_builtin_scene(name_or_path)) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (!fs::is_regular_file(name_or_path, ec)) {
-      std::string names;
-      for (const auto& n : builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;
-      throw UsageError("no scene '" + name_or_path + "': give a scene file (.toml), a built-in scene (" + names +
-                       ") or a model name (vibra solve --help lists them)");
-    }
-    return parse_scene(read_input_file(name_or_path, "the scene file", "the scene file", kMostSettingsBytes),
-                       name_or_path);
+  if (const auto* preset = builtin_preset(name_or_path)) return parse_scene(preset->second, preset->first + ".toml");
+  // A model's name after the presets (so `pendulum` is the preset): the
+  // pendulums' diagram, any model's moving plot.
+  if (const ModelDefinition* model = scene_model(name_or_path)) {
+    SceneConfig config;
+    config.name = config.model = model->name;
+    config.layout = default_diagram(model->name) ? Layout::fbd_plot : Layout::plot;
+    return config;
   }
-  for (const auto& [name, preset] : builtin_scenes())
-    if (same_name(name, name_or_path)) return parse_scene(preset, name + ".toml");
-  // A model's name is a scene too (after the presets, so `pendulum` is the
-  // preset): the pendulums' diagram, any model's moving plot.
-  const ModelDefinition& model = find_model(name_or_path);
-  SceneConfig config;
-  config.name = config.model = model.name;
-  config.layout = default_diagram(model.name) ? Layout::fbd_plot : Layout::plot;
-  return config;
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_regular_file(name_or_path, ec)) {
+    std::string names;
+    for (const auto& n : builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;
+    throw UsageError("no scene '" + name_or_path + "': give a scene file (.toml), a built-in scene (" + names +
+                     ") or a model name (vibra solve --help lists them)");
+  }
+  return parse_scene(read_input_file(name_or_path, "the scene file", "the scene file", kMostSettingsBytes), name_or_path);
 }
 
 SceneConfig parse_scene(const std::string& text, const std::string& file) {
