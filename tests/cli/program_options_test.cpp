@@ -119,19 +119,20 @@ TEST_CASE("vibra(1) lists every scene, model and scheme from the registries", "[
 TEST_CASE("the completion scripts offer each choice-valued option's choices, three or more (not true/false)",
           "[cli][completion]") {
   // --layout and --window-mode complete to their scene key's choices in every shell.
+  const std::string bash = run_vibra("--completion bash").out, zsh = run_vibra("--completion zsh").out,
+                    fish = run_vibra("--completion fish").out;
   int options = 0;
   for (const auto& key : vibra::scenes::scene_keys()) {
     if (key.choices.size() <= 2) continue;
     std::string option = "--" + key.name, words;
     std::replace(option.begin(), option.end(), '_', '-');
     for (const auto& choice : key.choices) words += (words.empty() ? "" : " ") + choice;
-    const std::string bash = run_vibra("--completion bash").out;
     if (bash.find("'render|" + option + "')") == std::string::npos) continue;  // not an option of render
     ++options;
     INFO(option);
     CHECK_THAT(bash, Catch::Contains("'render|" + option + "') REPLY='choices:" + words + "'"));
-    CHECK_THAT(run_vibra("--completion zsh").out, Catch::Contains("'render|" + option + "') REPLY='choices:" + words + "'"));
-    CHECK_THAT(run_vibra("--completion fish").out, Catch::Contains("-l " + option.substr(2) + " -x -a '" + words + "'"));
+    CHECK_THAT(zsh, Catch::Contains("'render|" + option + "') REPLY='choices:" + words + "'"));
+    CHECK_THAT(fish, Catch::Contains("-l " + option.substr(2) + " -x -a '" + words + "'"));
   }
   CHECK(options == 2);  // --layout (four choices) and --window-mode (three)
 }
