@@ -1,6 +1,7 @@
 // Properties of the chapter's models (docs/models.md).
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.hpp"
 #include "test_support.hpp"
@@ -55,6 +56,25 @@ TEST_CASE("physical pendulum of a point mass is the simple pendulum", "[models]"
     for (int c = 1; c < 5; ++c) CHECK(rod[i][c] == Approx(simple[i][c]).margin(1e-14));
 }
 
+TEST_CASE("physical pendulum of a rod and a bob: wire force M L_cm^2/I omega^2 + cos theta, drag c/I |omega| omega", "[models]") {
+  // A uniform rod of 2 kg and 1.5 m with a 0.5 kg bob at its end, about the
+  // rod's end: I = m_rod L^2/3 + m_bob L^2, the centre of mass at
+  // L_cm = (m_rod L/2 + m_bob L)/M, the drag torque c = C_D rho pi R^2 L^3 / 2.
+  const double L = 1.5, m_rod = 2, m_bob = 0.5, R = 0.05, C_D = 0.4, rho = 1.2, M = m_rod + m_bob;
+  const double I = m_rod * L * L / 3 + m_bob * L * L, L_cm = (m_rod * L / 2 + m_bob * L) / M;
+  const double wire = M * L_cm * L_cm / I, alpha = 0.5 * C_D * rho * M_PI * R * R * L * L * L / I;
+  REQUIRE(wire == Approx(2.025 / 2.625));
+  auto r = rows(*trajectory("physical-pendulum", {"L=1.5", "m_rod=2", "m_bob=0.5", "R=0.05", "Theta=80", "periods=2"}));
+  for (auto& row : r) {
+    const double theta = row[1], omega = row[2];
+    CHECK(row[3] == Approx(wire * omega * omega + std::cos(theta)).epsilon(1e-14));
+    CHECK(row[4] == Approx(-alpha * std::abs(omega) * omega).margin(1e-17));
+  }
+  // A rod alone: three quarters of omega^2 in the wire force.
+  for (auto& row : rows(*trajectory("physical-pendulum", {"m_bob=0", "Theta=30", "periods=1"})))
+    CHECK(row[3] == Approx(0.75 * row[2] * row[2] + std::cos(row[1])).epsilon(1e-14));
+}
+
 TEST_CASE("elastic pendulum at rest stays exactly at rest", "[models]") {
   for (auto& row : rows(*trajectory("elastic-pendulum", {"Theta=0", "eps=0", "periods=3"})))
     for (int c = 1; c < 6; ++c) CHECK(row[c] == 0.0);
@@ -85,6 +105,31 @@ TEST_CASE("two-body circular orbit keeps radius 1 and period 2 pi", "[models]") 
   for (auto& row : r) CHECK(std::hypot(row[1], row[2]) == Approx(1).epsilon(1e-8));
   CHECK(r.back()[0] == Approx(6 * M_PI));
   CHECK(r.back()[1] == Approx(1).epsilon(1e-7));
+}
+
+TEST_CASE("two-body circular orbits either way round: the exact x(t) follows the planet from any start", "[models]") {
+  // A circular orbit of radius r has speed r^(-1/2) and period 2 pi r^(3/2);
+  // started at angle phi, x(t) = r cos(phi + s t / r^(3/2)), s = +1
+  // counterclockwise and -1 clockwise.
+  for (double r : {1.0, 2.0})
+    for (double phi : {0.0, 1.0, 2.5, -2.0})
+      for (int sense : {1, -1}) {
+        const double speed = 1 / std::sqrt(r);
+        char settings[4][64];
+        std::snprintf(settings[0], 64, "x0=%.17g", r * std::cos(phi));
+        std::snprintf(settings[1], 64, "y0=%.17g", r * std::sin(phi));
+        std::snprintf(settings[2], 64, "vx0=%.17g", -sense * speed * std::sin(phi));
+        std::snprintf(settings[3], 64, "vy0=%.17g", sense * speed * std::cos(phi));
+        auto t = trajectory("two-body", {settings[0], settings[1], settings[2], settings[3], "scheme=rk4",
+                                         "steps_per_period=400", "periods=1"});
+        INFO("r = " << r << ", phi = " << phi << ", sense " << sense);
+        REQUIRE(t->info().exact);
+        CHECK(t->info().exact_period == Approx(2 * M_PI * std::pow(r, 1.5)));
+        for (auto& row : rows(*t)) {
+          CHECK(t->info().exact(row[0]) == Approx(r * std::cos(phi + sense * row[0] / std::pow(r, 1.5))).margin(1e-12));
+          CHECK(t->info().exact(row[0]) == Approx(row[1]).margin(1e-7 * r));
+        }
+      }
 }
 
 TEST_CASE("bad model settings are usage errors that name the fix", "[models]") {
