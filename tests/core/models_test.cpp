@@ -154,6 +154,35 @@ TEST_CASE("bad model settings are usage errors that name the fix", "[models]") {
   CHECK_THROWS_AS(trajectory("undamped", {"Tx=1"}), UsageError);
 }
 
+TEST_CASE("above the stability limit: the advice names the limit and the fewest steps per period that are stable", "[models]") {
+  // On undamped (w = 2 pi, period 1): the centered family is stable for
+  // w dt <= 2 (1.23), RK4 up to 2 sqrt(2), RK3 up to sqrt(3), AB3 up to 0.7236.
+  const double w = 2 * M_PI;
+  const std::pair<const char*, double> limits[] = {
+      {"centered", 2}, {"euler-cromer", 2}, {"rk4", 2 * std::sqrt(2.0)}, {"rk3", std::sqrt(3.0)}, {"ab3", 0.7236}};
+  for (const auto& [scheme, limit] : limits) {
+    INFO(scheme);
+    std::string message;
+    try {
+      trajectory("undamped", {std::string("scheme=") + scheme, "dt=3"});
+    } catch (const UsageError& e) {
+      message = e.what();
+    }
+    double advised_dt = 0, advised_steps = 0;
+    const size_t at = message.find("use dt <= ");
+    REQUIRE(at != std::string::npos);
+    REQUIRE(std::sscanf(message.c_str() + at, "use dt <= %lf (steps_per_period >= %lf)", &advised_dt, &advised_steps) == 2);
+    CHECK(advised_dt == Approx(limit / w).epsilon(1e-5));
+    CHECK(advised_steps == std::ceil(w / limit));
+    // The advice works, and is the fewest steps that do.
+    const std::string steps = "steps_per_period=" + std::to_string(int(advised_steps));
+    CHECK_NOTHROW(trajectory("undamped", {std::string("scheme=") + scheme, steps}));
+    CHECK_THROWS_AS(trajectory("undamped", {std::string("scheme=") + scheme,
+                                            "steps_per_period=" + std::to_string(int(advised_steps) - 1)}),
+                    UsageError);
+  }
+}
+
 TEST_CASE("a blow-up stops with the step and time", "[models]") {
   auto t = trajectory("undamped", {"scheme=forward-euler", "dt=0.3", "T=1e5"});
   try {
