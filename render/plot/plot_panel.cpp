@@ -72,7 +72,7 @@ void PlotPanel::set_y_range(double y0, double y1) {
     y0 -= pad, y1 += pad;
   }
   // A small margin so extremes do not touch the frame; ticks fall inside.
-  const double pad = 0.05 * (y1 - y0);
+  const double pad = kYMargin * (y1 - y0);
   y0_ = y0 - pad;
   y1_ = y1 + pad;
 }

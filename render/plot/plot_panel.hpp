@@ -23,8 +23,9 @@ class PlotPanel {
   PlotPanel(const PixelRect& outer, double scale);
 
   void set_x_range(double x0, double x1);
-  /// The y range is widened to nice tick values (and made non-empty).
+  /// The y range is widened by kYMargin of its span on each side (and made non-empty).
   void set_y_range(double y0, double y1);
+  static constexpr double kYMargin = 0.05;
   double x0() const { return x0_; }
   double x1() const { return x1_; }
   const PixelRect& area() const { return area_; }

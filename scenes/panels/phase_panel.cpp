@@ -46,15 +46,18 @@ void PhasePanel::observe(std::span<const double> row) {
 void PhasePanel::finish_recording() {
   if (x_lo_ > x_hi_) x_lo_ = -1, x_hi_ = 1, y_lo_ = -1, y_hi_ = 1;
   if (x_hi_ - x_lo_ < 1e-12 * std::max(1.0, std::abs(x_lo_))) x_lo_ -= 1e-3, x_hi_ += 1e-3;
-  const double pad = 0.05 * (x_hi_ - x_lo_);
+  // Both ranges get the same margin a side: x's here, y's from set_y_range.
+  constexpr double kMargin = render::PlotPanel::kYMargin;
+  const double pad = kMargin * (x_hi_ - x_lo_);
   double x0 = x_lo_ - pad, x1 = x_hi_ + pad, y0 = y_lo_, y1 = y_hi_;
   if (equal_scales_) {
-    // The larger of the two units per pixel for both, each range widened about its middle.
+    // The larger of the two units per pixel for both, each range widened
+    // about its middle; y's is given short of its margin, which set_y_range adds.
     const render::PixelRect& area = panel_.area();
-    const double per_pixel = std::max((x1 - x0) / area.w, (y1 - y0) / area.h);
-    const double xm = 0.5 * (x0 + x1), ym = 0.5 * (y0 + y1);
+    const double per_pixel = std::max((x1 - x0) / area.w, (1 + 2 * kMargin) * (y1 - y0) / area.h);
+    const double xm = 0.5 * (x0 + x1), ym = 0.5 * (y0 + y1), y_half = 0.5 * per_pixel * area.h / (1 + 2 * kMargin);
     x0 = xm - 0.5 * per_pixel * area.w, x1 = xm + 0.5 * per_pixel * area.w;
-    y0 = ym - 0.5 * per_pixel * area.h, y1 = ym + 0.5 * per_pixel * area.h;
+    y0 = ym - y_half, y1 = ym + y_half;
   }
   panel_.set_x_range(x0, x1);
   panel_.set_y_range(y0, y1);

@@ -70,3 +70,31 @@ TEST_CASE("a row whose u or v is not finite draws the trail alone, as a row of n
   CHECK(same_without_v);
   CHECK(same_without_u);
 }
+
+TEST_CASE("equal scales: a unit is as many pixels across as up, and the whole orbit stays in the panel", "[panels][phase]") {
+  // undamped has w = 2 pi: v spans 2 pi times u's range, so v's range sets
+  // the pixels per unit and u's range widens about its middle.
+  auto run = test::trajectory("undamped", {"steps_per_period=200", "periods=1"});
+  const auto rows = test::rows(*run);
+  const render::PixelRect outer{0, 0, 400, 300};
+  scenes::PhasePanel panel(outer, 1, "<i>u</i>", "<i>v</i>",
+                           {{"", render::palette::blue, [](std::span<const double> r) { return r[1]; },
+                             [](std::span<const double> r) { return r[2]; }}},
+                           run->info().mesh.period);
+  panel.keep_equal_scales();
+  for (const auto& row : rows) panel.record(row);
+  panel.finish_recording();
+  const render::Point origin = panel.pixel_of(0, 0), right = panel.pixel_of(1, 0), up = panel.pixel_of(0, 1);
+  CHECK(right.x() - origin.x() == Approx(origin.y() - up.y()).epsilon(1e-12));
+  const render::PixelRect area = render::PlotPanel(outer, 1).area();
+  double top = 1e300, bottom = -1e300;
+  for (const auto& row : rows) {
+    const render::Point p = panel.pixel_of(row[1], row[2]);
+    CHECK(p.x() >= area.x);
+    CHECK(p.x() <= area.x + area.w);
+    CHECK(p.y() >= area.y);
+    CHECK(p.y() <= area.y + area.h);
+    top = std::min(top, p.y()), bottom = std::max(bottom, p.y());
+  }
+  CHECK(bottom - top > 0.85 * area.h);  // the tall axis is filled, not shrunk
+}
