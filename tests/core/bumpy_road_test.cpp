@@ -43,6 +43,21 @@ TEST_CASE("road: h'' from sampled heights is the analytic h'' to O(dx^2)", "[mod
   }
 }
 
+TEST_CASE("road: a parabola's curvature is its constant 2c everywhere, the ends included", "[models][bumpy-road]") {
+  // The second difference is exact for a quadratic, and the ends copy their
+  // neighbours: h = c x^2 + b x + a has h'' = 2c at every x, between samples too.
+  const double c = 0.3, b = -0.7, a = 0.1, dx = 0.25;
+  std::vector<double> heights;
+  for (int i = 0; i <= 12; ++i) heights.push_back(c * (i * dx) * (i * dx) + b * i * dx + a);
+  const RoadProfile road(heights, dx);
+  for (double x : {0.0, 0.1, dx, 1.0, 2.9, 3.0, 5.0, -1.0})
+    CHECK(road.curvature(x) == Approx(2 * c).epsilon(1e-9));
+  // Heights in between are the linear interpolation of the samples.
+  CHECK(road.height(0) == Approx(a));
+  CHECK(road.height(0.5 * dx) == Approx(0.5 * (heights[0] + heights[1])));
+  CHECK(road.height(3.0) == Approx(heights[12]));
+}
+
 TEST_CASE("road: a sine road's steady amplitude is m A w^2 / sqrt((k - m w^2)^2 + (b w)^2)", "[models][bumpy-road]") {
   const double m = 60, k = 60000, b = 600, A = 0.05, wavelength = 2;
   for (double speed : {5.0, 10.0, 20.0}) {
