@@ -195,3 +195,28 @@ TEST_CASE("the bars' names are written under the bars, inside the panel, not abo
   CHECK(dark_pixels(inner.y + inner.h + 2, inner.y + inner.h + 42) > 100);
   CHECK(dark_pixels(0, area.y) == 0);  // nothing above the panel
 }
+
+TEST_CASE("each bar's length is its value on one scale: the same pixels per unit, up from one zero line", "[energy-bars]") {
+  // The scale spans [lo, hi] with 4% headroom over the bars' rectangle; a
+  // positive value rises from the zero line, a negative one hangs below it.
+  for (const std::string model : {"vibration", "sliding-box", "two-body"}) {
+    INFO(model);
+    auto run = test::trajectory(model, model == "vibration" ? std::vector<std::string>{"b=0.2", "F=cos(t)"}
+                                                             : std::vector<std::string>{"periods=2"});
+    FedBars fed(*run);
+    fed.bars.place({100, 50, 200, 400}, 1);
+    const render::PixelRect inner = fed.bars.bars_area();
+    const double per_unit = inner.h / (1.04 * (fed.bars.hi() - fed.bars.lo()));
+    const double zero = inner.y + (fed.bars.lo() + 1.04 * (fed.bars.hi() - fed.bars.lo())) * per_unit;
+    for (const auto& row : fed.rows) {
+      fed.bars.observe(row);
+      const scenes::EnergyBudget b = fed.bars.at(row);
+      const double values[] = {b.kinetic, b.potential, b.dissipated, b.work};
+      const auto px = fed.bars.bar_pixels(row);
+      for (int i = 0; i < fed.bars.bars(); ++i) {
+        CHECK(px.bottom[i] - px.top[i] == Approx(std::abs(values[i]) * per_unit).margin(1e-6));
+        CHECK((values[i] >= 0 ? px.bottom[i] : px.top[i]) == Approx(zero).margin(1e-6));
+      }
+    }
+  }
+}
