@@ -7,6 +7,7 @@
 
 #include "cli_support.hpp"
 #include "core/error.hpp"
+#include "render/draw/text.hpp"
 #include "scenes/panels/energy_bars.hpp"
 #include "test_support.hpp"
 
@@ -218,5 +219,37 @@ TEST_CASE("each bar's length is its value on one scale: the same pixels per unit
         CHECK((values[i] >= 0 ? px.bottom[i] : px.top[i]) == Approx(zero).margin(1e-6));
       }
     }
+  }
+}
+
+TEST_CASE("each bar's name is written under that bar: kinetic, potential, dissipated, work of F", "[energy-bars]") {
+  // The names differ in width: under each bar, on its line (they alternate),
+  // the ink is as wide as that bar's name and centred on the bar.
+  auto run = test::trajectory("vibration", {"b=0.2", "F=cos(t)"});
+  FedBars fed(*run);
+  const render::PixelRect area{60, 40, 320, 400};
+  fed.bars.place(area, 1);
+  fed.bars.observe(fed.rows.back());
+  REQUIRE(fed.bars.bars() == 4);
+  render::Canvas canvas = render::Canvas::image(440, 500);
+  canvas.clear(render::palette::paper);
+  fed.bars.draw(canvas, fed.rows.back());
+  canvas.flush();
+  const render::PixelRect inner = fed.bars.bars_area();
+  const double pitch = inner.w / 4;
+  const char* names[] = {"kinetic", "potential", "dissipated", "work of F"};
+  for (int i = 0; i < 4; ++i) {
+    INFO("bar " << i << ", " << names[i]);
+    const double centre = inner.x + (i + 0.5) * pitch, line = inner.y + inner.h + 4 + (i % 2) * 18;
+    int left = 1 << 20, right = -1;
+    for (int y = int(line); y < int(line + 16); ++y)
+      for (int x = int(centre - pitch); x < int(centre + pitch); ++x) {
+        const std::uint8_t* p = canvas.data() + y * canvas.stride() + 4 * x;  // B, G, R, A
+        if (p[0] < 110 && p[1] < 110 && p[2] < 110) left = std::min(left, x), right = std::max(right, x);
+      }
+    REQUIRE(right > left);
+    const double width = render::text_size(canvas, names[i], {14, render::palette::ink}).x();
+    CHECK(std::abs((right + 1 - left) - width) < 4);
+    CHECK(std::abs(0.5 * (left + right + 1) - centre) < 3);
   }
 }
