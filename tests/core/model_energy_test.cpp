@@ -165,3 +165,37 @@ TEST_CASE("an unforced vibration's energy bounds its amplitude", "[model-energy]
   CHECK(test::trajectory("vibration", {"s=-u", "V=2", "dt=0.1", "T=1"})->info().amplitude_bound == 0);
   CHECK(test::trajectory("vibration", {"F=cos(t)"})->info().amplitude_bound == 0);
 }
+
+TEST_CASE("a pendulum's energy bounds its swing: cos(theta_max) = cos(Theta) - Omega^2/2, and none over the top", "[model-energy]") {
+  // Energy: Omega^2/2 + 1 - cos(Theta) = 1 - cos(theta_max) at the turn.
+  const double Theta = 30 * M_PI / 180, Omega = 40 * M_PI / 180;
+  const double theta_max = std::acos(std::cos(Theta) - 0.5 * Omega * Omega);
+  auto t = test::trajectory("pendulum", {"Theta=30", "Omega=40", "alpha=0", "scheme=rk4", "steps_per_period=400", "periods=2"});
+  CHECK(t->info().amplitude_bound == Approx(theta_max).epsilon(1e-12));
+  // The period 4 K(k), k = sin(theta_max / 2), by Simpson's rule on K's integral.
+  const double k = std::sin(theta_max / 2);
+  const int n = 2000;
+  double K = 0;
+  for (int i = 0; i <= n; ++i) {
+    const double phi = 0.5 * M_PI * i / n, weight = i == 0 || i == n ? 1 : i % 2 ? 4 : 2;
+    K += weight / std::sqrt(1 - k * k * std::sin(phi) * std::sin(phi));
+  }
+  K *= 0.5 * M_PI / n / 3;
+  CHECK(t->info().exact_period == Approx(4 * K).epsilon(1e-9));
+  double largest = 0;
+  for (const auto& row : test::rows(*t)) largest = std::max(largest, std::abs(row[1]));
+  CHECK(largest == Approx(theta_max).epsilon(1e-4));  // the mesh's nearest step to the turn
+
+  // Enough speed to go over the top: no bound, no period, and theta passes 180 degrees.
+  auto over = test::trajectory("pendulum", {"Theta=170", "Omega=60", "alpha=0", "periods=2"});
+  CHECK(over->info().amplitude_bound == 0);
+  CHECK(over->info().exact_period == 0);
+  CHECK(test::rows(*over).back()[1] > M_PI);
+}
+
+TEST_CASE("a pendulum from physical data has alpha = C_D rho pi R^2 L / (2 m) (1.131)", "[model-energy]") {
+  const double L = 2, m = 0.5, R = 0.1, C_D = 0.4, rho = 1.2;
+  const double alpha = C_D * rho * M_PI * R * R * L / (2 * m);
+  for (const auto& row : test::rows(*test::trajectory("pendulum", {"L=2", "m=0.5", "R=0.1", "Theta=60", "periods=1"})))
+    CHECK(row[4] == Approx(-alpha * std::abs(row[2]) * row[2]).margin(1e-17));
+}
