@@ -134,6 +134,26 @@ TEST_CASE("a title and the equation take a band across the top and the rest lays
   CHECK(dynamic_cast<scenes::SystemScene&>(*plain.scene).heading().height() == 0);
 }
 
+TEST_CASE("an equation wider than the frame shrinks to the room between the margins, down to half its size", "[lecture]") {
+  // The frame's scale follows its height (360 rows: half of 720p), so a
+  // frame as high and far wider sets the same equation at its full size.
+  const std::string equation = "m u'' + b u' + k u + c u^3 = A\\sin(\\omega t) + B\\cos(2\\omega t) + C\\sin(3\\omega t)";
+  const double full = scenes::FrameHeading("", equation, 8000, 360).equation_box()->w;
+  for (int width : {400, 300, 200}) {
+    INFO(width << "x360");
+    const double room = width - 2 * 16 * 0.5;  // 16-pixel margins at 720p
+    const scenes::FrameHeading heading("", equation, width, 360);
+    const render::PixelRect box = *heading.equation_box();
+    REQUIRE(full > room);
+    CHECK(box.w == Approx(std::max(room, full / 2)).epsilon(0.03));
+    CHECK(box.x >= 8 - 1e-9);
+    if (full / 2 <= room) CHECK(box.x + box.w <= width - 8 + 1);
+  }
+  // One that fits keeps its size.
+  CHECK(scenes::FrameHeading("", "u'' + u = 0", 640, 360).equation_box()->w ==
+        Approx(scenes::FrameHeading("", "u'' + u = 0", 8000, 360).equation_box()->w));
+}
+
 TEST_CASE("the equation flag typesets the model's equation, following its settings", "[lecture]") {
   Run r = prepared("pendulum", {{"equation", "true"}, {"alpha", "0"}, {"size", "640x360"}});
   render::Canvas canvas = render::Canvas::image(640, 360);
