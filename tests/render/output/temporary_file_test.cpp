@@ -4,10 +4,15 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <algorithm>
+#include <csignal>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include "cli_support.hpp"
+#include "core/stop_flag.hpp"
 #include "render/output/temporary_file.hpp"
 
 using vibra::render::TemporaryFile;
@@ -47,4 +52,42 @@ TEST_CASE("stale temporaries: this host's dead runs are removed, other hosts' an
   CHECK_FALSE(std::filesystem::exists(dir / dead));
   CHECK(std::filesystem::exists(dir / live));
   CHECK(std::filesystem::exists(dir / other_host));
+}
+
+TEST_CASE("a stop asked for before the finished output moves: the earlier output stays whole, nothing new is kept", "[output]") {
+  // Frames replace a set of files, a page its folder: a run stopped at the
+  // last moment keeps neither a mixed set nor its temporary.
+  const auto read = [](const std::filesystem::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const auto names = [](const std::filesystem::path& dir) {
+    std::vector<std::string> out;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) out.push_back(e.path().filename().string());
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  ScratchDirectory dir;
+  std::ofstream(dir / "frame_0001.png") << "earlier 1";
+  std::ofstream(dir / "frame_0002.png") << "earlier 2";
+  std::filesystem::create_directory(dir / "page_files");
+  std::ofstream(dir.path / "page_files" / "run.csv") << "earlier csv";
+  {
+    vibra::render::TemporaryDirectory frames(dir.path, "frames");
+    for (const char* name : {"frame_0001.png", "frame_0002.png"}) std::ofstream(frames.path() / name) << "new";
+    vibra::render::TemporaryDirectory page(dir.path, "page_files");
+    std::ofstream(page.path() / "run.csv") << "new csv";
+    vibra::record_stop_signal(SIGINT);
+    const auto moved = [&] { frames.move_files_into_location(); };
+    CHECK_THROWS_AS(moved(), vibra::Interrupted);
+    vibra::record_stop_signal(SIGINT);
+    const auto replaced = [&] { page.replace(dir / "page_files"); };
+    CHECK_THROWS_AS(replaced(), vibra::Interrupted);
+    vibra::take_stop_signal();
+  }
+  CHECK(read(dir / "frame_0001.png") == "earlier 1");
+  CHECK(read(dir / "frame_0002.png") == "earlier 2");
+  CHECK(read(dir.path / "page_files" / "run.csv") == "earlier csv");
+  CHECK(names(dir.path) == std::vector<std::string>{"frame_0001.png", "frame_0002.png", "page_files"});
+  CHECK(names(dir.path / "page_files") == std::vector<std::string>{"run.csv"});
 }
