@@ -68,6 +68,8 @@ void OscillatorDiagram::finish_recording(WorldBox& world) {
   world.extend(Point(reach + 0.5 * layout_->unit, layout_->body_bottom()));
 }
 
+double OscillatorDiagram::wheel_turn(double u) const { return -u / layout_->wheel_radius; }
+
 double OscillatorDiagram::spring_height() const { return layout_->height_at(has_damper() ? 0.75 : 0.5); }
 
 std::vector<Arrow> OscillatorDiagram::force_arrows(std::span<const double> row) const {
@@ -107,7 +109,7 @@ void OscillatorDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
   }
   for (double f : {0.25, 0.75})
     render::draw_wheel(canvas, view, Point(left + f * l.body_width, l.wheel_radius), l.wheel_radius,
-                       -u / l.wheel_radius, colors_.background, {colors_.wire, 1.8});
+                       wheel_turn(u), colors_.background, {colors_.wire, 1.8});
   render::draw_box(canvas, view, Point(left, l.body_bottom()), Point(left + l.body_width, l.body_bottom() + l.body_height),
                    colors_.bob.with_alpha(0.85), {colors_.wire, 1.8});
   if (ghost()) return;

@@ -32,6 +32,9 @@ class OscillatorDiagram final : public Diagram {
   /// The arrows at a row, in world units (after finish_recording): spring,
   /// damper (when b > 0) and external force (when F is given), from the body.
   std::vector<Arrow> force_arrows(std::span<const double> row) const;
+  /// The wheels' turn at displacement u, counterclockwise positive: they
+  /// roll without slipping, so a body moving right turns them clockwise.
+  double wheel_turn(double u) const;
   const HorizontalLayout& layout() const { return *layout_; }
   const ForceScale& force_scale() const { return scale_; }
 

@@ -82,6 +82,22 @@ TEST_CASE("spring-dashpot diagram: arrows are -s(u), -f(u') and F(t) to one scal
   CHECK(longest == Approx(1.1 * d.layout().unit).epsilon(1e-9));
 }
 
+TEST_CASE("spring diagram: the wheels roll without slipping, the rim's point on the floor standing still", "[scene][diagram]") {
+  // The rim point under the hub at u = 0 is, at u, at the hub (x0 + u, r)
+  // plus r (sin turn, -cos turn): to first order in u it must not move.
+  const Recorded r = record("spring");
+  auto& d = as<OscillatorDiagram>(r);
+  const double radius = d.layout().wheel_radius;
+  REQUIRE(radius > 0);
+  for (double u : {1e-5, -1e-5, 3e-5}) {
+    const double contact_x = u + radius * std::sin(d.wheel_turn(u));
+    CHECK(std::abs(contact_x) < 1e-8);
+  }
+  // A whole turn per 2 pi r travelled, clockwise when moving right.
+  CHECK(d.wheel_turn(2 * M_PI * radius) == Approx(-2 * M_PI));
+  CHECK(d.wheel_turn(0) == 0);
+}
+
 TEST_CASE("spring diagram without damping or forcing draws the spring force alone", "[scene][diagram]") {
   const Recorded r = record("spring");
   auto& d = as<OscillatorDiagram>(r);
