@@ -114,9 +114,8 @@ void OscillatorDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
                    colors_.bob.with_alpha(0.85), {colors_.wire, 1.8});
   if (ghost()) return;
 
-  const double y_dim = l.body_bottom() + l.body_height + 0.35 * l.unit;
-  render::draw_dimension(canvas, view, Point(l.equilibrium_x(), y_dim), Point(l.equilibrium_x() + u, y_dim), "<i>u</i>",
-                         Point(0, -1), colors_.wire, colors_.background);
+  const auto [rest, body] = l.u_dimension(u);
+  render::draw_dimension(canvas, view, rest, body, "<i>u</i>", Point(0, -1), colors_.wire, colors_.background);
 
   const std::vector<Arrow> arrows = force_arrows(row);
   const render::Color colors[] = {colors_.gravity, has_damper() ? colors_.drag : colors_.wire_force, colors_.wire_force};

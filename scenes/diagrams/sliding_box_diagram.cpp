@@ -127,9 +127,8 @@ void SlidingBoxDiagram::draw(render::Canvas& canvas, const render::WorldView& vi
   render::draw_box(canvas, view, Point(left, 0), Point(left + l.body_width, l.body_height),
                    colors_.bob.with_alpha(0.85), {colors_.wire, 1.8});
   if (ghost()) return;
-  render::draw_dimension(canvas, view, Point(l.equilibrium_x(), l.body_height + 0.35 * l.unit),
-                         Point(l.equilibrium_x() + u, l.body_height + 0.35 * l.unit), "<i>u</i>", Point(0, -1),
-                         colors_.wire, colors_.background);
+  const auto [rest, body] = l.u_dimension(u);
+  render::draw_dimension(canvas, view, rest, body, "<i>u</i>", Point(0, -1), colors_.wire, colors_.background);
 
   for (const DrawnForce& f : forces(row)) {
     render::ForceArrow arrow{f.arrow.from, f.arrow.to, f.color, f.label};

@@ -2,6 +2,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "scenes/diagrams/diagram.hpp"
 
@@ -27,6 +28,12 @@ struct HorizontalLayout {
   double height_at(double fraction) const { return body_bottom() + fraction * body_height; }
   /// Equilibrium position of the body's centre line.
   double equilibrium_x() const { return rest_length + 0.5 * body_width; }
+  /// The dimension line marking u above the body: from the equilibrium line
+  /// to the body's centre line.
+  std::pair<Point, Point> u_dimension(double u) const {
+    const double y = body_bottom() + body_height + 0.35 * unit;
+    return {Point(equilibrium_x(), y), Point(equilibrium_x() + u, y)};
+  }
   /// Everything but the force arrows, for the world box.
   WorldBox extent() const {
     WorldBox box(Point(-0.35 * unit, -0.25 * unit),

@@ -19,6 +19,7 @@
 #include "scenes/diagrams/rlc_diagram.hpp"
 #include "scenes/diagrams/sliding_box_diagram.hpp"
 #include "scenes/diagrams/washing_machine_diagram.hpp"
+#include "scenes/overlays/horizontal_layout.hpp"
 #include "scenes/scene_factory.hpp"
 #include "recorded_diagram.hpp"
 #include "test_support.hpp"
@@ -96,6 +97,22 @@ TEST_CASE("spring diagram: the wheels roll without slipping, the rim's point on 
   // A whole turn per 2 pi r travelled, clockwise when moving right.
   CHECK(d.wheel_turn(2 * M_PI * radius) == Approx(-2 * M_PI));
   CHECK(d.wheel_turn(0) == 0);
+}
+
+TEST_CASE("the u dimension runs from the equilibrium line to the body's centre line, above the body, on wheels or not",
+          "[scene][diagram]") {
+  for (bool wheels : {true, false}) {
+    const HorizontalLayout l(0.8, wheels);
+    for (double u : {0.8, 0.3, -0.55, 0.0}) {
+      INFO("wheels " << wheels << ", u = " << u);
+      const auto [rest, body] = l.u_dimension(u);
+      CHECK(rest.x() == l.equilibrium_x());
+      CHECK(body.x() == Approx(l.body_center(u).x()));
+      CHECK(body.x() - rest.x() == Approx(u).margin(1e-15));
+      CHECK(rest.y() == body.y());
+      CHECK(rest.y() > l.body_bottom() + l.body_height);  // above the body
+    }
+  }
 }
 
 TEST_CASE("spring diagram without damping or forcing draws the spring force alone", "[scene][diagram]") {
