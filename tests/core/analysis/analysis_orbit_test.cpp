@@ -2,9 +2,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <ctime>
+#include <vector>
 
 #include "core/analysis/line_fit.hpp"
 #include "core/analysis/orbit_error.hpp"
+#include "test_support.hpp"
 
 using namespace vibra;
 
@@ -69,4 +71,20 @@ TEST_CASE("the line fit recovers a + b x and its largest residual", "[analysis]"
   y[10] += 1e-6;  // one stray point
   fit = fit_line(x, y);
   CHECK(largest_residual(fit, x, y) == Approx(1e-6).epsilon(0.05));
+}
+
+TEST_CASE("each block's error is the largest distance from the exact circle's point over that block's steps", "[analysis]") {
+  // Euler-Cromer at 50 steps an orbit: an error that swings and grows within
+  // each orbit, measured here from its definition on the same run.
+  const OrbitRun run = circular_orbit_run("euler-cromer", 50, 4, 1);
+  REQUIRE(run.blocks.size() == 4);
+  auto t = test::trajectory("two-body", {"scheme=euler-cromer", "steps_per_period=50", "periods=4"});
+  std::vector<double> largest(4, 0.0);
+  for (const auto& row : test::rows(*t)) {
+    const long long step = std::llround(row[0] / run.dt);
+    const size_t block = step == 0 ? 0 : size_t((step - 1) / 50);
+    largest[std::min<size_t>(block, 3)] =
+        std::max(largest[std::min<size_t>(block, 3)], std::hypot(row[1] - std::cos(row[0]), row[2] - std::sin(row[0])));
+  }
+  for (size_t i = 0; i < 4; ++i) CHECK(run.blocks[i].max_error == Approx(largest[i]).epsilon(1e-12));
 }

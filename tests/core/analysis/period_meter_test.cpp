@@ -37,6 +37,16 @@ TEST_CASE("a sampled cosine's crossings are found to the interpolation's order",
   }
 }
 
+TEST_CASE("a sample exactly at zero is a crossing, counted once, at its own time", "[period]") {
+  // u = cos t sampled at quarter periods: u is exactly -1, 0, 1, 0, -1, ...,
+  // so each upward crossing (t = 3 pi/2 + 2 pi k) falls on a sample.
+  PeriodMeter meter;
+  const double u[] = {1, 0, -1, 0}, v[] = {0, -1, 0, 1};
+  for (int n = 0; n <= 16; ++n) meter.add(n * M_PI / 2, u[n % 4], v[n % 4]);
+  REQUIRE(meter.crossings().size() == 4);
+  for (size_t k = 0; k < 4; ++k) CHECK(meter.crossings()[k] == Approx(1.5 * M_PI + 2 * M_PI * k).epsilon(1e-12));
+}
+
 TEST_CASE("undamped periods equal 2 pi / w", "[period]") {
   auto t = test::trajectory("undamped", {"scheme=rk4", "w=3", "steps_per_period=200", "periods=6", "I=0.3", "V=2"});
   CHECK(t->info().exact_period == Approx(2 * M_PI / 3).epsilon(1e-15));
