@@ -212,6 +212,20 @@ TEST_CASE("operators are spaced as TeX spaces them: binary and relations apart, 
   CHECK(width(R"(\sin\theta)") > width(R"(\sin)") + width(R"(\theta)") + 2.0 / 18 * em);
 }
 
+TEST_CASE("spacing commands add their TeX widths in em: thin 3/18, medium 4/18, thick 5/18, negative -3/18, "
+          "a control space 1/3, quad 1 and qquad 2",
+          "[typeset]") {
+  const double em = 36;
+  const double ab = set("ab", em).width;
+  const std::pair<const char*, double> spaces[] = {{R"(\,)", 3.0 / 18}, {R"(\:)", 4.0 / 18}, {R"(\>)", 4.0 / 18},
+                                                   {R"(\;)", 5.0 / 18}, {R"(\!)", -3.0 / 18}, {R"(\ )", 1.0 / 3},
+                                                   {R"(\quad)", 1}, {R"(\qquad)", 2}};
+  for (const auto& [command, width] : spaces) {
+    INFO(command);
+    CHECK(set(std::string("a") + command + " b", em).width - ab == Approx(width * em).margin(1e-6));
+  }
+}
+
 TEST_CASE("multi-line formulas stack their lines, the first baseline at the origin", "[typeset]") {
   const MathBox box = set(R"(u^{n+1} = u^n + \Delta t\, v^n \\ v^{n+1} = v^n + \Delta t\, a^n)");
   REQUIRE(box.children.size() == 2);
