@@ -135,6 +135,32 @@ TEST_CASE("bouncing ball: mg in flight, at rest on the ground N = mg up from it,
   CHECK(key_names(*short_run.diagram) == std::vector<std::string>{"mg weight"});
 }
 
+TEST_CASE("bouncing ball: each arrow's label sits on the arrow's side away from the ball, so mg's and v's never meet",
+          "[scene][diagram][free-body]") {
+  const Run r = run_of("bouncing_ball");
+  auto& d = as<BouncingBallDiagram>(r);
+  const render::WorldView view(r.world, {40, 30, 560, 300});
+  int labels = 0;
+  for (size_t i = 0; i < r.rows.size(); i += 7) {
+    const auto& row = r.rows[i];
+    render::Canvas canvas = render::Canvas::image(640, 360);
+    render::DrawingRecord record;
+    canvas.record_into(&record);
+    d.draw(canvas, view, row);
+    canvas.record_into(nullptr);
+    const double ball_x = view.to_pixel(d.ball_center(row)).x();
+    for (const auto& l : record.labels) {
+      if (l.markup.find("impact") != std::string::npos) continue;  // the tally, not an arrow's
+      INFO("t = " << row[0] << ", label " << l.markup);
+      const double side = l.anchor.x() - ball_x;
+      REQUIRE(std::abs(side) > 1);  // each arrow stands beside the ball, not through it
+      CHECK(l.direction.x() * side > 0);
+      ++labels;
+    }
+  }
+  CHECK(labels > 50);
+}
+
 TEST_CASE("bouncing ball: what is drawn is the force list, and the v arrow is to scale and never passes the ground",
           "[scene][diagram][free-body]") {
   Run r = run_of("bouncing_ball");
