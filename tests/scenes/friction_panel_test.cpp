@@ -56,6 +56,25 @@ TEST_CASE("friction panel: a linear spring's turning points step in by 2 mu and 
   }
 }
 
+TEST_CASE("friction panel: fed only a coarse run's rows, each turning point is the sample nearer the turn", "[plot][sliding-box]") {
+  // At 16 steps a period the samples either side of a turn are far apart:
+  // the one where |v| is smaller is within 1e-3 of the turn's u, the other
+  // some 0.06 away. The turns: 1, -(1 - 2 mu), 1 - 4 mu, ... (mu = 0.1).
+  auto run = test::trajectory("sliding-box", {"mu=0.1", "steps_per_period=16"});
+  render::Figure figure(800, 600);
+  scenes::FrictionPanel panel(figure, {{&run->info(), render::palette::blue, ""}});
+  std::vector<double> row(run->width());
+  do {
+    run->row(row);
+    panel.observe(0, row);
+  } while (run->advance());
+  panel.finish();
+  const std::vector<double> turns = panel.turning_points(0);
+  const std::vector<double> expected{1, -0.8, 0.6, -0.4, 0.2};
+  REQUIRE(turns.size() >= expected.size());
+  for (size_t k = 0; k < expected.size(); ++k) CHECK(turns[k] == Approx(expected[k]).margin(2e-3));
+}
+
 TEST_CASE("friction panel: on a tanh spring, friction's work mu |b - a| is the spring energy lost between turns",
           "[plot][sliding-box]") {
   for (double alpha : {1.0, 2.5}) {
