@@ -96,3 +96,16 @@ TEST_CASE("plot --compare refuses bad input with one line, exit code 2 and no fi
   };
   for (const auto& [args, expected] : cases) vibra::test::check_refused(args, expected);
 }
+
+TEST_CASE("a compared angle is named in degrees, or in radians when given so; other keys as given", "[compare]") {
+  Comparison angles(find_model("pendulum"), settings("pendulum", {"periods=1"}), parse_comparison("Theta=30,60,1rad"));
+  CHECK(scenes::member_markup(angles, 0) == "Theta = 30°");
+  CHECK(scenes::member_markup(angles, 1) == "Theta = 60°");
+  CHECK(scenes::member_markup(angles, 2) == "Theta = 1rad");
+  Comparison drags(find_model("pendulum"), settings("pendulum", {"periods=1"}), parse_comparison("alpha=0.1,0.4"));
+  CHECK(scenes::member_markup(drags, 1) == "alpha = 0.4");
+  Comparison steps(find_model("undamped"), settings("undamped", {"periods=1"}), parse_comparison("dt=0.1,0.05"));
+  CHECK(scenes::member_markup(steps, 0) == "Δ<i>t</i> = 0.1");
+  Comparison schemes(find_model("undamped"), settings("undamped", {"periods=1"}), parse_comparison("scheme=rk4,centered"));
+  CHECK(scenes::member_markup(schemes, 1) == "centered");
+}
