@@ -331,6 +331,18 @@ TEST_CASE("bad titles, equations and notes on the command line: one line, exit 2
   test::check_refused("render --note '1-2: here @nowhere' -o OUT.mp4", "no panel here");
   test::check_refused("render --title '$\\frac{a}$' --at 1 -o OUT.png", "needs an argument");
   test::check_refused("render --title '$x^^2$' -o OUT.mp4", "needs an argument");
+  // A long panel name is shown alike where the note is quoted and where the fix says what to drop.
+  test::ScratchDirectory dir;
+  const auto r = test::run_vibra("render spring --layout fbd --note '1-2: hi @abcdefghijklmnopqrstuvwxyz0123456789' --at 1 -o " +
+                                 (dir / "x.png"));
+  CHECK(r.exit_code == 2);
+  const auto quoted = r.err.find("hi @"), dropped = r.err.find("drop @");
+  REQUIRE(quoted != std::string::npos);
+  REQUIRE(dropped != std::string::npos);
+  const std::string in_note = r.err.substr(quoted + 4, r.err.find("' points", quoted) - quoted - 4);
+  const std::string in_fix = r.err.substr(dropped + 6, r.err.find(", or", dropped) - dropped - 6);
+  CHECK(in_note == in_fix);
+  CHECK(in_note.size() < 36);  // cut short, as every echoed name is
 }
 
 TEST_CASE("a still with a title, the equation and a note is written", "[lecture][cli]") {
