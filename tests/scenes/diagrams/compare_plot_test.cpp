@@ -109,3 +109,13 @@ TEST_CASE("a compared angle is named in degrees, or in radians when given so; ot
   Comparison schemes(find_model("undamped"), settings("undamped", {"periods=1"}), parse_comparison("scheme=rk4,centered"));
   CHECK(scenes::member_markup(schemes, 1) == "centered");
 }
+
+TEST_CASE("a comparison's caption states what the members share and not what they vary", "[compare]") {
+  // Each member's dt differs: no dt in the caption, the shared scheme named.
+  Comparison steps(find_model("undamped"), settings("undamped", {"scheme=rk4", "periods=1"}), parse_comparison("dt=0.1,0.05"));
+  CHECK(scenes::comparison_caption("undamped", steps) == "rk4 · comparing Δ<i>t</i>");
+  // The schemes differ: the shared dt, no scheme.
+  Comparison schemes(find_model("undamped"), settings("undamped", {"dt=0.05", "periods=1"}),
+                     parse_comparison("scheme=rk4,centered"));
+  CHECK(scenes::comparison_caption("undamped", schemes) == "Δ<i>t</i> = 0.05 · comparing scheme");
+}
