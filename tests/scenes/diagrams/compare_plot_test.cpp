@@ -97,7 +97,7 @@ TEST_CASE("plot --compare refuses bad input with one line, exit code 2 and no fi
   for (const auto& [args, expected] : cases) vibra::test::check_refused(args, expected);
 }
 
-TEST_CASE("a compared angle is named in degrees, or in radians when given so; other keys as given", "[compare]") {
+TEST_CASE("a compared angle is named in degrees, or in radians when given so, other keys as given", "[compare]") {
   Comparison angles(find_model("pendulum"), settings("pendulum", {"periods=1"}), parse_comparison("Theta=30,60,1rad"));
   CHECK(scenes::member_markup(angles, 0) == "Theta = 30°");
   CHECK(scenes::member_markup(angles, 1) == "Theta = 60°");
