@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <memory>
 
 #include "cli_support.hpp"
 #include "core/error.hpp"
@@ -25,6 +26,21 @@ struct FedBars {
 };
 
 double total(const scenes::EnergyBudget& b) { return b.kinetic + b.potential + b.dissipated; }
+
+/// A forced, damped vibration's four bars placed in `area` and drawn at its
+/// last row on a paper canvas of width x height.
+struct DrawnBars {
+  std::unique_ptr<Trajectory> run = test::trajectory("vibration", {"b=0.2", "F=cos(t)"});
+  FedBars fed{*run};
+  render::Canvas canvas;
+  DrawnBars(const render::PixelRect& area, int width, int height) : canvas(render::Canvas::image(width, height)) {
+    fed.bars.place(area, 1);
+    fed.bars.observe(fed.rows.back());
+    canvas.clear(render::palette::paper);
+    fed.bars.draw(canvas, fed.rows.back());
+    canvas.flush();
+  }
+};
 }  // namespace
 
 TEST_CASE("an unforced damped run's bars add up to E(0), dissipated growing to what was lost", "[energy-bars]") {
@@ -172,15 +188,10 @@ TEST_CASE("energy bars need a diagram to stand beside", "[energy-bars]") {
 }
 
 TEST_CASE("the bars' names are written under the bars, inside the panel, not above it", "[energy-bars]") {
-  auto run = test::trajectory("vibration", {"b=0.2", "F=cos(t)"});
-  FedBars fed(*run);
   const render::PixelRect area{100, 50, 160, 400};
-  fed.bars.place(area, 1);
-  fed.bars.observe(fed.rows.back());
-  render::Canvas canvas = render::Canvas::image(400, 500);
-  canvas.clear(render::palette::paper);
-  fed.bars.draw(canvas, fed.rows.back());
-  canvas.flush();
+  const DrawnBars drawn(area, 400, 500);
+  const FedBars& fed = drawn.fed;
+  const render::Canvas& canvas = drawn.canvas;
   // Dark text pixels (the names are in ink) in a band of rows, across the panel's width.
   const auto dark_pixels = [&](double y0, double y1) {
     int n = 0;
@@ -225,16 +236,10 @@ TEST_CASE("each bar's length is its value on one scale: the same pixels per unit
 TEST_CASE("each bar's name is written under that bar: kinetic, potential, dissipated, work of F", "[energy-bars]") {
   // The names differ in width: under each bar, on its line (they alternate),
   // the ink is as wide as that bar's name and centred on the bar.
-  auto run = test::trajectory("vibration", {"b=0.2", "F=cos(t)"});
-  FedBars fed(*run);
-  const render::PixelRect area{60, 40, 320, 400};
-  fed.bars.place(area, 1);
-  fed.bars.observe(fed.rows.back());
+  DrawnBars drawn({60, 40, 320, 400}, 440, 500);
+  const FedBars& fed = drawn.fed;
+  render::Canvas& canvas = drawn.canvas;
   REQUIRE(fed.bars.bars() == 4);
-  render::Canvas canvas = render::Canvas::image(440, 500);
-  canvas.clear(render::palette::paper);
-  fed.bars.draw(canvas, fed.rows.back());
-  canvas.flush();
   const render::PixelRect inner = fed.bars.bars_area();
   const double pitch = inner.w / 4;
   const char* names[] = {"kinetic", "potential", "dissipated", "work of F"};
