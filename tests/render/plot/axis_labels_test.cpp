@@ -4,8 +4,10 @@
 #include <cmath>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "render/plot/axis.hpp"
+#include "render/labels/drawing_record.hpp"
 #include "render/plot/plot_panel.hpp"
 
 using vibra::render::linear_tick_labels;
@@ -86,4 +88,29 @@ TEST_CASE("axis labels: every tiny, huge or offset range labels distinct ticks t
         CHECK(std::abs(value_of(l.labels[i], l) - ticks[i]) <= 1e-3 * step);
       }
     }
+}
+
+TEST_CASE("a panel's axes get as many ticks as their labels leave room for: up to six across and five up", "[axis]") {
+  // 0..12 across a wide panel: six steps of 2 fit (five would need steps of
+  // 5); up, -1..1 over a tall panel: five steps of 0.5. A narrow panel gets fewer.
+  using namespace vibra::render;
+  const auto labels_drawn = [](double width, double height) {
+    PlotPanel panel({0, 0, width, height}, 1);
+    panel.set_x_range(0, 12);
+    panel.set_y_range(-1 / 1.1, 1 / 1.1);  // -1..1 with set_y_range's margin
+    Canvas canvas = Canvas::image(int(width), int(height));
+    DrawingRecord record;
+    canvas.record_into(&record);
+    panel.draw_axes(canvas, "<i>u</i>", "<i>t</i>");
+    canvas.record_into(nullptr);
+    std::vector<std::string> texts;
+    for (const auto& shape : record.outline.shapes())
+      if (shape.kind == OutlineKind::text) texts.push_back(shape.name);
+    return std::set<std::string>(texts.begin(), texts.end());
+  };
+  const std::set<std::string> wide = labels_drawn(1280, 600);
+  for (const char* x : {"0", "2", "4", "6", "8", "10", "12"}) CHECK(wide.count(x) == 1);
+  for (const char* y : {"\u22121.0", "\u22120.5", "0.0", "0.5", "1.0"}) CHECK(wide.count(y) == 1);
+  const std::set<std::string> narrow = labels_drawn(180, 600);
+  CHECK(narrow.count("2") == 0);  // too little room for a tick every 2
 }
