@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cli_support.hpp"
@@ -13,6 +14,8 @@
 #include "core/models/model.hpp"
 #include "render/labels/drawing_record.hpp"
 #include "scenes/overlays/note.hpp"
+#include "render/draw/color.hpp"
+#include "scenes/overlays/note_callouts.hpp"
 #include "scenes/overlays/run_caption.hpp"
 #include "scenes/config/scene_config.hpp"
 #include "scenes/scene_factory.hpp"
@@ -189,6 +192,17 @@ TEST_CASE("comparing schemes with --equation puts each scheme's update formula i
   plain.scene->draw(other, plain.rows.front());
   for (const auto& shape : plain.scene->last_layout()->outline.shapes())
     CHECK(shape.kind != render::OutlineKind::formula);
+}
+
+TEST_CASE("a note is written in the scene's ink on a card of its background, on a dark scene too", "[lecture]") {
+  const render::Color ink = render::parse_color("#f2f2f2"), card = render::parse_color("#15151a");
+  const scenes::NoteCallouts notes({scenes::parse_note("1-3: the drag $D$ opposes the motion")}, {}, 1280, 720, 10, ink, card);
+  const auto requests = notes.body_requests(2, {640, 360});
+  REQUIRE(requests.size() == 1);
+  const render::TextStyle& style = requests[0].style;
+  CHECK(std::tie(style.color.r, style.color.g, style.color.b) == std::tie(ink.r, ink.g, ink.b));
+  CHECK(std::tie(style.halo_color.r, style.halo_color.g, style.halo_color.b) == std::tie(card.r, card.g, card.b));
+  CHECK(notes.body_requests(4, {640, 360}).empty());  // after its time
 }
 
 TEST_CASE("a note shows exactly while its time lasts, and frames drawn one after another equal stills", "[lecture]") {
