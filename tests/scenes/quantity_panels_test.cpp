@@ -8,6 +8,7 @@
 #include "cli_support.hpp"
 #include "core/error.hpp"
 #include "scenes/panels/quantity_panels.hpp"
+#include "scenes/panels/series_panel.hpp"
 #include "scenes/config/scene_config.hpp"
 #include "test_support.hpp"
 
@@ -180,4 +181,32 @@ TEST_CASE("a window narrower than the run moves the panels' time axis, one wider
   CHECK(narrow_moves);
   CHECK(jumps_move);
   CHECK(wide_stays);
+}
+
+TEST_CASE("each window mode's time axis at t: drawing the current window, movement the last w, jumps the last complete one",
+          "[panels]") {
+  // A window of 2 over a run of 10: at t = 5.1 drawing shows 4..6, movement
+  // 3.1..5.1 and jumps 2..4 (4..6 is not complete); before t = 2 all show 0..2.
+  auto run = test::trajectory("undamped", {"T=10", "dt=0.05"});
+  const auto rows = test::rows(*run);
+  const auto axis_at = [&](scenes::WindowMode mode, double t) {
+    scenes::SeriesPanel panel({0, 0, 640, 240}, 1, "<i>u</i>",
+                              {{"", render::palette::blue, [](std::span<const double> r) { return r[1]; }}}, 10, mode, 2);
+    for (const auto& row : rows) panel.record(row);
+    panel.finish_recording();
+    std::vector<double> now;
+    for (const auto& row : rows)
+      if (row[0] <= t + 1e-9) panel.observe(row), now = row;
+    render::Canvas canvas = render::Canvas::image(640, 240);
+    panel.draw(canvas, t, now, true);
+    return std::pair{panel.plot().x0(), panel.plot().x1()};
+  };
+  using scenes::WindowMode;
+  CHECK(axis_at(WindowMode::drawing, 5.1) == std::pair{4.0, 6.0});
+  const auto moving = axis_at(WindowMode::movement, 5.1);
+  CHECK(moving.first == Approx(3.1));
+  CHECK(moving.second == Approx(5.1));
+  CHECK(axis_at(WindowMode::jumps, 5.1) == std::pair{2.0, 4.0});
+  for (WindowMode mode : {WindowMode::drawing, WindowMode::movement, WindowMode::jumps})
+    CHECK(axis_at(mode, 1.3) == std::pair{0.0, 2.0});
 }
