@@ -5,34 +5,11 @@
 
 #include "core/error.hpp"
 #include "core/models/model.hpp"
+#include "core/models/potential_reach.hpp"
 #include "core/models/vibration_law.hpp"
 #include "core/math/quadrature.hpp"
 
 namespace vibra {
-
-namespace {
-/// How far u can go from u0 with energy E0 = potential(u0) + kinetic: the
-/// largest |u| at which `potential` first reaches E0, searched outward from
-/// u0 on both sides (doubling the step, then bisecting). 0 when it does not
-/// reach E0 within 1e6 steps' worth (a force that does not restore).
-double reach(const std::function<double(double)>& potential, double u0, double E0, double step) {
-  double largest = 0;
-  for (double side : {1.0, -1.0}) {
-    double below = 0, above = step;
-    while (potential(u0 + side * above) < E0) {
-      below = above, above *= 2;
-      if (above > 1e6 * step) return 0;
-    }
-    for (int i = 0; i < 60; ++i) {
-      const double mid = 0.5 * (below + above);
-      (potential(u0 + side * mid) < E0 ? below : above) = mid;
-    }
-    largest = std::max(largest, std::abs(u0 + side * above));
-  }
-  return largest;
-}
-
-}  // namespace
 
 // m u'' + f(u') + s(u) = F(t) (1.71): a linear spring k u, or s and F typed as formulas.
 ModelDefinition vibration_model() {
@@ -90,7 +67,7 @@ ModelDefinition vibration_model() {
     if (!law.F) {
       const double E0 = 0.5 * law.mass * V * V + potential(I);
       const double step = std::max({std::abs(I), w > 0 ? std::abs(V) / w : std::abs(V), 1e-3}) / 8;
-      if (E0 > 0) info.amplitude_bound = reach(potential, I, E0, step);
+      if (E0 > 0) info.amplitude_bound = potential_reach(potential, I, E0, step);
     }
     return std::make_unique<SecondOrderTrajectory<1>>(
         system, Vec<1>(I), Vec<1>(V), info, [](const Sample<1>& x, std::span<double> out) {
