@@ -56,6 +56,10 @@ struct SchemeInfo {
 
 /// Every scheme, in the order `--help` lists them.
 const std::vector<SchemeInfo>& all_schemes();
+/// The rate a scheme converges at where a force depends on the velocity (a
+/// dashpot, drag): lower than its order where that force is taken at a
+/// velocity behind the step.
+int damped_order(const SchemeInfo& info);
 const SchemeInfo& scheme_info(Scheme);
 /// Throws UsageError naming the valid schemes.
 Scheme parse_scheme(std::string_view name);

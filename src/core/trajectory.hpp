@@ -34,6 +34,10 @@ struct TrajectoryInfo {
   std::string small_period_label = "2π/ω";
   /// True when drag, friction or a dashpot takes energy out of the system.
   bool damped = false;
+  /// True when a force depends on the velocity throughout (a dashpot, a
+  /// resistor, drag; not friction, which only flips with its sign): set
+  /// from the system. Some schemes lose order then (damped_order).
+  bool velocity_damping = false;
   /// Kinetic and potential energy from a row, with the scheme's own velocity
   /// (empty for a model without a mechanical energy). With an external force
   /// the energy is not conserved: E - E(0) then includes the force's work.
@@ -114,7 +118,9 @@ class SecondOrderTrajectory final : public Trajectory {
                 info_.mesh.adaptive() ? SolutionStream<D>::unbounded : info_.mesh.steps,
                 info_.mesh.adaptive() ? info_.mesh.T : std::numeric_limits<double>::infinity()),
         previous_(stream_.current()),
-        to_row_(std::move(to_row)) {}
+        to_row_(std::move(to_row)) {
+    info_.velocity_damping = system_->damping != Damping::none;
+  }
 
   double t() const override { return stream_.current().t; }
   long long index() const override { return stream_.index(); }

@@ -20,7 +20,7 @@ void run(const ConvergenceOptions& o) {
 void add_convergence_analysis(CLI::App& analyze) {
   auto o = std::make_shared<ConvergenceOptions>();
   CLI::App* cmd = analyze.add_subcommand("convergence", "Errors and convergence rates for halved dt against the exact solution");
-  cmd->add_option("MODEL", o->experiment.model, "A model with an exact solution: undamped, or two-body with a circular orbit");
+  cmd->add_option("MODEL", o->experiment.model, "A model with an exact solution: undamped, vibration, rlc, resonance, sliding-box or two-body (the error says which settings)");
   cmd->add_option("--set", o->experiment.settings, "KEY=VALUE model setting, repeatable; dt (or steps_per_period) is the first level's")
       ->allow_extra_args(false);
   cmd->add_option("--levels", o->experiment.levels,

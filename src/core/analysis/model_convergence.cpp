@@ -22,12 +22,12 @@ ModelConvergence model_convergence(const std::string& model_name, const std::vec
   if (!info.exact || info.exact_label != "exact")
     throw UsageError("model " + model_name + " has no exact solution with these settings" +
                      (info.exact ? " (its " + info.exact_label + " solution is an approximation)" : "") +
-                     ": use undamped, vibration with a linear spring and no forcing (or undamped with F=A*sin(phi*t)), resonance, sliding-box released from "
-                     "rest, or two-body with a circular orbit (its default)");
+                     ": use undamped, vibration with a linear spring and no forcing (or undamped with F=A*sin(phi*t)), rlc without a "
+                     "source (V=0), resonance, sliding-box released from rest, or two-body with a circular orbit (its default)");
 
   auto make = [&](double dt) { return model.build(parameters_with_dt(model, settings, dt)); };
   const SchemeInfo& scheme = scheme_info(info.mesh.scheme);
-  ModelConvergence study{std::string(scheme.name), scheme.order,
+  ModelConvergence study{std::string(scheme.name), info.velocity_damping ? damped_order(scheme) : scheme.order,
                          levels == 0 ? convergence_until_settled(make, info.exact, info.mesh.dt, kAutoMinLevels, kAutoMaxLevels)
                                      : convergence_study(make, info.exact, info.mesh.dt, levels)};
   study.settled = rates_settled(study.levels);

@@ -10,7 +10,7 @@ namespace vibra {
 /// A convergence study of one model and scheme, as `vibra analyze convergence` runs it.
 struct ModelConvergence {
   std::string scheme;  ///< the scheme's name
-  int order;           ///< its theoretical rate
+  int order;           ///< its theoretical rate on this problem (damped_order with velocity damping)
   std::vector<ConvergenceLevel> levels;
   bool settled = false;  ///< the last two rates agree (rates_settled)
 };
