@@ -163,6 +163,29 @@ TEST_CASE("log axes label decades, linear axes of large values use powers of ten
     if (!t.label.empty()) labels.push_back(t.label);
   CHECK(labels == std::vector<std::string>{"0.02", "0.05"});
 
+  Axis one_decade(AxisScale::logarithmic);  // one power of ten in view: 2x and 5x labelled beside it
+  one_decade.fit(0.04, 0.3);
+  labels.clear();
+  for (const auto& t : one_decade.ticks(6))
+    if (!t.label.empty()) labels.push_back(t.label);
+  CHECK(labels == std::vector<std::string>{"0.05", "0.1", "0.2"});
+
+  // A figure's tiny linear ticks each carry their power of ten, but zero is
+  // plain 0: 0×10^-9 would read as a different number.
+  Axis tiny;
+  tiny.fit(-2e-9, 2e-9);
+  int zeros = 0;
+  for (const auto& t : tiny.ticks(6)) {
+    INFO(t.value << " " << t.label);
+    if (std::abs(t.value) < 1e-20) {
+      CHECK(t.label == "0");
+      ++zeros;
+    } else {
+      CHECK(t.label.find("×10<sup>−9</sup>") != std::string::npos);
+    }
+  }
+  CHECK(zeros == 1);
+
   Axis large;
   large.fit(0, 1.2e8);
   bool scientific = false;
