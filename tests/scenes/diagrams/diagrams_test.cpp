@@ -344,6 +344,31 @@ TEST_CASE("orbit diagram: gravity -x/|x|^3 and v to their scales, and the circul
   for (const auto& p : d.trail().points()) CHECK(p.p.norm() == Approx(1).epsilon(1e-7));
 }
 
+TEST_CASE("orbit diagram: on an eccentric orbit gravity's arrow shrinks as 1/r^2, one scale a run; circles of any radius",
+          "[scene][diagram]") {
+  // From x0 = 1 at 1.2 times the circular speed: out to r = 1.44/0.56.
+  const Recorded r = record("orbit", {{"vy0", "1.2"}, {"periods", "3"}});
+  auto& d = as<OrbitDiagram>(r);
+  CHECK(d.circle_radius() == 0);  // not circular: no circle to compare with
+  double g_largest = 0, v_largest = 0, r_min = 1e300, r_max = 0;
+  for (const auto& row : r.rows) {
+    const Point x(row[1], row[2]), v(row[3], row[4]);
+    g_largest = std::max(g_largest, 1 / x.squaredNorm()), v_largest = std::max(v_largest, v.norm());
+    r_min = std::min(r_min, x.norm()), r_max = std::max(r_max, x.norm());
+  }
+  CHECK(r_max / r_min > 2.5);
+  for (const auto& row : r.rows) {
+    const Point x(row[1], row[2]), v(row[3], row[4]);
+    const auto a = d.arrows(row);
+    // The longest arrow 0.45 world units, every other in proportion to its force.
+    CHECK((a[0].to - a[0].from - 0.45 / g_largest * (-x / std::pow(x.norm(), 3))).norm() < 1e-9);
+    CHECK((a[1].to - a[1].from - 0.45 / v_largest * v).norm() < 1e-9);
+  }
+  // A circular start at r = 2 (speed 1/sqrt(2)) gets its circle, of radius 2.
+  const Recorded wide = record("orbit", {{"x0", "2"}, {"vy0", "0.70710678118654752"}});
+  CHECK(as<OrbitDiagram>(wide).circle_radius() == 2);
+}
+
 TEST_CASE("orbit diagram: Euler-Cromer's drift shows in the trail after 100 orbits, PEFRL's does not",
           "[scene][diagram]") {
   auto drift = [](const std::string& scheme) {
