@@ -324,6 +324,25 @@ TEST_CASE("elastic pendulum diagram: mg, the wire's force (L - beta)/(1 - beta) 
   CHECK(trail.front().p.x() == Approx(r.rows.front()[1]));
 }
 
+TEST_CASE("elastic pendulum diagram's panels: theta in degrees from the wire's direction, S/mg from its stretch",
+          "[scene][diagram]") {
+  const double beta = 0.9;
+  const Recorded r = record("elastic_pendulum", {{"Theta", "40"}});
+  const auto panels = as<ElasticPendulumDiagram>(r).panels();
+  REQUIRE(panels.size() == 2);
+  CHECK_THAT(panels[0].label, Catch::Contains("degrees"));
+  double widest = 0;
+  for (const auto& row : r.rows) {
+    // theta from the bob's place below the pivot (0, 1): atan2(x, 1 - y).
+    const double theta = std::atan2(row[1], 1 - row[2]) * 180 / M_PI;
+    CHECK(panels[0].series[0].value(row) == Approx(theta).margin(1e-9));
+    const double L = std::hypot(row[1], row[2] - 1);
+    CHECK(panels[1].series[0].value(row) == Approx((L - beta) / (1 - beta)).margin(1e-9));
+    widest = std::max(widest, std::abs(theta));
+  }
+  CHECK(widest > 30);  // the swing is in degrees, not radians
+}
+
 TEST_CASE("orbit diagram: gravity -x/|x|^3 and v to their scales, and the circular orbit keeps radius 1",
           "[scene][diagram]") {
   const Recorded r = record("orbit");
