@@ -363,7 +363,7 @@ TEST_CASE("orbit diagram: gravity -x/|x|^3 and v to their scales, and the circul
   for (const auto& p : d.trail().points()) CHECK(p.p.norm() == Approx(1).epsilon(1e-7));
 }
 
-TEST_CASE("orbit diagram: on an eccentric orbit gravity's arrow shrinks as 1/r^2, one scale a run; circles of any radius",
+TEST_CASE("orbit diagram: on an eccentric orbit gravity's arrow shrinks as 1/r^2 at one scale, and circles of any radius are drawn",
           "[scene][diagram]") {
   // From x0 = 1 at 1.2 times the circular speed: out to r = 1.44/0.56.
   const Recorded r = record("orbit", {{"vy0", "1.2"}, {"periods", "3"}});
