@@ -3,10 +3,12 @@
 // of every kind for every built-in scene, whole run and windowed.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 
 #include "cli_support.hpp"
 #include "core/error.hpp"
+#include "scenes/panels/period_track.hpp"
 #include "scenes/panels/quantity_panels.hpp"
 #include "scenes/panels/series_panel.hpp"
 #include "scenes/config/scene_config.hpp"
@@ -107,6 +109,29 @@ TEST_CASE("the period panel steps at each crossing and holds the exact period da
   CHECK(spring.references.at(0).label == "2π/<i>ω</i>");
   auto damped_spring = quantity_panel("period", test::trajectory("vibration", {"b=0.1"})->info(), kBlue, "", kRed);
   CHECK(damped_spring.references.at(0).label == "2π/ω");
+}
+
+TEST_CASE("the period track shows the last period completed by each time, the crossing's own time included",
+          "[panels]") {
+  // Upward zeros at exactly t = 0, 1 and 3: a period of 1, then one of 2.
+  // Rows t, u, v: sin(2 pi t) up to t = 1, then sin(pi (t - 1)).
+  const double w1 = 2 * M_PI, w2 = M_PI;
+  const std::vector<std::array<double, 3>> rows = {
+      {-0.25, -1, 0}, {0, 0, w1},  {0.25, 1, 0}, {0.5, 0, -w1}, {0.75, -1, 0}, {1, 0, w1},
+      {1.5, 1, 0},    {2, 0, -w2}, {2.5, -1, 0}, {3, 0, w2},    {3.5, 1, 0}};
+  const std::vector<double> expected = {NAN, NAN, NAN, NAN, NAN, 1, 1, 1, 1, 2, 2};
+  scenes::PeriodTrack track(1, 2);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    INFO("t = " << rows[i][0]);
+    const double P = track.at(rows[i]);
+    if (std::isnan(expected[i])) CHECK(std::isnan(P));
+    else CHECK(P == Approx(expected[i]).margin(1e-12));
+  }
+  // Asked again afterwards, in any order (a later pass, a frame between steps).
+  CHECK(track.at(std::array<double, 3>{1, 0, w1}) == Approx(1).margin(1e-12));
+  CHECK(track.at(std::array<double, 3>{2.99, -0.03, w2}) == Approx(1).margin(1e-12));
+  CHECK(track.at(std::array<double, 3>{3, 0, w2}) == Approx(2).margin(1e-12));
+  CHECK(std::isnan(track.at(std::array<double, 3>{0.99, -0.06, w1})));
 }
 
 TEST_CASE("an unknown panel is refused with the closest name, on the command line too", "[panels]") {
