@@ -15,6 +15,12 @@ namespace vibra::scenes {
 /// Panels: theta (degrees), S and D against time.
 class PendulumDiagram final : public Diagram {
  public:
+  /// The room around the bob's path for the arrows, in units of L: the
+  /// longest arrow; longer forces are drawn clipped with a break mark.
+  static constexpr double kArrowRoom = 0.5;
+  /// The room of S > 0, toward the pivot: most of the wire.
+  static constexpr double kInwardRoom = 0.85;
+
   PendulumDiagram(PendulumDiagramOptions, SceneColors);
 
   void record(std::span<const double> row, WorldBox& world) override;
@@ -42,11 +48,6 @@ class PendulumDiagram final : public Diagram {
   /// Whether S < 0 anywhere in the run: the link pushes the bob (over the
   /// top), a rod in compression, a strut, not a wire.
   bool pushed_ = false;
-  /// The room around the bob's path for the arrows, in units of L: the
-  /// longest arrow; longer forces are drawn clipped with a break mark.
-  static constexpr double kArrowRoom = 0.5;
-  /// The room of S > 0, toward the pivot: most of the wire.
-  static constexpr double kInwardRoom = 0.85;
   ForceScale scale_;
   PendulumDiagramOptions options_;
   SceneColors colors_;

@@ -15,6 +15,7 @@
 #include "scenes/diagrams/diagram_registry.hpp"
 #include "scenes/diagrams/elastic_pendulum_diagram.hpp"
 #include "scenes/diagrams/orbit_diagram.hpp"
+#include "scenes/diagrams/pendulum/pendulum_diagram.hpp"
 #include "scenes/diagrams/oscillator_diagram.hpp"
 #include "scenes/diagrams/rlc_diagram.hpp"
 #include "scenes/diagrams/sliding_box_diagram.hpp"
@@ -322,6 +323,22 @@ TEST_CASE("elastic pendulum diagram: mg, the wire's force (L - beta)/(1 - beta) 
   const auto& trail = d.trail().points();
   REQUIRE(trail.size() > 10);
   CHECK(trail.front().p.x() == Approx(r.rows.front()[1]));
+}
+
+TEST_CASE("pendulum diagram: the largest pull of the wire is drawn as long as its room inside the wire, mg in proportion",
+          "[scene][diagram]") {
+  // Theta = 60 degrees, no drag: S = omega^2 + cos(theta) peaks at the
+  // bottom at 1 + 2 (1 - cos 60) = 2, which points inward, where it has
+  // kInwardRoom; every other force (mg = 1) gets kArrowRoom.
+  const Recorded r = record("pendulum", {{"Theta", "60"}, {"alpha", "0"}, {"steps_per_period", "400"}});
+  auto& d = as<PendulumDiagram>(r);
+  double S_max = 0;
+  for (const auto& row : r.rows) S_max = std::max(S_max, row[3]);
+  CHECK(S_max == Approx(2).epsilon(1e-4));
+  const double inward = PendulumDiagram::kInwardRoom, room = PendulumDiagram::kArrowRoom;
+  REQUIRE(S_max * room / inward > 1);  // S, not mg, sets the scale
+  CHECK(d.force_scale().per_force() == Approx(inward / S_max).epsilon(1e-12));
+  CHECK(d.force_scale().length(1) < room);  // mg drawn in proportion, unclipped
 }
 
 TEST_CASE("elastic pendulum diagram's panels: theta in degrees from the wire's direction, S/mg from its stretch",
