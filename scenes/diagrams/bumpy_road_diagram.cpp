@@ -91,7 +91,7 @@ void BumpyRoadDiagram::draw(render::Canvas& canvas, const render::WorldView& vie
   const Point a = axle(row);
   const double bottom = body_bottom(row);
   // The wheel first: the axle's bar, the spring and the damper go over it.
-  render::draw_wheel(canvas, view, a, vehicle_.R, -x / vehicle_.R, colors_.background, {colors_.wire, 2});
+  render::draw_wheel(canvas, view, a, vehicle_.R, wheel_turn(x), colors_.background, {colors_.wire, 2});
   render::SpringShape spring;
   spring.width = 0.45 * vehicle_.R, spring.lead = 0.18 * vehicle_.L, spring.coils = 6;
   const double strut = strut_offset();

@@ -50,6 +50,9 @@ class BumpyRoadDiagram final : public Diagram {
   /// Where the spring (left) and the damper (right) stand, from the axle's
   /// centre: outside the wheel, so that neither crosses its rim.
   double strut_offset() const { return 0.4 * body_width_; }
+  /// The wheel's turn at road position x, radians: rolling without slipping,
+  /// clockwise (negative) as the vehicle drives right.
+  double wheel_turn(double x) const { return -x / vehicle_.R; }
   /// The spring's force and (when b > 0) the damper's at a row, in world units.
   std::vector<DrawnForce> forces(std::span<const double> row) const;
 

@@ -45,7 +45,7 @@ render::CurrentArrow RlcDiagram::current_arrow(std::span<const double> row) cons
 }
 
 render::CapacitorGeometry RlcDiagram::capacitor(std::span<const double> row) const {
-  return render::capacitor_geometry(kCapacitorFrom, kCapacitorTo, kGap, kPlate, largest_q_ > 0 ? row[1] / largest_q_ : 0);
+  return render::capacitor_geometry(kCapacitorFrom, kCapacitorTo, kGap, kPlate, charge_share(row));
 }
 
 void RlcDiagram::draw_static(render::Canvas& canvas, const render::WorldView& view) const {
@@ -75,13 +75,12 @@ void RlcDiagram::draw_static(render::Canvas& canvas, const render::WorldView& vi
 }
 
 void RlcDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
-  const double q = largest_q_ > 0 ? row[1] / largest_q_ : 0;
   const render::CurrentArrow arrow = current_arrow(row);
   if (ghost()) {  // the current alone: one circuit's plates hold one charge
     render::draw_force_arrow(canvas, view, {arrow.from, arrow.to, colors_.bob, ""}, colors_.background);
     return;
   }
-  render::draw_capacitor(canvas, view, kCapacitorFrom, kCapacitorTo, kGap, kPlate, q, {colors_.wire, 2.2},
+  render::draw_capacitor(canvas, view, kCapacitorFrom, kCapacitorTo, kGap, kPlate, charge_share(row), {colors_.wire, 2.2},
                          colors_.gravity, colors_.bob);
   render::draw_force_arrow(canvas, view, {arrow.from, arrow.to, colors_.bob, "<i>I</i>", render::LabelPlace::beside,
                                           Point(0, 1)}, colors_.background);

@@ -28,6 +28,8 @@ class RlcDiagram final : public Diagram {
   render::CurrentArrow current_arrow(std::span<const double> row) const;
   /// The capacitor at a row: which plate is positive, how many signs.
   render::CapacitorGeometry capacitor(std::span<const double> row) const;
+  /// q over the run's largest |q| (0 when it never charges): the plates' tint and signs.
+  double charge_share(std::span<const double> row) const { return largest_q_ > 0 ? row[1] / largest_q_ : 0; }
   static constexpr double kLongestCurrent = 1.6;  ///< the arrow of the largest |I|, world units
 
  private:

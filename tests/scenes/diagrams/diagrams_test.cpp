@@ -214,6 +214,17 @@ TEST_CASE("bumpy road diagram: the wheel on the road, the body at L + u over the
   }
 }
 
+TEST_CASE("bumpy road diagram: the wheel rolls without slipping, clockwise as the vehicle drives right", "[scene][diagram]") {
+  // The rim point under the hub at x = 0 is, at x, at the hub plus
+  // R (sin turn, -cos turn): to first order in x it must not move.
+  const Recorded r = record("bumpy_road");
+  auto& d = as<BumpyRoadDiagram>(r);
+  const double R = model_parameters_of(r.config).number("R");
+  REQUIRE(R > 0);
+  for (double x : {1e-5, -1e-5, 3e-5}) CHECK(std::abs(x + R * std::sin(d.wheel_turn(x))) < 1e-8);
+  CHECK(d.wheel_turn(2 * M_PI * R) == Approx(-2 * M_PI));
+}
+
 TEST_CASE("bumpy road diagram: heights drawn F times larger, F chosen so that the motion shows and stays a vehicle",
           "[scene][diagram]") {
   // exaggerate = 4: the road and the body's u four times taller, R and L true, and the key says so.
