@@ -214,6 +214,30 @@ TEST_CASE("bumpy road diagram: the wheel on the road, the body at L + u over the
   }
 }
 
+TEST_CASE("bumpy road diagram: the view holds the body over the highest bump with room for its arrows above",
+          "[scene][diagram]") {
+  // The body's top is F (h + u) + R + L + 0.9 R; above it at least 0.4 R
+  // for the arrows; below, the road under the wheel.
+  using Settings = std::vector<std::pair<std::string, std::string>>;
+  const std::vector<Settings> cases = {{{"exaggerate", "1"}}, {{"exaggerate", "4"}}, {},  // automatic
+                                       {{"road", "sine"}, {"A", "0.8"}, {"k", "6e6"}, {"b", "6000"}, {"exaggerate", "1"}}};  // stiff, over bumps taller than the wheel
+  for (const Settings& settings : cases) {
+    INFO((settings.empty() ? "automatic" : settings.back().first + "=" + settings.back().second) << ", " << settings.size() << " keys");
+    const Recorded r = record("bumpy_road", settings);
+    auto& d = as<BumpyRoadDiagram>(r);
+    const double R = model_parameters_of(r.config).number("R"), F = d.exaggeration();
+    double road_span = 0;
+    for (const auto& row : r.rows) {
+      const auto view = d.view_at(row);
+      REQUIRE(view);
+      CHECK(view->max().y() - (d.body_bottom(row) + 0.9 * R) >= 0.4 * R - 1e-12);
+      CHECK(view->min().y() < F * row[4]);
+      road_span = std::max(road_span, std::abs(row[4]));
+    }
+    CHECK(F * road_span > 0.1 * R);  // the bumps are tall enough to matter
+  }
+}
+
 TEST_CASE("bumpy road diagram: the wheel rolls without slipping, clockwise as the vehicle drives right", "[scene][diagram]") {
   // The rim point under the hub at x = 0 is, at x, at the hub plus
   // R (sin turn, -cos turn): to first order in x it must not move.
