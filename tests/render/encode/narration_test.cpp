@@ -213,6 +213,47 @@ TEST_CASE("a shot's words are said sentence by sentence: split after . ! or ? an
   }
 }
 
+TEST_CASE("a shot's length: a card 3 s unless given, a speaking shot its speech and 0.75 s, a speed its own pace",
+          "[narration]") {
+  using vibra::scenes::kSpeechLead;
+  using vibra::scenes::kSpeechTail;
+  auto board = vibra::scenes::parse_storyboard("size = \"320x180\"\n"
+                                               "[[shot]]\ncard = \"A\"\n"                      // 1: the default
+                                               "[[shot]]\ncard = \"B\"\nseconds = 5\n"          // 2: as given
+                                               "[[shot]]\ncard = \"C\"\n"                      // 3: speaks
+                                               "[[shot]]\nscene = \"spring\"\n"                // 4: speaks
+                                               "[[shot]]\nscene = \"spring\"\nspeed = 2\n"      // 5: speaks, paced
+                                               "[[shot]]\nscene = \"bumpy_road\"\nvideo_speed = 2\n"  // 6: the same
+                                               "[[shot]]\nscene = \"spring\"\nframe_per_step = true\n",  // 7
+                                               "story.toml");
+  REQUIRE(board.shots.size() == 7);
+  CHECK(board.shots[0].seconds == 3.0);
+  CHECK(board.shots[1].seconds == 5.0);
+  for (int i : {4, 5, 6}) {
+    INFO("shot " << i + 1);
+    CHECK(board.shots[i].timed);  // paced by its own keys: speech does not set its length
+    CHECK_FALSE(board.shots[i].seconds);
+  }
+  CHECK_FALSE(board.shots[3].timed);
+  // Two seconds of speech for shots 3 to 6 (made by hand: no voice needed).
+  std::vector<vibra::scenes::ShotNarration> narration(7);
+  for (int i : {2, 3, 4, 5})
+    narration[i].said.push_back({kSpeechLead, {std::vector<float>(2 * vibra::render::AudioClip::kRate, 0.1f)}, "Words."});
+  vibra::scenes::fit_shots_to_speech(board, narration);
+  CHECK(board.shots[2].seconds == Approx(kSpeechLead + 2 + kSpeechTail));
+  CHECK(board.shots[3].seconds == Approx(kSpeechLead + 2 + kSpeechTail));
+  CHECK_FALSE(board.shots[4].seconds);  // its speed paces it; the speech is checked when placed
+  CHECK_FALSE(board.shots[5].seconds);
+  CHECK(kSpeechTail == 0.75);
+  // A pace and seconds together are refused, whichever name the speed has.
+  for (const char* pace : {"speed = 2", "video_speed = 2"}) {
+    INFO(pace);
+    CHECK_THROWS_WITH(vibra::scenes::parse_storyboard(
+                          std::string("[[shot]]\nscene = \"bumpy_road\"\nseconds = 3\n") + pace + "\n", "story.toml"),
+                      Catch::Contains("both set the shot's pace"));
+  }
+}
+
 TEST_CASE("loudness as BS.1770 measures it, and speech brought to -16 LUFS", "[narration]") {
   using namespace vibra::render;
   AudioClip tone{sine(997, 1.0, 3, AudioClip::kRate)};
