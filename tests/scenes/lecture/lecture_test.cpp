@@ -187,6 +187,8 @@ TEST_CASE("bad storyboards: one line naming the file, shot and key, exit 2, noth
       {head, "shot: no shots"},
       {"size = \"320x\"\n[[shot]]\ncard = \"A\"\n", "story.toml:1: size: size '320x' is not WxH"},
       {"fps = 0\n[[shot]]\ncard = \"A\"\n", "story.toml:1: fps: must be a whole number"},
+      {"fps = 29.97\n[[shot]]\ncard = \"A\"\n", "story.toml:1: fps: must be a whole number of frames per second, 1..240"},
+      {"fps = 241\n[[shot]]\ncard = \"A\"\n", "story.toml:1: fps: must be a whole number of frames per second, 1..240"},
       {head + "[[shot]]\ncard = \"A\"\nseconds = \"long\"\n", "shot 1, seconds: must be a number"},
       {head + "[[shot\n", "story.toml:3:"},
       // Cards are typeset: bad LaTeX is refused at its line, before any work.
