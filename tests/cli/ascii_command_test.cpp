@@ -85,3 +85,14 @@ TEST_CASE("ascii: bad options are one-line errors", "[ascii-command]") {
     check_refusal(r, "");
   }
 }
+
+TEST_CASE("ascii: a forced run, with no energy bound, gets a default range that holds its start", "[ascii-command]") {
+  // resonance: u(0) = I = 3 and a forcing of amplitude 1: no bound from the
+  // energy, so the range is the start's |u|, and u = 3 is drawn, not appended.
+  const auto r = run_vibra("ascii resonance --set I=3 --set beta=0.5 --set periods=1 --width 40");
+  REQUIRE(r.exit_code == 0);
+  const std::string first = r.out.substr(0, r.out.find('\n'));
+  INFO(first);
+  CHECK(first.find('*') != std::string::npos);
+  CHECK(first.find("E+") == std::string::npos);
+}
