@@ -36,9 +36,10 @@ const std::vector<std::string> kCardKeys = {"card", "equation", "seconds", "titl
                                            "then", "intro"};  // then, intro: presenting (shot_ending.hpp)
 const std::vector<std::string> kShotKeys = {"scene", "set", "seconds", "notes", "title",
                                            "then", "intro"};
-/// The scene keys that pace a shot as `seconds` would: one of them at most.
-/// video_speed is speed's name for models with a key speed of their own.
-const std::vector<std::string> kPaceKeys = {"speed", "video_speed", "frame_per_step"};
+/// The scene keys that pace a shot by a speed, as `seconds` would by a
+/// length: not both. video_speed is speed's name for models with a key
+/// speed of their own. (frame_per_step paces too, when true.)
+const std::vector<std::string> kSpeedKeys = {"speed", "video_speed"};
 
 /// Where a value sits: "story.toml:12: shot 2, key" (line 0: unknown).
 struct Place {
@@ -168,8 +169,8 @@ SceneConfig shot_scene(const std::string& name, const std::string& folder, const
 Shot scene_shot(const toml::table& table, const std::string& file, const std::string& folder, int number) {
   Shot shot;
   shot.number = number;
-  shot.timed = table.contains("seconds") ||
-               std::any_of(kPaceKeys.begin(), kPaceKeys.end(), [&](const std::string& key) { return table.contains(key); });
+  shot.timed = table.contains("seconds") || table.contains("frame_per_step") ||
+               std::any_of(kSpeedKeys.begin(), kSpeedKeys.end(), [&](const std::string& key) { return table.contains(key); });
   const toml::node* scene = table.get("scene");
   const Place scene_at{file, number, "scene", scene ? int(scene->source().begin.line) : 0};
   if (!scene)
@@ -213,9 +214,9 @@ Shot scene_shot(const toml::table& table, const std::string& file, const std::st
     if (s.key != "model") apply_setting(shot.scene, s);
   for (const toml::table* set : model_keys)
     for (const Setting& s : table_settings(*set, file, where)) apply_setting(shot.scene, s);
-  for (const char* speed : {"speed", "video_speed"})
+  for (const std::string& speed : kSpeedKeys)
     if (shot.seconds && table.get(speed))
-      Place{file, number, "seconds", 0}.refuse(std::string("and ") + speed + " both set the shot's pace: give one of them");
+      Place{file, number, "seconds", 0}.refuse("and " + speed + " both set the shot's pace: give one of them");
   if (shot.seconds && shot.scene.frame_per_step)
     Place{file, number, "seconds", 0}.refuse("and frame_per_step both set the shot's pace: give one of them");
   if (shot.title.empty()) shot.title = shot.scene.name + (shot.scene.compare.empty() ? "" : ": " + shot.scene.compare);

@@ -18,13 +18,13 @@ const std::vector<SchemeInfo>& all_schemes() {
        R"(u^{n+1} = 2u^n - u^{n-1} + \Delta t^2 a(u^n, \frac{u^n - u^{n-1}}{\Delta t}, t_n))"},
       {Scheme::euler_cromer, "euler-cromer", 1, "Euler-Cromer / semi-implicit Euler (1.54)-(1.55)", false,
        R"(v^{n+1} = v^n + \Delta t\, a^n \\ u^{n+1} = u^n + \Delta t\, v^{n+1})"},
-      {Scheme::euler_cromer_half, "euler-cromer-half", 2, "Euler-Cromer with the half-step start v^1 = V + dt/2 a (order 1 with damping)", false,
+      {Scheme::euler_cromer_half, "euler-cromer-half", 2, "Euler-Cromer with the half-step start v^1 = V + dt/2 a", false,
        R"(v^{n+1/2} = v^{n-1/2} + \Delta t\, a^n \\ u^{n+1} = u^n + \Delta t\, v^{n+1/2} \\ v^{1/2} = V + \frac{\Delta t}{2} a^0)"},
       {Scheme::staggered, "staggered", 2, "staggered mesh / Stormer-Verlet (1.67)-(1.70)", false,
        R"(v^{n+1/2} = v^{n-1/2} + \Delta t\, a^n \\ u^{n+1} = u^n + \Delta t\, v^{n+1/2})"},
       {Scheme::velocity_verlet, "velocity-verlet", 2, "velocity Verlet (Problem 1.6)", false,
        R"(u^{n+1} = u^n + \Delta t\, v^n + \frac{1}{2}\Delta t^2 a^n \\ v^{n+1} = v^n + \frac{1}{2}\Delta t(a^n + a^{n+1}))"},
-      {Scheme::pefrl, "pefrl", 4, "PEFRL 4th-order symplectic splitting (1.107)-(1.118) (order 1 with damping)", false,
+      {Scheme::pefrl, "pefrl", 4, "PEFRL 4th-order symplectic splitting (1.107)-(1.118)", false,
        R"(u_1 = u^n + \xi\Delta t\, v^n,\; v_1 = v^n + \frac{1 - 2\lambda}{2}\Delta t\, a(u_1) \\ \ldots\; u^{n+1} = u_4 + \xi\Delta t\, v^{n+1})"},
       {Scheme::rk2, "rk2", 2, "2nd-order Runge-Kutta (midpoint)", false,
        R"(k_1 = f(y^n),\; k_2 = f(y^n + \frac{\Delta t}{2}k_1) \\ y^{n+1} = y^n + \Delta t\, k_2)"},
@@ -58,6 +58,12 @@ int damped_order(const SchemeInfo& info) {
   for (Scheme s : kFirstOrderWithDamping)
     if (info.scheme == s) return 1;
   return info.order;
+}
+
+std::string summary_with_damped_order(const SchemeInfo& info) {
+  const int damped = damped_order(info);
+  return std::string(info.summary) +
+         (damped == info.order ? "" : " (order " + std::to_string(damped) + " with damping)");
 }
 
 const SchemeInfo& scheme_info(Scheme scheme) {

@@ -60,6 +60,8 @@ const std::vector<SchemeInfo>& all_schemes();
 /// dashpot, drag): lower than its order where that force is taken at a
 /// velocity behind the step.
 int damped_order(const SchemeInfo& info);
+/// The summary as help lists it: with the damped order where it is lower.
+std::string summary_with_damped_order(const SchemeInfo& info);
 const SchemeInfo& scheme_info(Scheme);
 /// Throws UsageError naming the valid schemes.
 Scheme parse_scheme(std::string_view name);

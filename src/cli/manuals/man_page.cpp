@@ -139,7 +139,7 @@ std::string schemes_section() {
   std::vector<std::pair<std::string, std::string>> items;
   for (const auto& scheme : all_schemes())
     items.emplace_back(std::string(scheme.name),
-                       "order " + std::to_string(scheme.order) + ": " + std::string(scheme.summary));
+                       "order " + std::to_string(scheme.order) + ": " + summary_with_damped_order(scheme));
   return ".SH SCHEMES\nChosen with \\fB\\-\\-set scheme=\\fR\\fINAME\\fR.\n" + named_items(items);
 }
 

@@ -17,7 +17,7 @@ std::string models_help() {
   out += "\nSchemes (--set scheme=NAME):\n";
   for (const auto& scheme : all_schemes()) {
     std::snprintf(line, sizeof line, "  %-18s order %d  %s\n", std::string(scheme.name).c_str(), scheme.order,
-                  std::string(scheme.summary).c_str());
+                  summary_with_damped_order(scheme).c_str());
     out += line;
   }
   return out;
