@@ -239,13 +239,18 @@ def judge_sample(args, by_folder, ledger, judge):
     return results
 
 
+def ledger_path(args, work):
+    """Where the verdicts are kept: --ledger's file, else beside the copy."""
+    return getattr(args, "ledger", None) or work / "sample-verdicts.jsonl"
+
+
 def run_sample(args, tree, build_ok, suite, logs):
     """The --sample run; exit status 0 when no mutant survived."""
     restore_on_signals()
     equivalents = load_equivalents()
     by_folder = all_sites(tree, args.headers, equivalents)
     total = sum(len(s) for s in by_folder.values())
-    ledger = Ledger(logs.parent / "sample-verdicts.jsonl", args.seed)
+    ledger = Ledger(ledger_path(args, logs.parent), args.seed)
     print(f"mutants: {total} sites in {', '.join(SOURCE_FOLDERS)} ({len(equivalents)} triaged as equivalent); "
           f"sampling {args.sample} with seed {args.seed}; {len(ledger.judged)} judged before ({ledger.path})")
     revision, tree_hash = (subprocess.run(["git", "-C", str(tree), "rev-parse", "--short", rev], capture_output=True,

@@ -64,6 +64,14 @@ class Verdicts(unittest.TestCase):
             self.assertEqual(Ledger(path, 1).verdict("s")["detail"], "by a new test")
 
 
+    def test_the_ledger_is_the_one_given_else_beside_the_copy(self):
+        given = argparse.Namespace(ledger=Path("/repo/scripts/mutants-verdicts.jsonl"))
+        self.assertEqual(mutant_sample.ledger_path(given, Path("/tmp/copy")), given.ledger)
+        for none_given in (argparse.Namespace(ledger=None), sample_args(1)):
+            self.assertEqual(mutant_sample.ledger_path(none_given, Path("/tmp/copy")),
+                             Path("/tmp/copy/sample-verdicts.jsonl"))
+
+
 class ResumedRun(unittest.TestCase):
     BY_FOLDER = {"render": [Site(f"r{i}") for i in range(6)] + [Site("rs")],
                  "scenes": [Site(f"c{i}") for i in range(6)] + [Site("cs")]}
