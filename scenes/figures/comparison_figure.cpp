@@ -129,7 +129,7 @@ std::vector<std::vector<double>> feed_runs(ComparisonPlot& plot) {
       rows_inside_step(run, last[member][0], inside_step_spacing(run.info().mesh, plot.width), between, feed);
     feed(row);
     last[member].assign(row.begin(), row.end());
-    if ((++samples & 0xffff) == 0) render::throw_if_stop_requested();
+    poll_stop(++samples);
   });
   return last;
 }

@@ -87,7 +87,7 @@ void feed_trajectory(TrajectoryPlot& plot, Trajectory& trajectory) {
     feed(row);
     if (plot.mesh) plot.mesh->observe_step(row);
     previous = trajectory.t();
-    if ((trajectory.index() & 0xffff) == 0) render::throw_if_stop_requested();
+    poll_stop(trajectory.index());
   } while (trajectory.advance());
 }
 }  // namespace

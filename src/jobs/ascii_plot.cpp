@@ -31,7 +31,7 @@ double largest_value(Trajectory& run, const std::vector<int>& columns, const std
     for (int c : columns)
       if (std::isfinite(row[c])) largest = std::max(largest, std::abs(row[c]));
     if (exact) largest = std::max(largest, std::abs(exact(row[0])));
-    if ((run.index() & 0xffff) == 0) render::throw_if_stop_requested();
+    poll_stop(run.index());
   } while (run.index() < kPrePassSteps && run.advance());
   return largest;
 }

@@ -85,7 +85,7 @@ void write_figure_page(const PlotRequest& r, const std::filesystem::path& file) 
   do {
     trajectory->row(row);
     collector.observe(*trajectory, row);
-    if ((trajectory->index() & 0xffff) == 0) render::throw_if_stop_requested();
+    poll_stop(trajectory->index());
   } while (trajectory->advance());
   render::LecturePage page;
   page.title = "vibra: " + r.model;

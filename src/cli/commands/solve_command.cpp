@@ -76,7 +76,7 @@ void run_solve(const SolveOptions& o) {
         }
         csv.write(row);
       }
-      if ((trajectory->index() & 0xffff) == 0) render::throw_if_stop_requested();
+      poll_stop(trajectory->index());
     } while (!csv.failed() && trajectory->advance());
     if (!csv.flush()) {
       if (!file) render::standard_output_failed(csv.error());
