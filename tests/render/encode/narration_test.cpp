@@ -269,6 +269,20 @@ TEST_CASE("loudness as BS.1770 measures it, and speech brought to -16 LUFS", "[n
   CHECK(speak("Each swing is lower.", "kal").seconds() != Approx(speak("Each swing is lower.", "awb").seconds()));
 }
 
+TEST_CASE("loudness gates blocks of 400 ms that start every 100 ms (BS.1770's 75% overlap)", "[narration]") {
+  using namespace vibra::render;
+  // 100 ms of a full-scale 997 Hz sine at 0.45 s in 1 s of silence. Of the
+  // seven blocks (starting at 0, 0.1, ..., 0.6 s) five hold the tone, for
+  // 1/8, 1/4, 1/4, 1/4 and 1/8 of their length: all pass both gates and
+  // their mean power is 1/5 of the tone's, so the loudness is the tone's
+  // -3.01 LUFS plus 10 log10(1/5) = -6.99 dB. Blocks every 200 ms would
+  // hold it for 1/4 twice: -9.03.
+  AudioClip burst{std::vector<float>(AudioClip::kRate)};
+  const std::vector<float> tone = sine(997, 1.0, 0.1, AudioClip::kRate);
+  std::copy(tone.begin(), tone.end(), burst.samples.begin() + AudioClip::kRate * 45 / 100);
+  CHECK(integrated_loudness(burst) == Approx(-10.0).margin(0.05));
+}
+
 TEST_CASE("shots timed to their speech: seconds too short refused with both durations, or stretched",
           "[narration]") {
   ScratchDirectory dir;
