@@ -24,16 +24,37 @@ std::string escaped(std::string_view text) {
   return out;
 }
 
+/// The characters a UTF-8 decoder would show: each byte that starts one,
+/// and each stray continuation byte (shown as U+FFFD) on its own.
+std::size_t utf8_characters(const std::string& text) {
+  std::size_t characters = 0;
+  int continuations_due = 0;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if ((byte & 0xc0) == 0x80 && continuations_due > 0) {
+      --continuations_due;
+      continue;
+    }
+    ++characters;
+    continuations_due = byte >= 0xf0 ? 3 : byte >= 0xe0 ? 2 : byte >= 0xc0 ? 1 : 0;
+  }
+  return characters;
+}
+
 /// Cuts `text` to about `limit` characters, keeping its head and tail, at
 /// UTF-8 character boundaries.
 std::string cut_middle(const std::string& text, std::size_t limit, bool say_length) {
   if (text.size() <= limit) return text;
+  // Back to the byte that starts the character, at most 3 bytes back (the
+  // longest UTF-8 character is 4): text that is not UTF-8 may hold a run of
+  // continuation bytes as long as itself, and the cut must stay near limit.
   auto boundary = [&](std::size_t at) {
-    while (at > 0 && at < text.size() && (static_cast<unsigned char>(text[at]) & 0xc0) == 0x80) --at;
+    for (int back = 0; back < 3 && at > 0 && at < text.size() && (static_cast<unsigned char>(text[at]) & 0xc0) == 0x80;
+         ++back)
+      --at;
     return at;
   };
-  std::size_t characters = 0;  // UTF-8: the bytes that start a character
-  for (const char c : text) characters += (static_cast<unsigned char>(c) & 0xc0) != 0x80;
+  const std::size_t characters = utf8_characters(text);
   const std::string note = say_length ? "... (" + std::to_string(characters) + " characters) ..." : " ... ";
   const std::size_t keep = limit > note.size() + 8 ? limit - note.size() : 8;
   const std::size_t head = boundary(keep * 2 / 3), tail = boundary(text.size() - (keep - keep * 2 / 3));

@@ -32,3 +32,17 @@ TEST_CASE("a long message keeps its start (the problem) and its end (the fix) on
   CHECK(line.substr(line.size() - 10) == "maller one");
   CHECK(line.find(" ... ") != std::string::npos);
 }
+
+TEST_CASE("text that is not UTF-8 is cut near the limit too", "[quoted]") {
+  // A run of continuation bytes with no byte to start them (as a fuzzer
+  // typed): the cut looks back at most 3 bytes for a character's start,
+  // so the line stays within the limit instead of keeping the whole run.
+  const std::string message = "bad value " + std::string(600, '\x84') + " give a smaller one";
+  const std::string line = one_line_message(message, 240);
+  CHECK(line.size() <= 240);
+  CHECK(line.rfind("bad value ", 0) == 0);
+  CHECK(line.substr(line.size() - 10) == "maller one");
+  const std::string quoted = quoted_value(std::string(1000, '\xbf'));
+  CHECK(quoted.size() <= 40);
+  CHECK_THAT(quoted, Catch::Contains("(1000 characters)"));  // each stray byte one, as a decoder shows it
+}
