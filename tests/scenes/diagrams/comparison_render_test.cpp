@@ -188,6 +188,24 @@ TEST_CASE("a run that stays bounded stays in view: one that grows leaves it, one
   CHECK(overflowing.early_end(1) == EarlyEnd::none);
 }
 
+TEST_CASE("a run whose swings end three times as wide as they start leaves the view, the calm one has no limit",
+          "[comparison]") {
+  // Forward Euler multiplies the amplitude by sqrt(1 + (w dt)^2) a step: at
+  // 100 steps a period over 7 periods, the largest swing of the last quarter
+  // is about that factor to the 525th power (three quarters of the 700
+  // steps) times the first quarter's: 2.8, over the twice that marks growth
+  // without bound, and Crank-Nicolson keeps |u| <= 1 (growth 1).
+  const double growth = std::pow(1 + std::pow(2 * M_PI / 100, 2), 0.5 * 525);
+  REQUIRE(growth > 2.5);
+  REQUIRE(growth < 3.2);
+  Comparison c(find_model("undamped"), settings("undamped", {"steps_per_period=100", "periods=7"}),
+               parse_comparison("scheme=forward-euler,crank-nicolson"));
+  c.set_view_limits();
+  // It leaves at twice the largest |u| of the bounded runs and of what energy allows: 2 I.
+  CHECK(c.escape_limit(0) == Approx(2.0).epsilon(1e-6));
+  CHECK(std::isinf(c.escape_limit(1)));
+}
+
 TEST_CASE("each member's ghost is drawn at its own state", "[comparison]") {
   // t = 0: the bobs at 10 and 60 degrees.
   const DrawnScene d = drawn_at_start("pendulum", {{"compare", "Theta=10,60"}, {"layout", "fbd"}, {"alpha", "0"},
