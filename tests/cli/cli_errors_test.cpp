@@ -104,6 +104,10 @@ TEST_CASE("render refuses bad input with one line and exit code 2", "[cli]") {
       {"render undamped --layout fbd -o OUT.mp4", "no free-body diagram"},
       {"render --window-mode sliding -o OUT.mp4", "drawing, movement, jumps"},
       {"render --window=-2 -o OUT.mp4", "window=-2 must be a positive number"},
+      // 0 is outside a range open at 0 (value_ranges.cpp): refused with the range, not drawn.
+      {"render --window 0.0 -o OUT.mp4", "window=0.0 must be a positive number at most 1e+15"},
+      {"render spring_dashpot --set drag_magnification=0 -o OUT.mp4",
+       "drag_magnification=0 must be a positive number at most 1000000"},
       {"render --frames-player -o OUT.mp4", "--frames-player"},
       {"render --codec h265 -o OUT.mp4", "unknown video codec 'h265'"},
       {"render --crf 99 -o OUT.mp4", "--crf: 99 must be a whole number 0..63"},
