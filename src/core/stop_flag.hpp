@@ -49,6 +49,7 @@ void quiet_long_work(bool quiet);
 /// row, the sanitizers), so this is a stop within a second of Ctrl-C for all
 /// of them, and the look (a load and a compare) is nothing beside a step.
 inline constexpr long long kStopPollEvery = 1024;
+static_assert((kStopPollEvery & (kStopPollEvery - 1)) == 0, "poll_stop masks the counter: a power of two");
 
 /// For hot loops: looks at the flag every kStopPollEvery-th value of
 /// `counter`, so a loop of tiny steps pays one compare per step; there also
