@@ -11,7 +11,7 @@
 namespace vibra::render {
 
 namespace {
-constexpr double kTickFont = 15, kLabelFont = 19;
+constexpr double kPanelTickFont = 15, kPanelLabelFont = 19;
 
 double nice_step(double span, int target) {
   const double raw = span / std::max(1, target);
@@ -83,7 +83,7 @@ Point PlotPanel::to_pixel(double x, double y) const {
 
 void PlotPanel::draw_axes(Canvas& canvas, const std::string& y_label, const std::string& x_label) const {
   const Stroke grid{palette::grid, 1};
-  const TextStyle ticks{kTickFont, palette::ink.with_alpha(0.8)};
+  const TextStyle ticks{kPanelTickFont, palette::ink.with_alpha(0.8)};
   // Tiny or huge ranges (a radius drifting by 1e-9) label their ticks in a
   // power of ten and an offset that the axis's label states once.
   const int y_target = tick_target(canvas, true), x_target = tick_target(canvas, false);
@@ -107,11 +107,11 @@ void PlotPanel::draw_axes(Canvas& canvas, const std::string& y_label, const std:
   canvas.stroke();
   // The y label sits above the frame's top-left corner: readable without
   // rotation, clear of the curve, and it does not steal width from the plot.
-  draw_text(canvas, {area_.x, area_.y - 3 * scale_}, y_title(y_label, y_target), {kLabelFont, palette::ink},
+  draw_text(canvas, {area_.x, area_.y - 3 * scale_}, y_title(y_label, y_target), {kPanelLabelFont, palette::ink},
             Anchor::bottom_left);
   // The x label sits at the end of the axis, inside the frame, as in textbooks.
   if (!x_label.empty()) {
-    TextStyle style{kLabelFont, palette::ink};
+    TextStyle style{kPanelLabelFont, palette::ink};
     style.halo = true;
     draw_text(canvas, {area_.x + area_.w - 6 * scale_, area_.y + area_.h - 4 * scale_},
               with_common(x_label, x_labels.common), style,
@@ -164,7 +164,7 @@ int PlotPanel::tick_target(Canvas& canvas, bool vertical) const {
   // The most ticks (up to 5 on y, 6 on x) whose labels keep apart: a quarter
   // of a line between them on y, a gap beside the widest label on x. A small
   // panel (320x180) gets fewer ticks rather than labels written over each other.
-  const TextStyle style{kTickFont};
+  const TextStyle style{kPanelTickFont};
   const double lo = vertical ? y0_ : x0_, hi = vertical ? y1_ : x1_;
   const double pixels = vertical ? area_.h : area_.w;
   const int most = vertical ? 5 : 6;
@@ -191,7 +191,7 @@ std::string PlotPanel::y_title(const std::string& y_label, int y_target) const {
 
 void PlotPanel::draw_legend(Canvas& canvas, const std::vector<LegendItem>& entries, const std::string& y_label,
                             bool margin_below_free) const {
-  const TextStyle style{kTickFont, palette::ink};
+  const TextStyle style{kPanelTickFont, palette::ink};
   const double sample = 22 * scale_, gap = 6 * scale_, between = 14 * scale_;
   double width = 0, height = 0;
   for (const LegendItem& item : entries) {
@@ -200,7 +200,7 @@ void PlotPanel::draw_legend(Canvas& canvas, const std::vector<LegendItem>& entri
     height = std::max(height, size.y());
   }
   width -= between;
-  const Point title = text_size(canvas, y_title(y_label, tick_target(canvas, true)), {kLabelFont, palette::ink});
+  const Point title = text_size(canvas, y_title(y_label, tick_target(canvas, true)), {kPanelLabelFont, palette::ink});
   // Outside the plot where there is room, over no data: the title row,
   // right-aligned after the y label; else the margin under the plot when no
   // tick labels take it (a panel stacked above another); else, as a last

@@ -8,14 +8,13 @@
 #include "scenes/diagrams/forces/broken_force.hpp"
 #include "scenes/diagrams/forces/drawn_force.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
+#include "scenes/diagrams/planar_row.hpp"
 
 namespace vibra::scenes {
 
 namespace {
 const Point kPivot(0, 1);
 constexpr double kLongestArrow = 0.45;
-Point position(std::span<const double> row) { return Point(row[1], row[2]); }
-Point velocity(std::span<const double> row) { return Point(row[3], row[4]); }
 }  // namespace
 
 ElasticPendulumDiagram::ElasticPendulumDiagram(double beta, double gamma, SceneColors colors)
@@ -30,21 +29,21 @@ std::vector<PanelSpec> ElasticPendulumDiagram::panels() const {
 }
 
 double ElasticPendulumDiagram::wire_force(std::span<const double> row) const {
-  const double L = (position(row) - kPivot).norm();
+  const double L = (planar_position(row) - kPivot).norm();
   return (L - beta_) / (1 - beta_);
 }
 
 void ElasticPendulumDiagram::record(std::span<const double> row, WorldBox& world) {
-  trail_.add(row[0], position(row));
+  trail_.add(row[0], planar_position(row));
   record_other(row, world);
 }
 
 void ElasticPendulumDiagram::record_other(std::span<const double> row, WorldBox&) {
-  bodies_.extend(position(row));
-  support_.see(position(row), kBob);
+  bodies_.extend(planar_position(row));
+  support_.see(planar_position(row), kBob);
   scale_.see(1);
   scale_.see(wire_force(row));
-  scale_.see(gamma_ / (beta_ * beta_) * velocity(row).squaredNorm());
+  scale_.see(gamma_ / (beta_ * beta_) * planar_velocity(row).squaredNorm());
 }
 
 void ElasticPendulumDiagram::finish_recording(WorldBox& world) {
@@ -60,7 +59,7 @@ void ElasticPendulumDiagram::finish_recording(WorldBox& world) {
 }
 
 std::array<Arrow, 3> ElasticPendulumDiagram::force_arrows(std::span<const double> row) const {
-  const Point p = position(row), v = velocity(row);
+  const Point p = planar_position(row), v = planar_velocity(row);
   const Point toward_pivot = (kPivot - p).normalized();
   const double per = scale_.per_force();
   const Point drag = -gamma_ / (beta_ * beta_) * v.norm() * v;
@@ -72,7 +71,7 @@ void ElasticPendulumDiagram::draw_static(render::Canvas& canvas, const render::W
 }
 
 void ElasticPendulumDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
-  const Point p = position(row);
+  const Point p = planar_position(row);
   trail_.draw(canvas, view, row[0], kFade, colors_.bob, 1.8, p);
   render::SpringShape spring;
   spring.width = 0.07, spring.lead = 0.08, spring.coils = 12;

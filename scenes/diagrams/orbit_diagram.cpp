@@ -4,16 +4,15 @@
 #include "render/draw/annotations.hpp"
 #include "render/draw/elements/shapes.hpp"
 #include "scenes/diagrams/diagram_registry.hpp"
+#include "scenes/diagrams/planar_row.hpp"
 #include "scenes/config/scene_config.hpp"
 
 namespace vibra::scenes {
 
 namespace {
-constexpr double kStar = 0.09, kPlanet = 0.045, kLongestArrow = 0.45;
-Point position(std::span<const double> row) { return Point(row[1], row[2]); }
-Point velocity(std::span<const double> row) { return Point(row[3], row[4]); }
+constexpr double kStar = 0.09, kPlanet = 0.045, kLongestOrbitArrow = 0.45;
 Point gravity(std::span<const double> row) {
-  const Point x = position(row);
+  const Point x = planar_position(row);
   const double r = x.norm();
   return -x / (r * r * r);
 }
@@ -32,33 +31,33 @@ std::vector<PanelSpec> OrbitDiagram::panels() const {
   return {{"<i>x</i>", {{"", colors_.bob, [](std::span<const double> r) { return r[1]; }}}},
           {"<i>y</i>", {{"", colors_.bob, [](std::span<const double> r) { return r[2]; }}}},
           {"<i>r</i> − <i>r</i>(0)",
-           {{"", colors_.bob, [this](std::span<const double> r) { return position(r).norm() - start_radius_; }}}}};
+           {{"", colors_.bob, [this](std::span<const double> r) { return planar_position(r).norm() - start_radius_; }}}}};
 }
 
 void OrbitDiagram::record(std::span<const double> row, WorldBox& world) {
   if (first_) {
     // Circular when the speed is the circular one, 1/sqrt(r), across the radius.
-    const Point x = position(row), v = velocity(row);
+    const Point x = planar_position(row), v = planar_velocity(row);
     const double r = x.norm();
     start_radius_ = r;
     if (r > 0 && std::abs(x.dot(v)) < 1e-12 * r * v.norm() && std::abs(v.squaredNorm() * r - 1) < 1e-12)
       circle_radius_ = r;
     first_ = false;
   }
-  trail_.add(row[0], position(row));
+  trail_.add(row[0], planar_position(row));
   record_other(row, world);
 }
 
 void OrbitDiagram::record_other(std::span<const double> row, WorldBox&) {
-  bodies_.extend(position(row));
+  bodies_.extend(planar_position(row));
   gravity_.see(gravity(row).norm());
-  speed_.see(velocity(row).norm());
+  speed_.see(planar_velocity(row).norm());
 }
 
 void OrbitDiagram::finish_recording(WorldBox& world) {
-  gravity_.set_longest(kLongestArrow);
-  speed_.set_longest(kLongestArrow);
-  const Point reach(kLongestArrow + 0.12, kLongestArrow + 0.12);
+  gravity_.set_longest(kLongestOrbitArrow);
+  speed_.set_longest(kLongestOrbitArrow);
+  const Point reach(kLongestOrbitArrow + 0.12, kLongestOrbitArrow + 0.12);
   if (!bodies_.isEmpty()) world.extend(bodies_.min() - reach), world.extend(bodies_.max() + reach);
   world.extend(Point(-kStar - 0.1, -kStar - 0.1));
   world.extend(Point(kStar + 0.1, kStar + 0.1));
@@ -67,8 +66,8 @@ void OrbitDiagram::finish_recording(WorldBox& world) {
 }
 
 std::array<Arrow, 2> OrbitDiagram::arrows(std::span<const double> row) const {
-  const Point x = position(row);
-  return {Arrow{x, x + gravity_.per_force() * gravity(row)}, Arrow{x, x + speed_.per_force() * velocity(row)}};
+  const Point x = planar_position(row);
+  return {Arrow{x, x + gravity_.per_force() * gravity(row)}, Arrow{x, x + speed_.per_force() * planar_velocity(row)}};
 }
 
 void OrbitDiagram::draw_static(render::Canvas& canvas, const render::WorldView& view) const {
@@ -79,7 +78,7 @@ void OrbitDiagram::draw_static(render::Canvas& canvas, const render::WorldView& 
 
 void OrbitDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
   // Without a window the whole run's path stays, fading only slightly.
-  const Point x = position(row);
+  const Point x = planar_position(row);
   trail_.draw(canvas, view, row[0], window_ > 0 ? window_ : 2 * t_end_ + 1, colors_.bob, 1.6, x);
   render::draw_circle(canvas, view, x, kPlanet, colors_.bob, {colors_.wire, 1.4});
   if (ghost()) return;

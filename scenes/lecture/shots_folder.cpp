@@ -36,7 +36,7 @@ const std::vector<std::pair<char, const char*>> kLatexText = {
     {'\\', "\\textbackslash{}"}, {'{', "\\{"}, {'}', "\\}"}, {'$', "\\$"}, {'&', "\\&"}, {'#', "\\#"},
     {'^', "\\^{}"}, {'_', "\\_"}, {'%', "\\%"}, {'~', "\\~{}"}};
 
-std::string seconds_text(double s) {
+std::string seconds_cell(double s) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", s);
   return text;
@@ -52,7 +52,7 @@ std::string index_md(const std::string& title, const std::string& storyboard, co
     const std::string stem = shot_file_stem(shot, shots.size()), video = stem + shot.video.extension().string();
     out += "| " + std::to_string(shot.number) + " | " + escaped(shot.title, kMarkdownCell) + " | [" + video + "](" +
            video + ") | ![shot " + std::to_string(shot.number) + "](" + stem + ".png) | " +
-           seconds_text(shot.seconds) + " | " + shot_end_word(shot.ending.then) + " |\n";
+           seconds_cell(shot.seconds) + " | " + shot_end_word(shot.ending.then) + " |\n";
   }
   return out;
 }

@@ -13,7 +13,7 @@ namespace vibra::scenes {
 
 namespace {
 // 720p pixels, scaled with the canvas as labels are.
-constexpr double kLectureTitleSize = 18, kTextSize = 46, kEquationSize = 34;
+constexpr double kLectureTitleSize = 18, kTextSize = 46, kCardEquationSize = 34;
 
 /// Rich text set at `size`, broken onto lines `width` pixels wide, and made
 /// smaller (down to a third) while it is taller than `most_height`.
@@ -50,7 +50,7 @@ void draw_title_card(render::Canvas& canvas, const TitleCard& card) {
   const bool both = !card.text.empty() && !card.equation.empty();
   std::optional<render::MathBox> text, equation;
   if (!card.text.empty()) text = fitted_text(canvas, card.text, kTextSize, true, 0.9 * w, (both ? 0.4 : 0.7) * h);
-  if (!card.equation.empty()) equation = fitted_formula(canvas, card.equation, kEquationSize, 0.9 * w);
+  if (!card.equation.empty()) equation = fitted_formula(canvas, card.equation, kCardEquationSize, 0.9 * w);
   // The text, a rule and the equation, as one block centred on the card.
   const double gap = 18 * s;
   const double block = (text ? text->height() : 0) + (equation ? equation->height() : 0) + (both ? 2 * gap : 0);

@@ -14,8 +14,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -23,6 +21,7 @@
 #include "png_compare.hpp"
 #include "test_support.hpp"
 
+using vibra::test::read_file;
 using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;
 namespace fs = std::filesystem;
@@ -33,13 +32,6 @@ namespace {
 std::uint64_t fnv1a(const std::string& bytes, std::uint64_t hash = 14695981039346656037ull) {
   for (unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
   return hash;
-}
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // Every frame of a render, in name order, hashed as one stream.

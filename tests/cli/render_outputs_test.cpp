@@ -29,13 +29,13 @@ std::string probe(const std::string& file) {
                "-show_entries format=duration:format_tags=title -of flat=s=_ '" + file + "'");
 }
 
-const std::string kShort = " --size 320x180 --set periods=0.5 -q ";  // T = pi: 31 frames at 30 fps
+const std::string kShortRender = " --size 320x180 --set periods=0.5 -q ";  // T = pi: 31 frames at 30 fps
 }  // namespace
 
 TEST_CASE("PNG frames: count, zero padding, and byte-identical reruns", "[render]") {
   ScratchDirectory a, b;
-  REQUIRE(run_vibra("render" + kShort + "-o " + (a / "tmp_%04d.png")).exit_code == 0);
-  REQUIRE(run_vibra("render" + kShort + "-o " + b.path.string()).exit_code == 0);  // a bare directory
+  REQUIRE(run_vibra("render" + kShortRender + "-o " + (a / "tmp_%04d.png")).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShortRender + "-o " + b.path.string()).exit_code == 0);  // a bare directory
   int count = 0, others = 0;
   for (auto& entry : fs::directory_iterator(a.path)) (entry.path().extension() == ".png" ? count : others) += 1;
   CHECK(count == 31);
@@ -57,7 +57,7 @@ TEST_CASE("one frame per step follows the solver's steps", "[render]") {
 TEST_CASE("MP4: H.264 Main, yuv420p, BT.709 tv range, exact frames and duration, faststart", "[render][video]") {
   ScratchDirectory dir;
   const std::string file = dir / "p.mp4";
-  REQUIRE(run_vibra("render" + kShort + "-o " + file).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShortRender + "-o " + file).exit_code == 0);
   const std::string p = probe(file);
   INFO(p);
   CHECK_THAT(p, Catch::Contains("codec_name=\"h264\"") && Catch::Contains("profile=\"Main\"") &&
@@ -78,7 +78,7 @@ TEST_CASE("MP4: H.264 Main, yuv420p, BT.709 tv range, exact frames and duration,
 TEST_CASE("WebM: VP9 yuv420p with the right frame count", "[render][video]") {
   ScratchDirectory dir;
   const std::string file = dir / "p.webm";
-  REQUIRE(run_vibra("render" + kShort + "-o " + file).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShortRender + "-o " + file).exit_code == 0);
   const std::string p = probe(file);
   INFO(p);
   CHECK_THAT(p, Catch::Contains("codec_name=\"vp9\"") && Catch::Contains("pix_fmt=\"yuv420p\"") &&
@@ -104,7 +104,7 @@ TEST_CASE("other containers: mkv, ogv, gif, vp8 webm", "[render][video]") {
   for (const Case c : {Case{"p.mkv", "", "h264"}, {"p.ogv", "", "theora"}, {"p.gif", "", "gif"},
                        {"p8.webm", "--codec vp8", "vp8"}}) {
     INFO(c.file);
-    REQUIRE(run_vibra("render" + kShort + c.extra + " -o " + (dir / c.file)).exit_code == 0);
+    REQUIRE(run_vibra("render" + kShortRender + c.extra + " -o " + (dir / c.file)).exit_code == 0);
     const std::string p = probe(dir / c.file);
     CHECK_THAT(p, Catch::Contains(std::string("codec_name=\"") + c.codec + "\"") && Catch::Contains("nb_read_frames=\"31\""));
   }

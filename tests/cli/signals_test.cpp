@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Interrupted {
+struct InterruptedRun {
   int exit_code = -1;
   std::string err;
 };
@@ -29,7 +29,7 @@ struct Interrupted {
 // Starts vibra with ARGS (stdout to OUT_FILE), waits until WORK_HAS_STARTED
 // holds plus a little, sends SIGNAL and waits for the exit.
 template <class Condition>
-Interrupted interrupt_vibra(const std::vector<std::string>& args, const std::string& out_file,
+InterruptedRun interrupt_vibra(const std::vector<std::string>& args, const std::string& out_file,
                             const std::string& err_file, int signal, Condition work_has_started) {
   const pid_t pid = vibra::test::spawn_vibra(args, out_file, err_file);
   for (int i = 0; i < 500 && !work_has_started(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
@@ -37,7 +37,7 @@ Interrupted interrupt_vibra(const std::vector<std::string>& args, const std::str
   kill(pid, signal);
   int status = 0;
   waitpid(pid, &status, 0);
-  Interrupted result;
+  InterruptedRun result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
   std::ifstream in(err_file);
   std::getline(in, result.err);
@@ -75,7 +75,7 @@ TEST_CASE("SIGINT and SIGTERM stop video and frame renders: exit 128+signal, not
     return false;
   };
   const int signal = signal_named(signal_name);
-  const Interrupted run = interrupt_vibra({"render", "--set", "periods=500", "--size", "320x180", "-q", "-o", target},
+  const InterruptedRun run = interrupt_vibra({"render", "--set", "periods=500", "--size", "320x180", "-q", "-o", target},
                                           logs / "out", logs / "err", signal, has_output);
   CHECK(run.exit_code == 128 + signal);
   CHECK_THAT(run.err, Catch::StartsWith("vibra: interrupted by signal " + std::to_string(signal)));
@@ -93,7 +93,7 @@ TEST_CASE("an interrupted frame render removes the directories it created", "[si
     std::error_code ec;
     return fs::exists(dir / "made/for/this/run", ec) && !fs::is_empty(dir / "made/for/this/run", ec);
   };
-  const Interrupted run = interrupt_vibra({"render", "--set", "periods=500", "--size", "320x180", "-q", "-o", target},
+  const InterruptedRun run = interrupt_vibra({"render", "--set", "periods=500", "--size", "320x180", "-q", "-o", target},
                                           logs / "out", logs / "err", SIGINT, has_frames);
   CHECK(run.exit_code == 128 + SIGINT);
   CHECK(dir.empty());  // no frames, and none of the four directories
@@ -105,7 +105,7 @@ TEST_CASE("SIGINT and SIGTERM stop an endless ASCII run after a complete line", 
   ScratchDirectory logs;
   const std::string out = logs / "out";
   const int signal = signal_named(signal_name);
-  const Interrupted run = interrupt_vibra({"ascii", "undamped", "--set", "T=inf", "--width", "40"}, out, logs / "err",
+  const InterruptedRun run = interrupt_vibra({"ascii", "undamped", "--set", "T=inf", "--width", "40"}, out, logs / "err",
                                           signal, [&] { return fs::exists(out) && fs::file_size(out) > 0; });
   CHECK(run.exit_code == 128 + signal);
   CHECK(run.err == "vibra: interrupted by signal " + std::to_string(signal) + "; every line written is complete");

@@ -11,12 +11,6 @@
 using namespace vibra;
 
 namespace {
-Parameters settings(const std::string& model, const std::vector<std::string>& assignments) {
-  Parameters p = model_parameters(find_model(model));
-  for (const auto& a : assignments) p.assign(a);
-  return p;
-}
-
 void check_error(const std::function<void()>& action, const std::string& expected) {
   try {
     action();
@@ -41,7 +35,7 @@ TEST_CASE("a comparison KEY=V1,V2 parses to a key and its values", "[comparison]
 }
 
 TEST_CASE("members are the base settings with each value of the key", "[comparison]") {
-  const Parameters base = settings("pendulum", {"alpha=0", "periods=2"});
+  const Parameters base = model_settings("pendulum", {"alpha=0", "periods=2"});
   const auto members = comparison_members(base, parse_comparison("Theta=10,120"));
   REQUIRE(members.size() == 2);
   CHECK(members[1].angle("Theta") == Approx(120 * M_PI / 180));
@@ -52,7 +46,7 @@ TEST_CASE("members are the base settings with each value of the key", "[comparis
 }
 
 TEST_CASE("members advance in lock step, each with its own dt", "[comparison]") {
-  Comparison c(find_model("undamped"), settings("undamped", {"scheme=rk4", "T=1"}), parse_comparison("dt=0.1,0.025,0.03"));
+  Comparison c(find_model("undamped"), model_settings("undamped", {"scheme=rk4", "T=1"}), parse_comparison("dt=0.1,0.025,0.03"));
   REQUIRE(c.size() == 3);
   CHECK(c.label(1) == "dt = 0.025");
   std::vector<int> samples(3);
@@ -90,7 +84,7 @@ TEST_CASE("members advance in lock step, each with its own dt", "[comparison]") 
 }
 
 TEST_CASE("a member that blows up stops and the others go on", "[comparison]") {
-  Comparison c(find_model("undamped"), settings("undamped", {"steps_per_period=20", "periods=6"}),
+  Comparison c(find_model("undamped"), model_settings("undamped", {"steps_per_period=20", "periods=6"}),
                parse_comparison("scheme=forward-euler,crank-nicolson,rk4"));
   c.set_escape_limit(2);
   double last_fe = 0;
@@ -112,7 +106,7 @@ TEST_CASE("a member that blows up stops and the others go on", "[comparison]") {
 
 TEST_CASE("a member whose solution turns non-finite blows up there", "[comparison]") {
   // u'' = u^3 (s = -u^3) escapes to infinity in finite time.
-  Comparison c(find_model("vibration"), settings("vibration", {"s=-u^3", "I=1", "V=1", "dt=0.01", "T=5"}),
+  Comparison c(find_model("vibration"), model_settings("vibration", {"s=-u^3", "I=1", "V=1", "dt=0.01", "T=5"}),
                parse_comparison("scheme=forward-euler,rk4"));
   c.advance_to(5);
   CHECK(c.blew_up(0));

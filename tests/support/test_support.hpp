@@ -14,9 +14,7 @@ namespace vibra::test {
 
 /// A model's trajectory with the given KEY=VALUE settings.
 inline std::unique_ptr<Trajectory> trajectory(const std::string& model, const std::vector<std::string>& settings) {
-  Parameters p = model_parameters(find_model(model));
-  for (const auto& s : settings) p.assign(s);
-  return find_model(model).build(p);
+  return find_model(model).build(model_settings(model, settings));
 }
 
 /// All rows of a (short) trajectory.

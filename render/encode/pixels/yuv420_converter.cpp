@@ -5,14 +5,17 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "render/encode/pixels/bt709.hpp"
+
 namespace vibra::render {
 
 namespace {
-// BT.709 (Kr = 0.2126, Kb = 0.0722) into limited range: Y in 16..235 and
+// BT.709 (bt709.hpp) into limited range: Y in 16..235 and
 // Cb, Cr in 16..240, as fixed-point weights of 8-bit R, G, B scaled by 2^16.
 // Each row of weights is rounded so that it sums exactly to its target
 // (219/255 for Y, 0 for Cb and Cr): white is 235 and greys have no colour.
-constexpr double kKr = 0.2126, kKb = 0.0722;
+using bt709::kKb;
+using bt709::kKr;
 constexpr int kShift = 16;
 constexpr int fixed(double x) { return static_cast<int>(x * (1 << kShift) + (x < 0 ? -0.5 : 0.5)); }
 

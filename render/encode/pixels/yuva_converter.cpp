@@ -5,11 +5,14 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "render/encode/pixels/bt709.hpp"
+
 namespace vibra::render {
 
 namespace {
-// BT.709 (Kr = 0.2126, Kb = 0.0722) on colour in 0..1.
-constexpr double kKr = 0.2126, kKb = 0.0722, kKg = 1 - kKr - kKb;
+using bt709::kKb;
+using bt709::kKg;
+using bt709::kKr;
 
 /// Straight (not premultiplied) colour in 0..1 and alpha in 0..1.
 struct Straight {

@@ -19,11 +19,11 @@
 using vibra::render::raster_stroke;
 
 namespace {
-constexpr int kWidth = 160, kHeight = 120;
+constexpr int kSurfaceWidth = 160, kSurfaceHeight = 120;
 
 /// A white ARGB32 surface and its context.
 struct Surface {
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, kWidth, kHeight);
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, kSurfaceWidth, kSurfaceHeight);
   cairo_t* cr = cairo_create(surface);
   Surface() {
     cairo_set_source_rgb(cr, 1, 1, 1);
@@ -55,8 +55,8 @@ struct Difference {
 
 Difference compare(Surface& a, Surface& b) {
   Difference d;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) {
+  for (int y = 0; y < kSurfaceHeight; ++y)
+    for (int x = 0; x < kSurfaceWidth; ++x) {
       const std::uint32_t pa = a.at(x, y), pb = b.at(x, y);
       int largest = 0;
       for (int c = 0; c < 4; ++c) largest = std::max(largest, std::abs(channel(pa, c) - channel(pb, c)));
@@ -89,7 +89,7 @@ void polyline(cairo_t* cr, const std::vector<std::pair<double, double>>& points)
 TEST_CASE("a software stroke matches Cairo's within antialiasing, for every cap, dash and width",
           "[render][stroke_raster]") {
   std::mt19937 random(20261126);
-  std::uniform_real_distribution<double> x(-20, kWidth + 20), y(-20, kHeight + 20), unit(0, 1);
+  std::uniform_real_distribution<double> x(-20, kSurfaceWidth + 20), y(-20, kSurfaceHeight + 20), unit(0, 1);
   int drawn = 0;
   for (int trial = 0; trial < 300; ++trial) {
     std::vector<std::pair<double, double>> points(2 + random() % 10);
@@ -193,14 +193,14 @@ TEST_CASE("a software stroke grown strip by strip is the whole stroke, byte for 
     style(whole.cr);
     polyline(whole.cr, curve);
     REQUIRE(raster_stroke(whole.cr));
-    for (int strip = 0; strip < kWidth; strip += 7) {
+    for (int strip = 0; strip < kSurfaceWidth; strip += 7) {
       std::size_t first = 0;  // the last point left of the strip by more than the line reaches
       while (first + 1 < curve.size() && curve[first + 1].first < strip - 4) ++first;
       double along = 0;  // the dash phase the whole path has at `first`
       for (std::size_t i = 0; i < first; ++i)
         along += vibra::render::stroked_distance(curve[i].first, curve[i].second, curve[i + 1].first, curve[i + 1].second);
       cairo_save(grown.cr);
-      cairo_rectangle(grown.cr, strip, 0, 7, kHeight);
+      cairo_rectangle(grown.cr, strip, 0, 7, kSurfaceHeight);
       cairo_clip(grown.cr);
       style(grown.cr);
       const double dash[] = {6, 4};
@@ -211,8 +211,8 @@ TEST_CASE("a software stroke grown strip by strip is the whole stroke, byte for 
     }
     INFO("dashed " << dashed);
     int differing = 0;
-    for (int y = 0; y < kHeight; ++y)
-      for (int x = 0; x < kWidth; ++x) differing += whole.at(x, y) != grown.at(x, y);
+    for (int y = 0; y < kSurfaceHeight; ++y)
+      for (int x = 0; x < kSurfaceWidth; ++x) differing += whole.at(x, y) != grown.at(x, y);
     CHECK(differing == 0);
   }
 }
@@ -330,22 +330,22 @@ TEST_CASE("a software stroke clipped to nothing, or reaching far beyond the pict
   CHECK(raster_stroke(s.cr));
   CHECK_FALSE(cairo_has_current_point(s.cr));
   cairo_restore(s.cr);
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) REQUIRE(s.at(x, y) == 0xffffffffu);
+  for (int y = 0; y < kSurfaceHeight; ++y)
+    for (int x = 0; x < kSurfaceWidth; ++x) REQUIRE(s.at(x, y) == 0xffffffffu);
 
   // A line a thousand million pixels long across the picture: its row, in
   // no more time than the picture's width.
   cairo_set_line_width(s.cr, 1);
   polyline(s.cr, {{-1e9, 50.5}, {1e9, 50.5}});
   REQUIRE(raster_stroke(s.cr));
-  for (int x = 0; x < kWidth; ++x) {
+  for (int x = 0; x < kSurfaceWidth; ++x) {
     CHECK(channel(s.at(x, 50), 1) == 0);
     CHECK(channel(s.at(x, 49), 1) == 255);
   }
   // Far off to one side: nothing.
   polyline(s.cr, {{1e300, 1e300}, {2e300, 1e300}});
   REQUIRE(raster_stroke(s.cr));
-  CHECK(channel(s.at(kWidth - 1, kHeight - 1), 1) == 255);
+  CHECK(channel(s.at(kSurfaceWidth - 1, kSurfaceHeight - 1), 1) == 255);
 }
 
 TEST_CASE("a software stroke joins a closed outline's dashes through its start, as Cairo does",
@@ -382,14 +382,14 @@ std::uint64_t random_strokes_hash(Surface& s) {
     cairo_set_line_cap(s.cr, caps[k % 3]);
     const double dash[2] = {uniform(2, 9), uniform(1, 6)};
     cairo_set_dash(s.cr, dash, k % 4 == 0 ? 2 : 0, 0);
-    const double x = uniform(-10, kWidth + 10), y = uniform(-10, kHeight + 10), length = k % 2 ? uniform(0, 4) : uniform(4, 90);
+    const double x = uniform(-10, kSurfaceWidth + 10), y = uniform(-10, kSurfaceHeight + 10), length = k % 2 ? uniform(0, 4) : uniform(4, 90);
     const double angle = k % 10 == 0 ? (k % 20 == 0 ? 0 : M_PI / 2) : uniform(0, 2 * M_PI);  // level and upright ones too
     polyline(s.cr, {{x, y}, {x + length * std::cos(angle), y + length * std::sin(angle)}, {x + length, y + 3}});
     REQUIRE(raster_stroke(s.cr));
   }
   std::uint64_t hash = 14695981039346656037ull;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) hash = (hash ^ s.at(x, y)) * 1099511628211ull;
+  for (int y = 0; y < kSurfaceHeight; ++y)
+    for (int x = 0; x < kSurfaceWidth; ++x) hash = (hash ^ s.at(x, y)) * 1099511628211ull;
   return hash;
 }
 }  // namespace

@@ -23,7 +23,7 @@ namespace {
 // 640x360: the smallest frame that is not a thumbnail, where lines keep their
 // full width (a thumbnail's are thinner than a pixel, never solid).
 constexpr int kWidth = 640, kHeight = 360;
-const std::string kShort = " --size 640x360 --set periods=0.25 -q --transparent ";
+const std::string kShortTransparent = " --size 640x360 --set periods=0.25 -q --transparent ";
 
 /// How much of a picture's alpha is empty, and whether anything is solid.
 struct AlphaSummary {
@@ -102,10 +102,10 @@ TEST_CASE("YuvaConverter un-premultiplies and keeps alpha, 8-bit 4:2:0 and 10-bi
 
 TEST_CASE("transparent PNG frames and stills have alpha: clear around, solid on the drawing", "[transparent][render]") {
   ScratchDirectory dir;
-  REQUIRE(run_vibra("render" + kShort + "-o " + (dir / "f_%03d.png")).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShortTransparent + "-o " + (dir / "f_%03d.png")).exit_code == 0);
   check_overlay(png_alpha(dir / "f_000.png"));
   check_overlay(png_alpha(dir / "f_007.png"));
-  REQUIRE(run_vibra("render" + kShort + "--at 0.5 -o " + (dir / "still.png")).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShortTransparent + "--at 0.5 -o " + (dir / "still.png")).exit_code == 0);
   check_overlay(png_alpha(dir / "still.png"));
   REQUIRE(run_vibra("render --size 640x360 --set periods=0.25 -q --at 0.5 -o " + (dir / "opaque.png")).exit_code == 0);
   {  // without --transparent: opaque, as before
@@ -120,7 +120,7 @@ TEST_CASE("transparent PNG frames and stills have alpha: clear around, solid on 
 TEST_CASE("transparent WebM is VP9 with an alpha plane that decodes", "[transparent][render][video]") {
   ScratchDirectory dir;
   const std::string webm = dir / "overlay.webm";
-  REQUIRE(run_vibra("render" + kShort + "-o " + webm).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShortTransparent + "-o " + webm).exit_code == 0);
   // FFmpeg's own VP9 decoder drops alpha; libvpx reads the alpha track.
   const std::string frame = vibra::test::shell("ffmpeg -v error -c:v libvpx-vp9 -i '" + webm +
                                         "' -frames:v 1 -pix_fmt yuva420p -f rawvideo -");
@@ -133,7 +133,7 @@ TEST_CASE("transparent WebM is VP9 with an alpha plane that decodes", "[transpar
 TEST_CASE("transparent MOV is ProRes 4444 with a 10-bit alpha plane", "[transparent][render][video]") {
   ScratchDirectory dir;
   const std::string mov = dir / "overlay.mov";
-  REQUIRE(run_vibra("render" + kShort + "-o " + mov).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShortTransparent + "-o " + mov).exit_code == 0);
   const std::string probe = vibra::test::shell("ffprobe -v error -select_streams v:0 -show_entries stream=codec_name,profile,pix_fmt "
                                         "-of flat=s=_ '" + mov + "'");
   // Encoded from yuva444p10le; FFmpeg's ProRes decoder reports 4444 as 12-bit.
@@ -151,7 +151,7 @@ TEST_CASE("transparent SVG and PDF have no background rectangle", "[transparent]
   for (const char* ext : {".svg", ".pdf"}) {
     INFO(ext);
     const std::string clear = dir / ("clear" + std::string(ext)), paper = dir / ("paper" + std::string(ext));
-    REQUIRE(run_vibra("render" + kShort + "--at 0.5 -o " + clear).exit_code == 0);
+    REQUIRE(run_vibra("render" + kShortTransparent + "--at 0.5 -o " + clear).exit_code == 0);
     REQUIRE(run_vibra("render --size 640x360 --set periods=0.25 -q --at 0.5 -o " + paper).exit_code == 0);
     // Rasterised with a transparent page, as an editor places it.
     for (const auto& [file, transparent] : {std::pair{clear, true}, std::pair{paper, false}}) {

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 namespace vr = vibra::render;
 
 namespace {
-const std::string kShort = " --size 160x90 -q --set periods=";  // periods=0.5: 31 frames, 0.1: 7
+const std::string kSmallRunPeriods = " --size 160x90 -q --set periods=";  // periods=0.5: 31 frames, 0.1: 7
 
 
 std::string frame(int i, int digits = 4) {
@@ -53,7 +53,7 @@ TEST_CASE("file listing: names of any bytes come back as written, and a listing 
 TEST_CASE("a whole run removes only the earlier frames its ledger proves, and says what it kept", "[output][ledger]") {
   ScratchDirectory dir;
   const std::string pattern = dir / "f_%04d.png";
-  REQUIRE(run_vibra("render" + kShort + "0.5 -o " + pattern).exit_code == 0);  // 31 frames and their ledger
+  REQUIRE(run_vibra("render" + kSmallRunPeriods + "0.5 -o " + pattern).exit_code == 0);  // 31 frames and their ledger
   REQUIRE(fs::exists(dir.path / ".vibra-frames"));
   // Since then: the user edited one frame, locked another, and put files of their own under the pattern's names.
   write_file(dir.path / frame(20), read_file(dir.path / frame(20)) + "edited");
@@ -108,7 +108,7 @@ TEST_CASE("a ledger vibra did not write is neither trusted nor replaced", "[outp
 TEST_CASE("a frame given to another user stays, though the ledger lists it unchanged", "[output][ledger]") {
   ScratchDirectory dir;
   const std::string pattern = dir / "f_%04d.png";
-  REQUIRE(run_vibra("render" + kShort + "0.5 -o " + pattern).exit_code == 0);
+  REQUIRE(run_vibra("render" + kSmallRunPeriods + "0.5 -o " + pattern).exit_code == 0);
   if (::geteuid() != 0 || ::lchown((dir.path / frame(12)).c_str(), 65534, 65534) != 0) {
     WARN("skipped: giving a file to another user needs root");
     return;
@@ -125,7 +125,7 @@ TEST_CASE("segments keep ledgers of their own, which a whole run folds into its 
   ScratchDirectory dir;
   const std::string pattern = dir / "f_%04d.png";
   for (const char* segment : {"0/2", "1/2"})
-    REQUIRE(run_vibra("render" + kShort + "0.5 --segment " + segment + " -o " + pattern).exit_code == 0);
+    REQUIRE(run_vibra("render" + kSmallRunPeriods + "0.5 --segment " + segment + " -o " + pattern).exit_code == 0);
   const vr::FrameLedger ledger(dir.path);
   for (int i = 0; i < 31; ++i) CHECK(ledger.vouches_for(frame(i)));
   CHECK(fs::exists(dir.path / ".vibra-frames.0"));

@@ -31,7 +31,7 @@ using vibra::test::shell;
 namespace fs = std::filesystem;
 
 namespace {
-const std::string kShort = " --size 160x90 --set periods=0.5 -q ";  // 31 frames
+const std::string kShortPaths = " --size 160x90 --set periods=0.5 -q ";  // 31 frames
 
 void write(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
@@ -116,7 +116,7 @@ TEST_CASE("a symbolic link at the output stays, and its target gets the output",
 
   // A video through a link: no temporary is left beside the link or the target.
   fs::create_symlink(dir.path / "data/clip.mp4", dir.path / "clip.mp4");
-  REQUIRE(run_vibra("render" + kShort + "-o " + (dir / "clip.mp4")).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShortPaths + "-o " + (dir / "clip.mp4")).exit_code == 0);
   CHECK(fs::is_symlink(dir.path / "clip.mp4"));
   CHECK(fs::file_size(dir.path / "data/clip.mp4") > 1000);
   CHECK(entries(dir.path) == std::vector<std::string>{"clip.mp4", "data", "data/clip.mp4", "data/later.png",
@@ -147,7 +147,7 @@ TEST_CASE("a FIFO or /dev/fd/1 gets the CSV as a stream, as -o - does", "[output
   // A video in a stream format through a FIFO: the y4m header arrives.
   {
     FifoReader reader(dir.path / "video");
-    const auto v = run_vibra("render" + kShort + "--format y4m -o " + (dir / "video"));
+    const auto v = run_vibra("render" + kShortPaths + "--format y4m -o " + (dir / "video"));
     INFO(v.err);
     CHECK(v.exit_code == 0);
     CHECK_THAT(reader.finish(), Catch::StartsWith("YUV4MPEG2 W160 H90"));
@@ -157,13 +157,13 @@ TEST_CASE("a FIFO or /dev/fd/1 gets the CSV as a stream, as -o - does", "[output
 TEST_CASE("outputs that cannot stream refuse a FIFO or device with one line", "[output][paths][stream]") {
   ScratchDirectory dir;
   const std::pair<std::string, std::string> cases[] = {
-      {"render" + kShort + "-o FIFO", "add --format y4m"},  // a video streams only in a stream format
-      {"render" + kShort + "-o /dev/null", "add --format y4m"},
-      {"render" + kShort + "--at 1 -o FIFO", "give a file name"},
-      {"render" + kShort + "-o page.html", "give a file name"},
+      {"render" + kShortPaths + "-o FIFO", "add --format y4m"},  // a video streams only in a stream format
+      {"render" + kShortPaths + "-o /dev/null", "add --format y4m"},
+      {"render" + kShortPaths + "--at 1 -o FIFO", "give a file name"},
+      {"render" + kShortPaths + "-o page.html", "give a file name"},
       {"plot undamped -o FIFO", "give a file name"},
       {"analyze convergence undamped --levels 3 -o FIFO", "give a file name"},
-      {"render" + kShort + "--segment 0/2 --format y4m -o FIFO", "not a stream"},
+      {"render" + kShortPaths + "--segment 0/2 --format y4m -o FIFO", "not a stream"},
   };
   for (const auto& [args, expected] : cases) {
     std::string command = args;
@@ -186,11 +186,11 @@ TEST_CASE("a folder where a file is expected is refused before any work", "[outp
   ScratchDirectory dir;
   for (const char* name : {"p.html", "out.mp4", "still.png", "u.csv", "fig.svg"}) fs::create_directory(dir.path / name);
   const std::pair<std::string, std::string> cases[] = {
-      {"render" + kShort + "-o " + (dir / "p.html"), "p.html"},
-      {"render" + kShort + "--skip-existing -o " + (dir / "p.html"), "p.html"},  // a folder is not a complete page
-      {"render" + kShort + "-o " + (dir / "out.mp4"), "out.mp4"},
-      {"render" + kShort + "--skip-existing -o " + (dir / "out.mp4"), "out.mp4"},
-      {"render" + kShort + "--at 1 -o " + (dir / "still.png"), "still.png"},
+      {"render" + kShortPaths + "-o " + (dir / "p.html"), "p.html"},
+      {"render" + kShortPaths + "--skip-existing -o " + (dir / "p.html"), "p.html"},  // a folder is not a complete page
+      {"render" + kShortPaths + "-o " + (dir / "out.mp4"), "out.mp4"},
+      {"render" + kShortPaths + "--skip-existing -o " + (dir / "out.mp4"), "out.mp4"},
+      {"render" + kShortPaths + "--at 1 -o " + (dir / "still.png"), "still.png"},
       {"solve undamped -o " + (dir / "u.csv"), "u.csv"},
       {"plot undamped -o " + (dir / "fig.svg"), "fig.svg"},
       {"analyze convergence undamped --levels 3 -o " + (dir / "fig.svg"), "fig.svg"},
@@ -209,12 +209,12 @@ TEST_CASE("missing folders are made for every kind of output, and removed when t
   ScratchDirectory dir;
   const std::pair<std::string, std::string> made[] = {
       {"solve undamped --set periods=1 -q -o " + (dir / "a/b/u.csv"), "a/b/u.csv"},
-      {"render" + kShort + "-o " + (dir / "c/d/clip.mp4"), "c/d/clip.mp4"},
-      {"render" + kShort + "--at 1 -o " + (dir / "e/still.svg"), "e/still.svg"},
-      {"render" + kShort + "-o " + (dir / "f/g/page.html"), "f/g/page_files/page.csv"},
+      {"render" + kShortPaths + "-o " + (dir / "c/d/clip.mp4"), "c/d/clip.mp4"},
+      {"render" + kShortPaths + "--at 1 -o " + (dir / "e/still.svg"), "e/still.svg"},
+      {"render" + kShortPaths + "-o " + (dir / "f/g/page.html"), "f/g/page_files/page.csv"},
       {"plot undamped -q -o " + (dir / "h/fig.png"), "h/fig.png"},
       {"analyze convergence undamped --levels 3 -q -o " + (dir / "i/j/c.svg"), "i/j/c.svg"},
-      {"render" + kShort + "-o " + (dir / "k/l/tmp_%04d.png"), "k/l/tmp_0030.png"},
+      {"render" + kShortPaths + "-o " + (dir / "k/l/tmp_%04d.png"), "k/l/tmp_0030.png"},
   };
   for (const auto& [args, file] : made) {
     INFO("vibra " << args);
@@ -318,7 +318,7 @@ TEST_CASE("a page keeps its companions in PAGE_files/ and leaves the user's file
     CHECK_THAT(wrote, Catch::Contains(name));
 
   // Again, as a frames player: vibra's own folder is replaced whole, without --force.
-  REQUIRE(run_vibra("render" + kShort + "--frames-player -o " + (dir / "lecture.html")).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShortPaths + "--frames-player -o " + (dir / "lecture.html")).exit_code == 0);
   const auto files = entries(dir.path / "lecture_files");
   CHECK(files.size() == 34);  // 31 frames, their ledger, the CSV and the manifest
   CHECK(std::find(files.begin(), files.end(), "lecture.mp4") == files.end());
@@ -327,12 +327,12 @@ TEST_CASE("a page keeps its companions in PAGE_files/ and leaves the user's file
   // A PAGE_files/ folder that is not vibra's is refused, naming it; --force replaces it.
   fs::create_directory(dir.path / "notes_files");
   write(dir.path / "notes_files/mine.txt", "my notes");
-  const auto refused = run_vibra("render" + kShort + "-o " + (dir / "notes.html"));
+  const auto refused = run_vibra("render" + kShortPaths + "-o " + (dir / "notes.html"));
   check_refusal(refused, dir / "notes_files");
   CHECK_THAT(refused.err, Catch::Contains("--force"));
   CHECK_FALSE(fs::exists(dir.path / "notes.html"));
   CHECK(read_file(dir.path / "notes_files/mine.txt") == "my notes");
-  REQUIRE(run_vibra("render" + kShort + "--force -o " + (dir / "notes.html")).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShortPaths + "--force -o " + (dir / "notes.html")).exit_code == 0);
   CHECK(entries(dir.path / "notes_files") ==
         std::vector<std::string>{".vibra-manifest", "notes.csv", "notes.mp4", "notes.webm"});
 }
@@ -340,13 +340,13 @@ TEST_CASE("a page keeps its companions in PAGE_files/ and leaves the user's file
 TEST_CASE("a segment's file is overwritten only when vibra wrote it for that segment", "[output][paths][segment]") {
   ScratchDirectory dir;
   write(dir.path / "clip.seg-0-of-2.mp4", "my own video");
-  const auto refused = run_vibra("render" + kShort + "--segment 0/2 -o " + (dir / "clip.mp4"));
+  const auto refused = run_vibra("render" + kShortPaths + "--segment 0/2 -o " + (dir / "clip.mp4"));
   check_refusal(refused, dir / "clip.seg-0-of-2.mp4");
   CHECK_THAT(refused.err, Catch::Contains("--force"));
   CHECK(read_file(dir.path / "clip.seg-0-of-2.mp4") == "my own video");
-  REQUIRE(run_vibra("render" + kShort + "--segment 0/2 --force -o " + (dir / "clip.mp4")).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShortPaths + "--segment 0/2 --force -o " + (dir / "clip.mp4")).exit_code == 0);
   // Now vibra's: a second run replaces it without --force.
-  CHECK(run_vibra("render" + kShort + "--segment 0/2 -o " + (dir / "clip.mp4")).exit_code == 0);
+  CHECK(run_vibra("render" + kShortPaths + "--segment 0/2 -o " + (dir / "clip.mp4")).exit_code == 0);
 }
 
 TEST_CASE("an input of the run is never an output of it", "[output][paths]") {

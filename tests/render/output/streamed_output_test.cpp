@@ -13,7 +13,7 @@ using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;
 
 namespace {
-const std::string kShort = "render --size 320x180 --set periods=0.5 -q -o - ";  // 31 frames at 30 fps
+const std::string kShortToStdout = "render --size 320x180 --set periods=0.5 -q -o - ";  // 31 frames at 30 fps
 
 std::vector<std::string> words(const std::string& text) {
   std::vector<std::string> out;
@@ -26,7 +26,7 @@ std::vector<std::string> words(const std::string& text) {
 }  // namespace
 
 TEST_CASE("standard output in y4m: a YUV4MPEG2 header and every frame", "[stream][render]") {
-  const auto r = run_vibra(kShort + "--format y4m");
+  const auto r = run_vibra(kShortToStdout + "--format y4m");
   REQUIRE(r.exit_code == 0);
   const std::size_t eol = r.out.find('\n');
   REQUIRE(eol != std::string::npos);
@@ -46,7 +46,7 @@ TEST_CASE("standard output in y4m: a YUV4MPEG2 header and every frame", "[stream
   CHECK(frames == 31);
   // And FFmpeg reads it as the same 31 frames.
   ScratchDirectory dir;
-  REQUIRE(run_vibra(kShort + "--format y4m > " + (dir / "x.y4m")).exit_code == 0);
+  REQUIRE(run_vibra(kShortToStdout + "--format y4m > " + (dir / "x.y4m")).exit_code == 0);
   CHECK_THAT(vibra::test::shell("ffprobe -v error -count_frames -show_entries stream=codec_name,width,height,nb_read_frames,color_range "
                    "-of flat=s=_ '" + (dir / "x.y4m") + "'"),
              Catch::Contains("codec_name=\"rawvideo\"") && Catch::Contains("nb_read_frames=\"31\"") &&
@@ -74,7 +74,7 @@ TEST_CASE("standard output in NUT or Matroska: H.264 that a pipe reader decodes"
   for (const char* format : {"nut", "matroska"}) {
     INFO(format);
     ScratchDirectory dir;
-    const std::string command = std::string(VIBRA_EXE) + " " + kShort + "--format " + format + " 2>" + (dir / "err") +
+    const std::string command = std::string(VIBRA_EXE) + " " + kShortToStdout + "--format " + format + " 2>" + (dir / "err") +
                                 " | ffprobe -v error -count_frames -show_entries stream=codec_name,width,height,nb_read_frames "
                                 "-of flat=s=_ -";
     const std::string probe = vibra::test::shell(command);
@@ -95,7 +95,7 @@ TEST_CASE("a reader that closes the pipe ends the stream quietly", "[stream][ren
 TEST_CASE("a full disk behind standard output is a one-line error", "[stream][render]") {
   for (const char* format : {"y4m", "nut"}) {
     INFO(format);
-    const auto r = run_vibra(kShort + "--format " + format + " > /dev/full");
+    const auto r = run_vibra(kShortToStdout + "--format " + format + " > /dev/full");
     check_refusal(r, "No space left");
     CHECK_THAT(r.err, Catch::Contains("standard output"));
   }

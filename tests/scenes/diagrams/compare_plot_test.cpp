@@ -18,15 +18,6 @@ using test::colour_pixels;
 using test::run_vibra;
 using test::ScratchDirectory;
 
-namespace {
-
-Parameters settings(const std::string& model, const std::vector<std::string>& assignments) {
-  Parameters p = model_parameters(find_model(model));
-  for (const auto& a : assignments) p.assign(a);
-  return p;
-}
-}  // namespace
-
 TEST_CASE("plot --compare draws every member in its own palette colour", "[compare]") {
   ScratchDirectory dir;
   const auto r = run_vibra("plot undamped --compare scheme=forward-euler,backward-euler,crank-nicolson,rk4 "
@@ -53,7 +44,7 @@ TEST_CASE("plot --compare with one value draws that one run, in the first colour
 }
 
 TEST_CASE("a member that leaves the view is marked and the others run to the end", "[compare]") {
-  Comparison c(find_model("undamped"), settings("undamped", {"steps_per_period=20", "periods=8"}),
+  Comparison c(find_model("undamped"), model_settings("undamped", {"steps_per_period=20", "periods=8"}),
                parse_comparison("scheme=forward-euler,rk4"));
   scenes::comparison_figure(c, {"u", "phase"}, 800, 600, "");
   REQUIRE(c.blew_up(0));  // |u| beyond twice the bound I: by t = 1 (comparison_test.cpp)
@@ -65,7 +56,7 @@ TEST_CASE("a member that leaves the view is marked and the others run to the end
 
 TEST_CASE("a comparison's exact phase curve is the undamped circle u^2 + (v/w)^2 = I^2", "[compare]") {
   // u = I cos(w t), v = -I w sin(w t): in the phase panel's (u, v/w) a circle of radius I.
-  Comparison c(find_model("undamped"), settings("undamped", {"I=1.5", "steps_per_period=20", "periods=2"}),
+  Comparison c(find_model("undamped"), model_settings("undamped", {"I=1.5", "steps_per_period=20", "periods=2"}),
                parse_comparison("scheme=centered,rk4"));
   const render::Figure figure = scenes::comparison_figure(c, {"u", "phase"}, 800, 600, "");
   int exact_curves = 0;
@@ -98,24 +89,24 @@ TEST_CASE("plot --compare refuses bad input with one line, exit code 2 and no fi
 }
 
 TEST_CASE("a compared angle is named in degrees, or in radians when given so, other keys as given", "[compare]") {
-  Comparison angles(find_model("pendulum"), settings("pendulum", {"periods=1"}), parse_comparison("Theta=30,60,1rad"));
+  Comparison angles(find_model("pendulum"), model_settings("pendulum", {"periods=1"}), parse_comparison("Theta=30,60,1rad"));
   CHECK(scenes::member_markup(angles, 0) == "Theta = 30°");
   CHECK(scenes::member_markup(angles, 1) == "Theta = 60°");
   CHECK(scenes::member_markup(angles, 2) == "Theta = 1rad");
-  Comparison drags(find_model("pendulum"), settings("pendulum", {"periods=1"}), parse_comparison("alpha=0.1,0.4"));
+  Comparison drags(find_model("pendulum"), model_settings("pendulum", {"periods=1"}), parse_comparison("alpha=0.1,0.4"));
   CHECK(scenes::member_markup(drags, 1) == "alpha = 0.4");
-  Comparison steps(find_model("undamped"), settings("undamped", {"periods=1"}), parse_comparison("dt=0.1,0.05"));
+  Comparison steps(find_model("undamped"), model_settings("undamped", {"periods=1"}), parse_comparison("dt=0.1,0.05"));
   CHECK(scenes::member_markup(steps, 0) == "Δ<i>t</i> = 0.1");
-  Comparison schemes(find_model("undamped"), settings("undamped", {"periods=1"}), parse_comparison("scheme=rk4,centered"));
+  Comparison schemes(find_model("undamped"), model_settings("undamped", {"periods=1"}), parse_comparison("scheme=rk4,centered"));
   CHECK(scenes::member_markup(schemes, 1) == "centered");
 }
 
 TEST_CASE("a comparison's caption states what the members share and not what they vary", "[compare]") {
   // Each member's dt differs: no dt in the caption, the shared scheme named.
-  Comparison steps(find_model("undamped"), settings("undamped", {"scheme=rk4", "periods=1"}), parse_comparison("dt=0.1,0.05"));
+  Comparison steps(find_model("undamped"), model_settings("undamped", {"scheme=rk4", "periods=1"}), parse_comparison("dt=0.1,0.05"));
   CHECK(scenes::comparison_caption("undamped", steps) == "rk4 · comparing Δ<i>t</i>");
   // The schemes differ: the shared dt, no scheme.
-  Comparison schemes(find_model("undamped"), settings("undamped", {"dt=0.05", "periods=1"}),
+  Comparison schemes(find_model("undamped"), model_settings("undamped", {"dt=0.05", "periods=1"}),
                      parse_comparison("scheme=rk4,centered"));
   CHECK(scenes::comparison_caption("undamped", schemes) == "Δ<i>t</i> = 0.05 · comparing scheme");
 }

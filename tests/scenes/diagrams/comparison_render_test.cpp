@@ -28,11 +28,6 @@ using test::run_vibra;
 using test::ScratchDirectory;
 
 namespace {
-Parameters settings(const std::string& model, const std::vector<std::string>& assignments) {
-  Parameters p = model_parameters(find_model(model));
-  for (const auto& a : assignments) p.assign(a);
-  return p;
-}
 
 /// Every sample of a member run alone: time -> row.
 std::map<double, std::vector<double>> samples(const std::string& model, const Parameters& p) {
@@ -82,7 +77,7 @@ DrawnScene drawn_at_start(const std::string& name, const std::vector<std::pair<s
 
 TEST_CASE("a comparison's rows hold every member exactly at its own samples, on the union of their meshes",
           "[comparison]") {
-  const Parameters base = settings("undamped", {"w=1", "T=3", "scheme=crank-nicolson"});
+  const Parameters base = model_settings("undamped", {"w=1", "T=3", "scheme=crank-nicolson"});
   ComparisonTrajectory runs(find_model("undamped"), base, parse_comparison("dt=0.1,0.15"));
   REQUIRE(runs.members() == 2);
   CHECK(runs.info().columns == std::vector<std::string>{"t", "u[dt=0.1]", "v[dt=0.1]", "u[dt=0.15]", "v[dt=0.15]"});
@@ -123,7 +118,7 @@ TEST_CASE("a comparison's rows hold every member exactly at its own samples, on 
 }
 
 TEST_CASE("a member that blows up reads NaN from then on while the others run to the end", "[comparison]") {
-  const Parameters base = settings("undamped", {"steps_per_period=8", "periods=6"});
+  const Parameters base = model_settings("undamped", {"steps_per_period=8", "periods=6"});
   ComparisonTrajectory runs(find_model("undamped"), base, parse_comparison("scheme=forward-euler,crank-nicolson"));
   std::vector<double> row(runs.width());
   double last_t = 0;
@@ -166,7 +161,7 @@ TEST_CASE("the legend learns when each run ended from the rows, and why", "[comp
 TEST_CASE("a run that stays bounded stays in view: one that grows leaves it, one that overflows blew up", "[comparison]") {
   // Euler-Cromer at a dt near its stability limit swings to |u| = 2.3 from
   // u(0) = 1 and decays: bounded, so the view holds it.
-  const Parameters wide = settings("vibration", {"m=4", "damping=quadratic", "b=0.2", "s=2*u",
+  const Parameters wide = model_settings("vibration", {"m=4", "damping=quadratic", "b=0.2", "s=2*u",
                                                  "dt=0.9*2/sqrt(0.5)", "periods=6"});
   ComparisonTrajectory bounded(find_model("vibration"), wide, parse_comparison("scheme=centered,euler-cromer"));
   while (bounded.advance()) {
@@ -174,14 +169,14 @@ TEST_CASE("a run that stays bounded stays in view: one that grows leaves it, one
   CHECK(std::isinf(bounded.blow_up_time(0)));
   CHECK(std::isinf(bounded.blow_up_time(1)));
   // Forward Euler gains energy every step: past 4 times its first swing it leaves, still finite.
-  Comparison growing(find_model("undamped"), settings("undamped", {"steps_per_period=8", "periods=40"}),
+  Comparison growing(find_model("undamped"), model_settings("undamped", {"steps_per_period=8", "periods=40"}),
                      parse_comparison("scheme=forward-euler,rk4"));
   growing.set_view_limits();
   growing.advance_to(growing.end_time());
   CHECK(growing.early_end(0) == EarlyEnd::left_view);
   CHECK(growing.early_end(1) == EarlyEnd::none);
   // Without a view limit, it runs until its values overflow: that is a blow-up.
-  Comparison overflowing(find_model("undamped"), settings("undamped", {"steps_per_period=8", "periods=4000"}),
+  Comparison overflowing(find_model("undamped"), model_settings("undamped", {"steps_per_period=8", "periods=4000"}),
                          parse_comparison("scheme=forward-euler,rk4"));
   overflowing.advance_to(overflowing.end_time());
   CHECK(overflowing.early_end(0) == EarlyEnd::blew_up);
@@ -198,7 +193,7 @@ TEST_CASE("a run whose swings end three times as wide as they start leaves the v
   const double growth = std::pow(1 + std::pow(2 * M_PI / 100, 2), 0.5 * 525);
   REQUIRE(growth > 2.5);
   REQUIRE(growth < 3.2);
-  Comparison c(find_model("undamped"), settings("undamped", {"steps_per_period=100", "periods=7"}),
+  Comparison c(find_model("undamped"), model_settings("undamped", {"steps_per_period=100", "periods=7"}),
                parse_comparison("scheme=forward-euler,crank-nicolson"));
   c.set_view_limits();
   // It leaves at twice the largest |u| of the bounded runs and of what energy allows: 2 I.

@@ -27,6 +27,7 @@
 
 using namespace vibra;
 using namespace vibra::scenes;
+using vibra::test::diagram_as;
 
 namespace {
 using Recorded = vibra::test::RecordedDiagram;
@@ -53,17 +54,12 @@ RecordedScene record_scene(const std::string& name, int w, int h) {
   r.follows = diagram_for(r.config).make({r.config, p, run->info()})->view_at(r.rows[0]).has_value();
   return r;
 }
-
-template <class T>
-T& as(const Recorded& r) {
-  return vibra::test::diagram_as<T>(r);
-}
 }  // namespace
 
 TEST_CASE("spring-dashpot diagram: arrows are -s(u), -f(u') and F(t) to one scale, from the body's centre line",
           "[scene][diagram]") {
   const Recorded r = record("spring_dashpot");
-  auto& d = as<OscillatorDiagram>(r);
+  auto& d = diagram_as<OscillatorDiagram>(r);
   const VibrationLaw law = VibrationLaw::from(model_parameters_of(r.config));
   const double per = d.force_scale().per_force();
   REQUIRE(per > 0);
@@ -88,7 +84,7 @@ TEST_CASE("spring diagram: the wheels roll without slipping, the rim's point on 
   // The rim point under the hub at u = 0 is, at u, at the hub (x0 + u, r)
   // plus r (sin turn, -cos turn): to first order in u it must not move.
   const Recorded r = record("spring");
-  auto& d = as<OscillatorDiagram>(r);
+  auto& d = diagram_as<OscillatorDiagram>(r);
   const double radius = d.layout().wheel_radius;
   REQUIRE(radius > 0);
   for (double u : {1e-5, -1e-5, 3e-5}) {
@@ -118,13 +114,13 @@ TEST_CASE("the u dimension runs from the equilibrium line to the body's centre l
 
 TEST_CASE("spring diagram without damping or forcing draws the spring force alone", "[scene][diagram]") {
   const Recorded r = record("spring");
-  auto& d = as<OscillatorDiagram>(r);
+  auto& d = diagram_as<OscillatorDiagram>(r);
   for (const auto& row : r.rows) CHECK(d.force_arrows(row).size() == 1);
 }
 
 TEST_CASE("sliding box diagram: the friction arrow is kinetic while sliding, static at rest", "[scene][diagram]") {
   const Recorded r = record("sliding_box", {{"mu", "0.2"}});
-  auto& d = as<SlidingBoxDiagram>(r);
+  auto& d = diagram_as<SlidingBoxDiagram>(r);
   SlidingBoxLaw law;
   law.mu = 0.2;
   bool saw_rest = false;
@@ -151,7 +147,7 @@ TEST_CASE("sliding box diagram: the friction arrow is kinetic while sliding, sta
 TEST_CASE("washing machine diagram: the drum's mass at the forcing's phase, arrows -u, -beta u', sin(gamma t)",
           "[scene][diagram]") {
   const Recorded r = record("washing_machine");
-  auto& d = as<WashingMachineDiagram>(r);
+  auto& d = diagram_as<WashingMachineDiagram>(r);
   const double gamma = 1.1, beta = 0.05;
   for (size_t i = 0; i < r.rows.size(); i += 7) {
     const auto& row = r.rows[i];
@@ -173,7 +169,7 @@ TEST_CASE("washing machine's u panel: the steady amplitude's lines at +A and -A,
   const Recorded r = record("washing_machine");
   const double gamma = 1.1, beta = 0.05;
   const double A = 1 / std::sqrt(std::pow(1 - gamma * gamma, 2) + std::pow(beta * gamma, 2));
-  const std::vector<PanelSpec> panels = as<WashingMachineDiagram>(r).panels();
+  const std::vector<PanelSpec> panels = diagram_as<WashingMachineDiagram>(r).panels();
   REQUIRE(panels.size() == 2);
   const auto& u = panels[0].series;
   REQUIRE(u.size() == 4);  // numerical, exact, then the two lines
@@ -190,7 +186,7 @@ TEST_CASE("washing machine's u panel: the steady amplitude's lines at +A and -A,
 TEST_CASE("bumpy road diagram: the wheel on the road, the body at L + u over the axle, arrows -k u and -b u'",
           "[scene][diagram]") {
   const Recorded r = record("bumpy_road", {{"exaggerate", "1"}});
-  auto& d = as<BumpyRoadDiagram>(r);
+  auto& d = diagram_as<BumpyRoadDiagram>(r);
   const Parameters p = model_parameters_of(r.config);
   const double R = p.number("R"), L = p.number("L"), k = p.number("k"), b = p.number("b");
   CHECK(d.exaggeration() == 1);
@@ -224,7 +220,7 @@ TEST_CASE("bumpy road diagram: the view holds the body over the highest bump wit
   for (const Settings& settings : cases) {
     INFO((settings.empty() ? "automatic" : settings.back().first + "=" + settings.back().second) << ", " << settings.size() << " keys");
     const Recorded r = record("bumpy_road", settings);
-    auto& d = as<BumpyRoadDiagram>(r);
+    auto& d = diagram_as<BumpyRoadDiagram>(r);
     const double R = model_parameters_of(r.config).number("R"), F = d.exaggeration();
     double road_span = 0;
     for (const auto& row : r.rows) {
@@ -242,7 +238,7 @@ TEST_CASE("bumpy road diagram: the wheel rolls without slipping, clockwise as th
   // The rim point under the hub at x = 0 is, at x, at the hub plus
   // R (sin turn, -cos turn): to first order in x it must not move.
   const Recorded r = record("bumpy_road");
-  auto& d = as<BumpyRoadDiagram>(r);
+  auto& d = diagram_as<BumpyRoadDiagram>(r);
   const double R = model_parameters_of(r.config).number("R");
   REQUIRE(R > 0);
   for (double x : {1e-5, -1e-5, 3e-5}) CHECK(std::abs(x + R * std::sin(d.wheel_turn(x))) < 1e-8);
@@ -253,7 +249,7 @@ TEST_CASE("bumpy road diagram: heights drawn F times larger, F chosen so that th
           "[scene][diagram]") {
   // exaggerate = 4: the road and the body's u four times taller, R and L true, and the key says so.
   const Recorded r = record("bumpy_road", {{"exaggerate", "4"}});
-  auto& d = as<BumpyRoadDiagram>(r);
+  auto& d = diagram_as<BumpyRoadDiagram>(r);
   const Parameters p = model_parameters_of(r.config);
   const double R = p.number("R"), L = p.number("L");
   CHECK(d.exaggeration() == 4);
@@ -270,7 +266,7 @@ TEST_CASE("bumpy road diagram: heights drawn F times larger, F chosen so that th
   CHECK(BumpyRoadDiagram::automatic_exaggeration(0.1, 0.01, v) == 1);        // a swing of L/6 shows already
   CHECK(BumpyRoadDiagram::automatic_exaggeration(0, 0, v) == 1);             // nothing moves
   const Recorded automatic = record("bumpy_road");
-  auto& a = as<BumpyRoadDiagram>(automatic);
+  auto& a = diagram_as<BumpyRoadDiagram>(automatic);
   double swing = 0;
   for (const auto& row : automatic.rows) swing = std::max(swing, std::abs(row[1]));
   CHECK(a.exaggeration() > 1);
@@ -281,7 +277,7 @@ TEST_CASE("bumpy road diagram: heights drawn F times larger, F chosen so that th
 TEST_CASE("bouncing ball diagram: the ball on the ground at h, v to one scale, the weight down, impacts as the model's",
           "[scene][diagram]") {
   const Recorded r = record("bouncing_ball");
-  auto& d = as<BouncingBallDiagram>(r);
+  auto& d = diagram_as<BouncingBallDiagram>(r);
   // The impacts the diagram marks are the ones the model finds.
   auto run = find_model("bouncing-ball").build(model_parameters_of(r.config));
   std::vector<double> impacts;
@@ -319,7 +315,7 @@ TEST_CASE("bouncing ball diagram: the ball on the ground at h, v to one scale, t
 
 TEST_CASE("rlc diagram: the current's arrow follows I, the plates' signs follow q", "[scene][diagram]") {
   const Recorded r = record("rlc", {{"R", "0.3"}});
-  auto& d = as<RlcDiagram>(r);
+  auto& d = diagram_as<RlcDiagram>(r);
   double largest_I = 0, largest_q = 0;
   for (const auto& row : r.rows) largest_I = std::max(largest_I, std::abs(row[2])), largest_q = std::max(largest_q, std::abs(row[1]));
   for (const auto& row : r.rows) {
@@ -340,7 +336,7 @@ TEST_CASE("elastic pendulum diagram: mg, the wire's force (L - beta)/(1 - beta) 
           "[scene][diagram]") {
   const double beta = 0.9, gamma = 0.05;
   const Recorded r = record("elastic_pendulum", {{"gamma", "0.05"}});
-  auto& d = as<ElasticPendulumDiagram>(r);
+  auto& d = diagram_as<ElasticPendulumDiagram>(r);
   const double per = d.force_scale().per_force();
   REQUIRE(per > 0);
   for (const auto& row : r.rows) {
@@ -366,7 +362,7 @@ TEST_CASE("pendulum diagram: the largest pull of the wire is drawn as long as it
   // bottom at 1 + 2 (1 - cos 60) = 2, which points inward, where it has
   // kInwardRoom; every other force (mg = 1) gets kArrowRoom.
   const Recorded r = record("pendulum", {{"Theta", "60"}, {"alpha", "0"}, {"steps_per_period", "400"}});
-  auto& d = as<PendulumDiagram>(r);
+  auto& d = diagram_as<PendulumDiagram>(r);
   double S_max = 0;
   for (const auto& row : r.rows) S_max = std::max(S_max, row[3]);
   CHECK(S_max == Approx(2).epsilon(1e-4));
@@ -380,7 +376,7 @@ TEST_CASE("elastic pendulum diagram's panels: theta in degrees from the wire's d
           "[scene][diagram]") {
   const double beta = 0.9;
   const Recorded r = record("elastic_pendulum", {{"Theta", "40"}});
-  const auto panels = as<ElasticPendulumDiagram>(r).panels();
+  const auto panels = diagram_as<ElasticPendulumDiagram>(r).panels();
   REQUIRE(panels.size() == 2);
   CHECK_THAT(panels[0].label, Catch::Contains("degrees"));
   double widest = 0;
@@ -398,7 +394,7 @@ TEST_CASE("elastic pendulum diagram's panels: theta in degrees from the wire's d
 TEST_CASE("orbit diagram: gravity -x/|x|^3 and v to their scales, and the circular orbit keeps radius 1",
           "[scene][diagram]") {
   const Recorded r = record("orbit");
-  auto& d = as<OrbitDiagram>(r);
+  auto& d = diagram_as<OrbitDiagram>(r);
   CHECK(d.circle_radius() == 1);
   Point gravity_per(0, 0), speed_per(0, 0);
   for (const auto& row : r.rows) {
@@ -419,7 +415,7 @@ TEST_CASE("orbit diagram: on an eccentric orbit gravity's arrow shrinks as 1/r^2
           "[scene][diagram]") {
   // From x0 = 1 at 1.2 times the circular speed: out to r = 1.44/0.56.
   const Recorded r = record("orbit", {{"vy0", "1.2"}, {"periods", "3"}});
-  auto& d = as<OrbitDiagram>(r);
+  auto& d = diagram_as<OrbitDiagram>(r);
   CHECK(d.circle_radius() == 0);  // not circular: no circle to compare with
   double g_largest = 0, v_largest = 0, r_min = 1e300, r_max = 0;
   for (const auto& row : r.rows) {
@@ -437,7 +433,7 @@ TEST_CASE("orbit diagram: on an eccentric orbit gravity's arrow shrinks as 1/r^2
   }
   // A circular start at r = 2 (speed 1/sqrt(2)) gets its circle, of radius 2.
   const Recorded wide = record("orbit", {{"x0", "2"}, {"vy0", "0.70710678118654752"}});
-  CHECK(as<OrbitDiagram>(wide).circle_radius() == 2);
+  CHECK(diagram_as<OrbitDiagram>(wide).circle_radius() == 2);
 }
 
 TEST_CASE("orbit diagram: Euler-Cromer's drift shows in the trail after 100 orbits, PEFRL's does not",
@@ -445,7 +441,7 @@ TEST_CASE("orbit diagram: Euler-Cromer's drift shows in the trail after 100 orbi
   auto drift = [](const std::string& scheme) {
     const Recorded r = record("orbit", {{"scheme", scheme}, {"periods", "100"}, {"steps_per_period", "200"}});
     double worst = 0;
-    for (const auto& p : as<OrbitDiagram>(r).trail().points()) worst = std::max(worst, std::abs(p.p.norm() - 1));
+    for (const auto& p : diagram_as<OrbitDiagram>(r).trail().points()) worst = std::max(worst, std::abs(p.p.norm() - 1));
     return worst;
   };
   const double euler_cromer = drift("euler-cromer"), pefrl = drift("pefrl");
@@ -455,9 +451,9 @@ TEST_CASE("orbit diagram: Euler-Cromer's drift shows in the trail after 100 orbi
 
 TEST_CASE("orbit diagram: --window keeps the last orbits of the trail", "[scene][diagram]") {
   const Recorded r = record("orbit", {{"window", "1periods"}, {"periods", "3"}});
-  auto& d = as<OrbitDiagram>(r);
+  auto& d = diagram_as<OrbitDiagram>(r);
   CHECK(d.window() == Approx(2 * M_PI));
-  CHECK(as<OrbitDiagram>(record("orbit")).window() == 0);
+  CHECK(diagram_as<OrbitDiagram>(record("orbit")).window() == 0);
   // One orbit's worth of trail at the end: the points of the last 2 pi.
   const auto last = d.trail().between(6 * M_PI - 2 * M_PI, 6 * M_PI);
   CHECK(last.size() > 100);

@@ -20,16 +20,12 @@
 
 using namespace vibra;
 using namespace vibra::scenes;
+using vibra::test::diagram_as;
 using Settings = std::vector<std::pair<std::string, std::string>>;
 
 namespace {
 using Run = vibra::test::RecordedDiagram;
 Run run_of(const std::string& scene, const Settings& settings = {}) { return vibra::test::record_diagram(scene, settings); }
-
-template <class T>
-T& as(const Run& r) {
-  return vibra::test::diagram_as<T>(r);
-}
 
 std::vector<ForceKind> kinds(const std::vector<DrawnForce>& forces) {
   std::vector<ForceKind> out;
@@ -100,7 +96,7 @@ TEST_CASE("bouncing ball: mg in flight, at rest on the ground N = mg up from it,
           "for a run that rests",
           "[scene][diagram][free-body]") {
   const Run r = run_of("bouncing_ball");
-  auto& d = as<BouncingBallDiagram>(r);
+  auto& d = diagram_as<BouncingBallDiagram>(r);
   const Parameters p = model_parameters_of(r.config);
   const double rest = rest_time(p.number("h0"), p.number("g"), p.number("C_R"), p.number("eps_v"));
   REQUIRE(rest < r.rows.back()[0] - 0.1);  // the scene's run ends at rest
@@ -138,7 +134,7 @@ TEST_CASE("bouncing ball: mg in flight, at rest on the ground N = mg up from it,
 TEST_CASE("bouncing ball: each arrow's label sits on the arrow's side away from the ball, so mg's and v's never meet",
           "[scene][diagram][free-body]") {
   const Run r = run_of("bouncing_ball");
-  auto& d = as<BouncingBallDiagram>(r);
+  auto& d = diagram_as<BouncingBallDiagram>(r);
   const render::WorldView view(r.world, {40, 30, 560, 300});
   int labels = 0;
   for (size_t i = 0; i < r.rows.size(); i += 7) {
@@ -164,7 +160,7 @@ TEST_CASE("bouncing ball: each arrow's label sits on the arrow's side away from 
 TEST_CASE("bouncing ball: what is drawn is the force list, and the v arrow is to scale and never passes the ground",
           "[scene][diagram][free-body]") {
   Run r = run_of("bouncing_ball");
-  auto& d = as<BouncingBallDiagram>(r);
+  auto& d = diagram_as<BouncingBallDiagram>(r);
   double per_speed = 0;
   bool lifted = false;
   for (const auto& row : r.rows) {
@@ -202,7 +198,7 @@ TEST_CASE("sliding box: kinetic friction mu N against v while sliding, static fr
           "[scene][diagram][free-body]") {
   const double mu = 0.15;
   Run r = run_of("sliding_box", {{"mu", "0.15"}});
-  auto& d = as<SlidingBoxDiagram>(r);
+  auto& d = diagram_as<SlidingBoxDiagram>(r);
   const Sticking stuck = sticking(mu);
   REQUIRE(stuck.t < r.rows.back()[0]);
   const double m = d.friction_magnification();
@@ -265,7 +261,7 @@ TEST_CASE("sliding box: kinetic friction mu N against v while sliding, static fr
 TEST_CASE("the spring's force is named compressed when u < 0 and it pushes, stretched when it pulls",
           "[scene][diagram][free-body]") {
   Run r = run_of("spring");
-  auto& d = as<OscillatorDiagram>(r);
+  auto& d = diagram_as<OscillatorDiagram>(r);
   int compressed = 0, stretched = 0;
   for (size_t i = 1; i < r.rows.size(); i += 7) {
     const auto& row = r.rows[i];
@@ -289,18 +285,18 @@ TEST_CASE("keys list exactly the forces a run has: no friction without mu, no da
           "[scene][diagram][free-body]") {
   const Run frictionless = run_of("sliding_box", {{"mu", "0"}});
   for (const auto& row : frictionless.rows) {
-    const auto drawn = kinds(as<SlidingBoxDiagram>(frictionless).forces(row));
+    const auto drawn = kinds(diagram_as<SlidingBoxDiagram>(frictionless).forces(row));
     CHECK(std::count(drawn.begin(), drawn.end(), ForceKind::friction) == 0);
   }
   CHECK(key_names(*frictionless.diagram) == std::vector<std::string>{"−s(u) spring", "mg, N weight, floor"});
   CHECK(frictionless.diagram->force_key()->note == "<i>mg</i>, <i>N</i> not to scale");  // no "f drawn ×5"
 
   const Run undamped = run_of("bumpy_road", {{"b", "0"}});
-  for (const auto& row : undamped.rows) CHECK(as<BumpyRoadDiagram>(undamped).forces(row).size() == 1);
+  for (const auto& row : undamped.rows) CHECK(diagram_as<BumpyRoadDiagram>(undamped).forces(row).size() == 1);
   CHECK(key_names(*undamped.diagram) == std::vector<std::string>{"−ku spring beyond its static load"});
   const Run damped = run_of("bumpy_road");
   for (const auto& row : damped.rows)
-    CHECK(kinds(as<BumpyRoadDiagram>(damped).forces(row)) == std::vector{ForceKind::spring, ForceKind::damper});
+    CHECK(kinds(diagram_as<BumpyRoadDiagram>(damped).forces(row)) == std::vector{ForceKind::spring, ForceKind::damper});
   CHECK(key_names(*damped.diagram).size() == 2);
 
   CHECK(key_names(*run_of("spring").diagram) == std::vector<std::string>{"−ku spring"});
@@ -352,16 +348,16 @@ TEST_CASE("no force arrow passes through the ground or a wall, in any state", "[
   for (const char* mu : {"0.02", "0.08", "0.3", "2"}) {
     const Run r = run_of("sliding_box", {{"mu", mu}});
     for (const auto& row : r.rows)
-      for (const DrawnForce& f : as<SlidingBoxDiagram>(r).forces(row)) CHECK(inside(f.arrow));
+      for (const DrawnForce& f : diagram_as<SlidingBoxDiagram>(r).forces(row)) CHECK(inside(f.arrow));
   }
   for (const char* scene : {"spring", "spring_dashpot"}) {
     const Run r = run_of(scene);
     for (const auto& row : r.rows)
-      for (const Arrow& a : as<OscillatorDiagram>(r).force_arrows(row)) CHECK(inside(a));
+      for (const Arrow& a : diagram_as<OscillatorDiagram>(r).force_arrows(row)) CHECK(inside(a));
   }
   for (const Settings& s : {Settings{}, Settings{{"V", "3"}}, Settings{{"h0", "0.2"}, {"C_R", "0.95"}}}) {
     const Run r = run_of("bouncing_ball", s);
-    auto& d = as<BouncingBallDiagram>(r);
+    auto& d = diagram_as<BouncingBallDiagram>(r);
     for (const auto& row : r.rows) {
       CHECK(std::min(d.velocity_arrow(row).from.y(), d.velocity_arrow(row).to.y()) >= -1e-12);
       for (const DrawnForce& f : d.forces(row)) CHECK(std::min(f.arrow.from.y(), f.arrow.to.y()) >= -1e-12);
@@ -369,7 +365,7 @@ TEST_CASE("no force arrow passes through the ground or a wall, in any state", "[
   }
   // The road's car: the arrows stay on the body, above its axle, never in the road.
   const Run road = run_of("bumpy_road");
-  auto& car = as<BumpyRoadDiagram>(road);
+  auto& car = diagram_as<BumpyRoadDiagram>(road);
   for (const auto& row : road.rows)
     for (const DrawnForce& f : car.forces(row)) CHECK(std::min(f.arrow.from.y(), f.arrow.to.y()) > car.axle(row).y());
 }
@@ -378,7 +374,7 @@ TEST_CASE("the bumpy road's spring and damper arrows point against u and u' (-ku
   const Run road = run_of("bumpy_road");
   int up = 0, down = 0;
   for (const auto& row : road.rows) {
-    const auto forces = as<BumpyRoadDiagram>(road).forces(row);
+    const auto forces = diagram_as<BumpyRoadDiagram>(road).forces(row);
     REQUIRE(forces.size() == 2);
     const double spring = forces[0].arrow.to.y() - forces[0].arrow.from.y();
     const double damper = forces[1].arrow.to.y() - forces[1].arrow.from.y();

@@ -9,16 +9,12 @@
 
 using vibra::test::check_refused;
 using vibra::test::check_refusal;
+using vibra::test::read_file;
 using vibra::test::run_vibra;
 using vibra::test::ScratchDirectory;
 namespace fs = std::filesystem;
 
 namespace {
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 size_t count(const std::string& text, const std::string& what) {
   size_t n = 0;
   for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
@@ -27,7 +23,7 @@ size_t count(const std::string& text, const std::string& what) {
 
 size_t lines(const std::string& text) { return count(text, "\n"); }
 
-const std::string kShort = " --size 320x180 --set periods=0.5 -q ";  // 31 frames at 30 fps, 61 steps
+const std::string kShortPage = " --size 320x180 --set periods=0.5 -q ";  // 31 frames at 30 fps, 61 steps
 }  // namespace
 
 TEST_CASE("a lecture page: video sources, plots' data, each fact once, the command, downloads", "[page][video]") {
@@ -35,7 +31,7 @@ TEST_CASE("a lecture page: video sources, plots' data, each fact once, the comma
   fs::create_directory(dir.path / "my lectures ø");
   const fs::path page = dir.path / "my lectures ø" / "Pendel #1 ø.html";
   // From the scratch folder, as given: the page's "Made by" shows it so (an absolute path would be shown relative).
-  REQUIRE(run_vibra("render" + kShort + "--set scheme=rk4 --set alpha=0.3 --every 4 -o 'my lectures ø/Pendel #1 ø.html'",
+  REQUIRE(run_vibra("render" + kShortPage + "--set scheme=rk4 --set alpha=0.3 --every 4 -o 'my lectures ø/Pendel #1 ø.html'",
                     "cd '" + dir.path.string() + "' && ")
               .exit_code == 0);
   const std::string html = read_file(page);
@@ -77,7 +73,7 @@ TEST_CASE("a lecture page: video sources, plots' data, each fact once, the comma
 
 TEST_CASE("a frames-player page: PNG frames and the same page around them", "[page]") {
   ScratchDirectory dir;
-  REQUIRE(run_vibra("render" + kShort + "--frames-player -o " + (dir / "player.html")).exit_code == 0);
+  REQUIRE(run_vibra("render" + kShortPage + "--frames-player -o " + (dir / "player.html")).exit_code == 0);
   CHECK(fs::exists(dir / "player_files/frame_0030.png"));
   CHECK(fs::exists(dir / "player_files/player.csv"));
   const std::string html = read_file(dir / "player.html");
@@ -102,8 +98,8 @@ TEST_CASE("a run too long for the page's data budget is decimated, not refused",
 }
 
 TEST_CASE("pages refuse what they cannot write, leaving nothing behind", "[page]") {
-  check_refused("render" + kShort + "--every 0 -o OUT.html", "--every: 0 must be a whole number 1..");
-  check_refused("render" + kShort + "--every 5 -o OUT.mp4", "--every thins the CSV beside a page");
+  check_refused("render" + kShortPage + "--every 0 -o OUT.html", "--every: 0 must be a whole number 1..");
+  check_refused("render" + kShortPage + "--every 5 -o OUT.mp4", "--every thins the CSV beside a page");
   check_refused("plot pendulum --panels theta,phase -o OUT.html", "panel 'phase' is not against t");
   check_refused("plot pendulum --size 800x600 -o OUT.html", "drop --size");
   check_refused("plot pendulum -o /proc/version/figure.html", "not a directory");
@@ -111,7 +107,7 @@ TEST_CASE("pages refuse what they cannot write, leaving nothing behind", "[page]
   // The companions' folder name is taken by a file of the user's: nothing of the page is left.
   ScratchDirectory dir;
   std::ofstream(dir.path / "lecture_files") << "mine";
-  const auto r = run_vibra("render" + kShort + "-o " + (dir / "lecture.html"));
+  const auto r = run_vibra("render" + kShortPage + "-o " + (dir / "lecture.html"));
   check_refusal(r, "was not written by vibra");
   const std::string taken = dir / "lecture_files";
   CHECK_THAT(r.err, Catch::Contains(taken) && Catch::Contains("--force"));

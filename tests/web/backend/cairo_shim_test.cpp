@@ -5,21 +5,13 @@
 #include <cmath>
 #include <memory>
 
+#include "shim_recording.hpp"
 #include "web/canvas/surface_commands.hpp"
 
+using vibra::web::test::Recording;
+using vibra::web::test::recording;
+
 namespace {
-
-struct Recording {
-  std::shared_ptr<cairo_surface_t> surface;
-  std::shared_ptr<cairo_t> cr;
-};
-
-Recording recording(double width, double height) {
-  const cairo_rectangle_t extents{0, 0, width, height};
-  std::shared_ptr<cairo_surface_t> s(cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, &extents),
-                                     cairo_surface_destroy);
-  return {s, std::shared_ptr<cairo_t>(cairo_create(s.get()), cairo_destroy)};
-}
 
 std::string drawn(const Recording& r) { return vibra::web::describe(vibra::web::commands_of(r.surface.get())); }
 

@@ -4,9 +4,13 @@
 #include <catch2/catch.hpp>
 #include <memory>
 
+#include "shim_recording.hpp"
 #include "web/canvas/surface_commands.hpp"
 #include "web/canvas/text_measure.hpp"
 #include "web/shim/pango_markup.hpp"
+
+using vibra::web::test::Recording;
+using vibra::web::test::recording;
 
 namespace {
 
@@ -18,18 +22,6 @@ std::shared_ptr<PangoLayout> layout_of(cairo_t* cr, const char* markup, double s
   pango_font_description_free(font);
   pango_layout_set_markup(layout.get(), markup, -1);
   return layout;
-}
-
-/// A 200x100 recording surface and a context drawing into it.
-struct Recording {
-  std::shared_ptr<cairo_surface_t> surface;
-  std::shared_ptr<cairo_t> context;
-};
-Recording recording() {
-  const cairo_rectangle_t extents{0, 0, 200, 100};
-  std::shared_ptr<cairo_surface_t> s(cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, &extents),
-                                     cairo_surface_destroy);
-  return {s, std::shared_ptr<cairo_t>(cairo_create(s.get()), cairo_destroy)};
 }
 
 }  // namespace
@@ -49,9 +41,9 @@ TEST_CASE("markup becomes runs with italic, sizes, rises and entities", "[web-ba
 
 TEST_CASE("a layout is measured by the text measure and drawn at its baseline from the current point",
           "[web-backend]") {
-  const Recording r = recording();
+  const Recording r = recording(200, 100);
   const auto& s = r.surface;
-  const auto& cr = r.context;
+  const auto& cr = r.cr;
   const auto layout = layout_of(cr.get(), "<i>m</i>g", 20);
   PangoRectangle ink, logical;
   pango_layout_get_pixel_extents(layout.get(), &ink, &logical);
@@ -75,9 +67,9 @@ TEST_CASE("a layout is measured by the text measure and drawn at its baseline fr
 
 TEST_CASE("a layout shown at a fractional point sets its glyphs at whole pixels, as Cairo's image compositor",
           "[web-backend]") {
-  const Recording r = recording();
+  const Recording r = recording(200, 100);
   const auto& s = r.surface;
-  const auto& cr = r.context;
+  const auto& cr = r.cr;
   const auto layout = layout_of(cr.get(), "x", 20);
   cairo_move_to(cr.get(), 10.3, 30.6);
   pango_cairo_show_layout(cr.get(), layout.get());
@@ -88,8 +80,8 @@ TEST_CASE("a layout shown at a fractional point sets its glyphs at whole pixels,
 
 TEST_CASE("a superscript raises the line's baseline and a subscript lowers its bottom, as native Pango",
           "[web-backend]") {
-  const Recording r = recording();
-  const auto& cr = r.context;
+  const Recording r = recording(200, 100);
+  const auto& cr = r.cr;
   // Native Pango 1.50's baselines of "10<sup>−8</sup>x": 13.3994 px at 11.25 px, 17.2002 px at 15 px (the
   // superscript 983/2048 em up, its own hinted ascent over that), where plain text has 11 and 14.
   CHECK(pango_layout_get_baseline(layout_of(cr.get(), "10<sup>−8</sup>x", 11.25).get()) == 13721);
@@ -119,9 +111,9 @@ TEST_CASE("a line's ascent and descent are the whole pixels native Pango gives D
 }
 
 TEST_CASE("text laid on the path is stroked with the pen, as a label's halo", "[web-backend]") {
-  const Recording r = recording();
+  const Recording r = recording(200, 100);
   const auto& s = r.surface;
-  const auto& cr = r.context;
+  const auto& cr = r.cr;
   const auto layout = layout_of(cr.get(), "x", 10);
   cairo_move_to(cr.get(), 0, 0);
   pango_cairo_layout_path(cr.get(), layout.get());
@@ -133,8 +125,8 @@ TEST_CASE("text laid on the path is stroked with the pen, as a label's halo", "[
 }
 
 TEST_CASE("a layout wider than its width ends in an ellipsis that fits", "[web-backend]") {
-  const Recording r = recording();
-  const auto& cr = r.context;
+  const Recording r = recording(200, 100);
+  const auto& cr = r.cr;
   const auto layout = layout_of(cr.get(), "abcdefghij", 10);  // 60 px
   pango_layout_set_width(layout.get(), 30 * PANGO_SCALE);
   pango_layout_set_ellipsize(layout.get(), PANGO_ELLIPSIZE_END);
@@ -144,9 +136,9 @@ TEST_CASE("a layout wider than its width ends in an ellipsis that fits", "[web-b
 }
 
 TEST_CASE("each glyph advances a whole number of pixels, as Pango's hinted metrics on an image", "[web-backend]") {
-  const Recording r = recording();
+  const Recording r = recording(200, 100);
   const auto& s = r.surface;
-  const auto& cr = r.context;
+  const auto& cr = r.cr;
   const auto layout = layout_of(cr.get(), "abc", 11);  // 6.6 px a glyph, measured
   PangoRectangle logical;
   pango_layout_get_pixel_extents(layout.get(), nullptr, &logical);
@@ -169,9 +161,9 @@ vibra::web::TextExtent kerned_measure(const std::string&, double, const std::str
 
 TEST_CASE("a glyph's advance carries its kerning with the next glyph before it is rounded, as harfbuzz and Pango",
           "[web-backend]") {
-  const Recording r = recording();
+  const Recording r = recording(200, 100);
   const auto& s = r.surface;
-  const auto& cr = r.context;
+  const auto& cr = r.cr;
   const vibra::web::MeasureText before = vibra::web::text_measure();
   vibra::web::set_text_measure(kerned_measure);
   const auto layout = layout_of(cr.get(), "re", 11.25);
