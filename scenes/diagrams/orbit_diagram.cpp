@@ -28,10 +28,10 @@ std::vector<PanelSpec> OrbitDiagram::panels() const {
   // orbit shows its scheme: at 200 steps an orbit Euler-Cromer's radius
   // swings by 1e-2, PEFRL's by 2e-8 (the axis states the power of ten once). The panels sample rows
   // after record() has seen the first one.
+  const auto radius_drift = [this](std::span<const double> r) { return planar_position(r).norm() - start_radius_; };
   return {{"<i>x</i>", {{"", colors_.bob, [](std::span<const double> r) { return r[1]; }}}},
           {"<i>y</i>", {{"", colors_.bob, [](std::span<const double> r) { return r[2]; }}}},
-          {"<i>r</i> − <i>r</i>(0)",
-           {{"", colors_.bob, [this](std::span<const double> r) { return planar_position(r).norm() - start_radius_; }}}}};
+          {"<i>r</i> − <i>r</i>(0)", {{"", colors_.bob, radius_drift}}}};
 }
 
 void OrbitDiagram::record(std::span<const double> row, WorldBox& world) {
@@ -66,8 +66,8 @@ void OrbitDiagram::finish_recording(WorldBox& world) {
 }
 
 std::array<Arrow, 2> OrbitDiagram::arrows(std::span<const double> row) const {
-  const Point x = planar_position(row);
-  return {Arrow{x, x + gravity_.per_force() * gravity(row)}, Arrow{x, x + speed_.per_force() * planar_velocity(row)}};
+  const Point x = planar_position(row), v = planar_velocity(row);
+  return {Arrow{x, x + gravity_.per_force() * gravity(row)}, Arrow{x, x + speed_.per_force() * v}};
 }
 
 void OrbitDiagram::draw_static(render::Canvas& canvas, const render::WorldView& view) const {
