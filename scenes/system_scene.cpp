@@ -93,6 +93,11 @@ void SystemScene::observe_between(std::span<const double> row) {
   for (auto& panel : panels_) panel->observe_between(row);
 }
 
+void SystemScene::look_ahead(std::span<const double> next_sample) {
+  for (auto& panel : panels_) panel->look_ahead(next_sample);
+  if (bars_) bars_->look_ahead(next_sample);
+}
+
 double SystemScene::sample_interval() const {
   double finest = 0;
   for (const auto& panel : panels_)

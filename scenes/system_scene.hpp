@@ -38,6 +38,7 @@ class SystemScene final : public Scene {
   void observe(std::span<const double> row) override;
   void record_between(std::span<const double> row) override;
   void observe_between(std::span<const double> row) override;
+  void look_ahead(std::span<const double> next_sample) override;
   double sample_interval() const override;
   void draw(render::Canvas&, std::span<const double> row) override;
   void skip(const render::Canvas&, std::span<const double> row) override;
@@ -57,6 +58,8 @@ class SystemScene final : public Scene {
   }
   /// Where the diagram, its caption and read-out are drawn.
   const render::PixelRect& diagram_area() const { return diagram_area_; }
+  /// Panel i beside the diagram, top to bottom.
+  const ScenePanel& panel(size_t i) const { return *panels_.at(i); }
   /// The title and equation across the top.
   const FrameHeading& heading() const { return heading_; }
   /// Where its labels may go: the drawing area short of the energy bars (after a frame is drawn).

@@ -73,6 +73,10 @@ void PlotScene::observe_between(std::span<const double> row) {
   for (auto& panel : panels_) panel.observe_between(row);
 }
 
+void PlotScene::look_ahead(std::span<const double> next_sample) {
+  for (auto& panel : panels_) panel.look_ahead(next_sample);
+}
+
 double PlotScene::sample_interval() const {
   double finest = 0;
   for (const auto& panel : panels_)

@@ -91,10 +91,18 @@ void EnergyBars::record(std::span<const double> row) {
 }
 
 void EnergyBars::observe(std::span<const double> row) {
+  bracket_.observe(row);
   if (power_) work_.add(row[0], power_(row));
 }
 
-EnergyBudget EnergyBars::at(std::span<const double> row) const { return budget(row, work_); }
+EnergyBudget EnergyBars::at(std::span<const double> row) const {
+  const std::optional<double> s = bracket_.fraction(row[0]);
+  if (!s) return budget(row, work_);
+  const std::array<double, 4> from = values(budget(bracket_.before(), work_)), to = values(budget(bracket_.after(), work_));
+  std::array<double, 4> v;
+  for (size_t k = 0; k < v.size(); ++k) v[k] = from[k] + *s * (to[k] - from[k]);
+  return {v[0], v[1], v[2], v[3]};
+}
 
 void EnergyBars::place(const render::PixelRect& area, double scale) { area_ = area, scale_ = scale; }
 

@@ -6,6 +6,7 @@
 
 #include "core/trajectory.hpp"
 #include "render/draw/canvas.hpp"
+#include "scenes/panels/sample_bracket.hpp"
 
 namespace vibra::scenes {
 
@@ -62,7 +63,11 @@ class EnergyBars {
   void record(std::span<const double> row);
   /// Every solver step of the render pass: the forcing's work.
   void observe(std::span<const double> row);
-  /// The budget at a frame's row (at or before the newest step observed).
+  /// The solver's next sample after the frame's time, or empty (Scene::look_ahead).
+  void look_ahead(std::span<const double> next_sample) { bracket_.look_ahead(next_sample); }
+  /// The budget at a frame's row (at or before the newest step observed);
+  /// between two samples of a fixed-step run, each part on the straight line
+  /// between its values at them, so the parts still add up to E(0) + W.
   EnergyBudget at(std::span<const double> row) const;
   /// The fixed scale [lo, hi] (after the pre-pass): 0 and every value lie inside.
   double lo() const { return lo_; }
@@ -94,6 +99,7 @@ class EnergyBars {
   std::string unit_;
   double E0_ = NAN;
   ForcingWork pre_pass_work_, work_;
+  SampleBracket bracket_;  ///< the render pass's samples around the frame
   double lo_ = 0, hi_ = 0;
   render::PixelRect area_;
   double scale_ = 1;

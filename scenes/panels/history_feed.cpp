@@ -19,7 +19,8 @@ HistoryFeed::HistoryFeed(Trajectory& trajectory, Scene& scene, double interval)
                     : 0),
       previous_t_(trajectory.t()),
       row_(trajectory.width()),
-      between_(trajectory.width()) {
+      between_(trajectory.width()),
+      ahead_(trajectory.width()) {
   if (!std::isfinite(interval_)) interval_ = 0;
 }
 
@@ -61,6 +62,15 @@ std::span<const double> HistoryFeed::row_at(double t) {
     poll_stop();
   }
   trajectory_.row_at(t, row_);
+  // Between two samples of a run that is straight between them, the scene
+  // gets the next one too: its panels draw a quantity of the rows on the
+  // line between the samples' values, where their curves run.
+  if (!trajectory_.bends_between_samples() && t < trajectory_.t()) {
+    trajectory_.row(ahead_);
+    scene_.look_ahead(ahead_);
+  } else {
+    scene_.look_ahead({});
+  }
   return row_;
 }
 

@@ -43,7 +43,8 @@ class HistoryFeed {
     } while (trajectory_.advance());
   }
 
-  /// The render pass: observes everything up to t, then returns the row at t.
+  /// The render pass: observes everything up to t, then returns the row at t
+  /// (and gives the scene the next sample, Scene::look_ahead).
   std::span<const double> row_at(double t);
 
  private:
@@ -58,7 +59,7 @@ class HistoryFeed {
   long long next_grid_ = 1;      ///< the next grid time to feed is next_grid_ * interval_
   bool step_observed_ = false;   ///< the current step's row was observed
   long long polls_ = 0;
-  std::vector<double> row_, between_;
+  std::vector<double> row_, between_, ahead_;
 };
 
 }  // namespace vibra::scenes

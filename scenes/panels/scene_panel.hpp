@@ -24,6 +24,8 @@ class ScenePanel {
   /// by an impact): curves pass through them, but they are no mesh points.
   virtual void record_between(std::span<const double> row) { record(row); }
   virtual void observe_between(std::span<const double> row) { observe(row); }
+  /// The solver's next sample after the frame's time, or empty (Scene::look_ahead).
+  virtual void look_ahead(std::span<const double> next_sample) { (void)next_sample; }
   /// Simulated time per pixel column of its curves; 0 when not against time.
   virtual double time_per_column() const { return 0; }
   /// After the pre-pass: fixes the ranges.

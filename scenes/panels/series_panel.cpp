@@ -43,8 +43,19 @@ SeriesPanel::SeriesPanel(const render::PixelRect& outer, double scale, std::stri
 
 void SeriesPanel::record(std::span<const double> row) { add_row(row, true); }
 void SeriesPanel::record_between(std::span<const double> row) { add_row(row, false); }
-void SeriesPanel::observe(std::span<const double> row) { add_recent(row, true); }
+void SeriesPanel::observe(std::span<const double> row) {
+  bracket_.observe(row);
+  add_recent(row, true);
+}
 void SeriesPanel::observe_between(std::span<const double> row) { add_recent(row, false); }
+
+double SeriesPanel::value_drawn(size_t i, double t, std::span<const double> row) const {
+  const SeriesSpec& s = series_[i];
+  if (s.of_time) return s.of_time(t);
+  if (!s.mesh_values) return s.value(row);
+  if (const std::optional<double> on_chord = bracket_.on_chord(t, s.value)) return *on_chord;
+  return s.value(row);
+}
 
 void SeriesPanel::add_row(std::span<const double> row, bool mesh_row) {
   for (size_t i = 0; i < series_.size(); ++i) {
@@ -167,7 +178,7 @@ void SeriesPanel::draw_progress(LayerGrowth& growth, std::span<const double> row
   const double t = std::min(row[0], t_end_), until_x = panel_.to_pixel(t, 0).x();
   // Each curve ends where it is at t: its value from the solution at t.
   auto now = [&](size_t i) -> std::optional<render::Point> {
-    const double value = series_[i].of_time ? series_[i].of_time(t) : series_[i].value(row);
+    const double value = value_drawn(i, t, row);
     if (!std::isfinite(value)) return std::nullopt;
     return panel_.to_pixel(t, value);
   };
@@ -212,7 +223,7 @@ void SeriesPanel::draw_cursors(render::Canvas& canvas, double t, std::span<const
   // that coincide still show each run where it is.
   for (size_t i : order_) {
     if (series_[i].dashed) continue;
-    const double value = series_[i].value(row);
+    const double value = value_drawn(i, t, row);
     if (!std::isfinite(value)) continue;
     if (i == 0) panel_.draw_cursor(canvas, t, value, series_[i].color);
     else render::fill_pixel_disc(canvas, panel_.to_pixel(t, value), 4 * panel_.scale(), series_[i].color);
@@ -241,7 +252,7 @@ void SeriesPanel::draw(render::Canvas& canvas, double t, std::span<const double>
     auto points = envelope.polyline(envelope.column_of(x0), envelope.column_of(last_x) - (mode_ == WindowMode::jumps),
                                     [&](double x, double y) { return panel_.to_pixel(x, y); });
     // On from the last sample to where the curve is at t (the cursor).
-    if (const double value = series_[i].value(row); mode_ != WindowMode::jumps && std::isfinite(value)) {
+    if (const double value = value_drawn(i, t, row); mode_ != WindowMode::jumps && std::isfinite(value)) {
       const render::Point now = panel_.to_pixel(t, value);
       if (points.empty() || now.x() > points.back().x()) points.push_back(now);
     }

@@ -10,6 +10,7 @@
 #include "render/plot/column_envelope.hpp"
 #include "render/plot/plot_panel.hpp"
 #include "render/plot/rolling_envelope.hpp"
+#include "scenes/panels/sample_bracket.hpp"
 #include "scenes/panels/scene_panel.hpp"
 
 namespace vibra::scenes {
@@ -60,6 +61,7 @@ class SeriesPanel final : public ScenePanel {
   /// Rows between steps: on the curves, but not marked as mesh points.
   void record_between(std::span<const double> row) override;
   void observe_between(std::span<const double> row) override;
+  void look_ahead(std::span<const double> next_sample) override { bracket_.look_ahead(next_sample); }
   /// Fixes the y range after the pre-pass.
   void finish_recording() override;
   double time_per_column() const override { return window_ / std::max(1, panel_.columns()); }
@@ -89,6 +91,10 @@ class SeriesPanel final : public ScenePanel {
   /// The dynamic part at time t: the cursor, and for window modes the axes
   /// and curves too (they move). `row` is the solution at t.
   void draw(render::Canvas&, double t, std::span<const double> row, bool time_labels) const override;
+  /// Series i's value as drawn at the frame's time t, where `row` is the
+  /// state then: a value of its row alone on the straight line between its
+  /// values at the samples around t (SampleBracket), where its curve runs.
+  double value_drawn(size_t i, double t, std::span<const double> row) const;
   /// The radius of series i's mesh-point marks (pixels), 0 for none.
   double marker_radius(size_t i) const;
   /// Series i's mesh points marked so far (time, value): the whole run's
@@ -125,6 +131,7 @@ class SeriesPanel final : public ScenePanel {
   bool first_curve_seen_ = false;
   mutable std::vector<render::GrowingPolyline> whole_curves_;
   double mesh_dt_ = 0;
+  SampleBracket bracket_;  ///< the render pass's samples around the frame
   std::vector<std::vector<std::pair<double, double>>> marks_;  ///< per series: (t, value) of mesh rows
   /// Series indices in drawing order: the runs' curves, the first (measured)
   /// last of them so that it is on top; then the dashed references (exact
