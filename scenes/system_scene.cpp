@@ -119,11 +119,11 @@ void SystemScene::prepare() {
     view_area_.h -= caption_->height() - caption_->line_height;
   }
   diagram_->finish_recording(world_);
-  // The force key's names take rows above its scale's line (known now: a
-  // pendulum without drag names no drag).
+  // The force key's names (and a long note) take rows above its scale's
+  // line (known now: a pendulum without drag names no drag).
   if (const std::optional<ForceKey> key = diagram_->force_key()) {
     render::Canvas measure = render::Canvas::image(1, height_);
-    view_area_.h -= force_names_height(measure, *key, key_width(measure.scale()));
+    view_area_.h -= force_key_rows_height(measure, *key, key_width(measure.scale()));
   }
   place_legend();
   view_.emplace(world_, view_area_);

@@ -34,6 +34,18 @@ std::vector<NameSpot> name_spots(render::Canvas& canvas, const ForceKey& key, do
   return spots;
 }
 
+/// Whether the note takes a row of its own above the scale's line: beside
+/// the longest arrow and a long value it would run past `width` (into the
+/// energy bars' labels at 640x360). Decided without the value, so that the
+/// layout's room and the drawing agree.
+bool note_on_own_row(render::Canvas& canvas, const ForceKey& key, double width) {
+  if (key.note.empty()) return false;
+  const render::TextStyle style{kTextSize};
+  const double line = render::text_size(canvas, "force scale", style).x() + (8 + kLongest + 6) * canvas.scale() +
+                      render::text_size(canvas, "= 0.05 " + key.unit + "   (" + key.note + ")", style).x();
+  return line > width;
+}
+
 std::string value_text(double f) {
   char text[48];
   std::snprintf(text, sizeof text, "%g", f);
@@ -62,9 +74,9 @@ double force_key_value(const ForceKey& key, double pixels_per_world, double scal
   return power;
 }
 
-double force_names_height(render::Canvas& canvas, const ForceKey& key, double width) {
-  if (key.names.empty()) return 0;
-  return (name_spots(canvas, key, width).back().row + 1) * kNameRow * canvas.scale();
+double force_key_rows_height(render::Canvas& canvas, const ForceKey& key, double width) {
+  const int names = key.names.empty() ? 0 : name_spots(canvas, key, width).back().row + 1;
+  return (names + note_on_own_row(canvas, key, width)) * kNameRow * canvas.scale();
 }
 
 double draw_force_key(render::Canvas& canvas, const ForceKey& key, double pixels_per_world,
@@ -74,7 +86,8 @@ double draw_force_key(render::Canvas& canvas, const ForceKey& key, double pixels
   if (f <= 0) return 0;
   const render::TextStyle style{kTextSize, ink};
   std::string text = "= " + value_text(f) + (key.unit.empty() ? "" : " " + key.unit);
-  if (!key.note.empty()) text += "   (" + key.note + ")";
+  const bool note_row = note_on_own_row(canvas, key, width);
+  if (!key.note.empty() && !note_row) text += "   (" + key.note + ")";
   const render::Point size = render::text_size(canvas, "force scale " + text, style);
   const double y = bottom_left.y() - 0.5 * size.y();
   const double length = f * key.world_per_force * pixels_per_world;
@@ -83,17 +96,21 @@ double draw_force_key(render::Canvas& canvas, const ForceKey& key, double pixels
   render::draw_pixel_arrow(canvas, {x, y}, {x + length, y}, {ink, 2.2}, 12);
   x += length + 6 * scale;
   render::draw_text(canvas, {x, y}, text, style, render::Anchor::left);
-  // The names in rows above the scale's line, each after an arrow in its colour.
+  // The note in a row of its own above the scale's line where it does not fit beside it.
+  const double rows = force_key_rows_height(canvas, key, width);
+  if (note_row)
+    render::draw_text(canvas, {bottom_left.x(), bottom_left.y() - size.y() - 0.5 * kNameRow * scale}, "(" + key.note + ")",
+                      style, render::Anchor::left);
+  // The names in rows above those, each after an arrow in its colour.
   const std::vector<NameSpot> spots = name_spots(canvas, key, width);
-  const double names = force_names_height(canvas, key, width);
-  const double top = bottom_left.y() - size.y() - names;
+  const double top = bottom_left.y() - size.y() - rows;
   for (size_t i = 0; i < spots.size(); ++i) {
     const double row_y = top + (spots[i].row + 0.5) * kNameRow * scale, left = bottom_left.x() + spots[i].x;
     render::draw_pixel_arrow(canvas, {left, row_y}, {left + kNameArrow * scale, row_y}, {key.names[i].color, 2.6}, 9);
     render::draw_text(canvas, {left + (kNameArrow + kNameGap) * scale, row_y}, key.names[i].name, style,
                       render::Anchor::left);
   }
-  return size.y() + names;
+  return size.y() + rows;
 }
 
 }  // namespace vibra::scenes

@@ -29,13 +29,16 @@ struct ForceKey {
 /// at `pixels_per_world`. 0 when the scale is not positive and finite.
 double force_key_value(const ForceKey&, double pixels_per_world, double scale);
 
-/// The height of the key's names (rows of coloured arrows and names, as
-/// many as `width` pixels need), at the canvas's scale; 0 without names.
-double force_names_height(render::Canvas&, const ForceKey&, double width);
+/// The height of the key's rows above its scale's line, at the canvas's
+/// scale: the names (coloured arrows and names, in as many rows as `width`
+/// pixels need) and the note, where it does not fit beside the scale; 0
+/// without either.
+double force_key_rows_height(render::Canvas&, const ForceKey&, double width);
 
 /// Draws the key with its bottom-left corner at `bottom_left` (pixels): the
 /// names in rows within `width`, then a line with the scale's arrow, "= 2 N"
-/// and the note. Returns its height (0 when nothing is drawn).
+/// and the note (on a row of its own above where it would run past
+/// `width`). Returns its height (0 when nothing is drawn).
 double draw_force_key(render::Canvas&, const ForceKey&, double pixels_per_world, const render::Point& bottom_left,
                       double width, const render::Color& ink);
 

@@ -303,3 +303,51 @@ TEST_CASE("no line is drawn thinner than a pixel, so a thumbnail's lines stay da
   REQUIRE(record.outline.shapes().size() == 1);
   CHECK(record.outline.shapes()[0].half_width == Approx(0.5));  // the label placer sees what is drawn
 }
+
+TEST_CASE("the force key keeps to its width: a note too long for the scale's line takes a row of its own",
+          "[legibility][forces]") {
+  // At 640x360 beside energy bars, under a caption of two lines, "force
+  // scale -> = 2 mg   (burst: impulse at impact)" ran under the bars' labels.
+  const std::string caption = "h0 = 1 m · <i>C</i><sub>R</sub> = 0.8 · ε<sub>v</sub> = 0.1 m/s · Δ<i>t</i> = 0.00903 s · "
+                              "velocity-verlet";
+  // Each scene and whether its key has a note (what is drawn at another scale).
+  const std::pair<const char*, int> scenes_notes[] = {{"bouncing_ball", 1}, {"sliding_box", 1},     {"pendulum", 1},
+                                                      {"washing_machine", 1}, {"bumpy_road", 1}, {"elastic_pendulum", 0},
+                                                      {"spring_dashpot", 1},  {"spring", 1}};
+  for (const auto& [name, has_note] : scenes_notes)
+    for (const auto& [width, height] : {std::pair{640, 360}, std::pair{1280, 720}}) {
+      INFO(name << " at " << width << "x" << height);
+      vibra::scenes::SceneConfig config = vibra::scenes::load_scene(name);
+      vibra::scenes::apply_setting(config, {"energy_bars", "true", "test"});
+      config.width = width, config.height = height;
+      auto run = vibra::scenes::build_scene_runs(config);
+      auto scene = vibra::scenes::make_scene_for(config, *run, caption);
+      std::vector<double> row(run->width());
+      run->row(row);
+      scene->record(row);
+      while (run->advance()) run->row(row), scene->record(row);
+      Canvas canvas = Canvas::image(width, height);
+      scene->draw(canvas, row);
+      const vibra::render::Outline& outline = scene->last_layout()->outline;
+      auto is_bar_label = [](const OutlineShape& s) {
+        return s.kind == OutlineKind::text &&
+               (s.name == "kinetic" || s.name == "potential" || s.name == "dissipated" || s.name == "work of F");
+      };
+      REQUIRE(std::count_if(outline.shapes().begin(), outline.shapes().end(), is_bar_label) >= 3);
+      int notes = 0, scales = 0;
+      for (const OutlineShape& s : outline.shapes()) {
+        if (s.kind != OutlineKind::text) continue;
+        const bool scale_line = s.name.rfind("= ", 0) == 0, own_row = s.name.rfind("(", 0) == 0;
+        if (!scale_line && !own_row && s.name != "force scale") continue;
+        scales += scale_line;
+        notes += own_row || s.name.find("   (") != std::string::npos;
+        for (const OutlineShape& label : outline.shapes())
+          if (is_bar_label(label)) {
+            INFO("'" << s.name << "' and the bars' label '" << label.name << "'");
+            CHECK_FALSE(boxes_overlap(s.bounds, label.bounds));
+          }
+      }
+      CHECK(scales == 1);
+      CHECK(notes == has_note);
+    }
+}
