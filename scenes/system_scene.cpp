@@ -123,7 +123,9 @@ void SystemScene::prepare() {
   // line (known now: a pendulum without drag names no drag).
   if (const std::optional<ForceKey> key = diagram_->force_key()) {
     render::Canvas measure = render::Canvas::image(1, height_);
-    view_area_.h -= force_key_rows_height(measure, *key, key_width(measure.scale()));
+    const double width = key_width(measure.scale());
+    key_note_row_ = !force_note_fits(measure, *key, render::WorldView(world_, view_area_).zoom(), width);
+    view_area_.h -= force_key_rows_height(measure, *key, width, key_note_row_);
   }
   place_legend();
   view_.emplace(world_, view_area_);
@@ -155,7 +157,7 @@ void SystemScene::draw_static(render::Canvas& canvas) {
   }
   if (const std::optional<ForceKey> key = diagram_->force_key())
     draw_force_key(canvas, *key, view_->zoom(), {diagram_area_.x + 16 * scale, bottom}, key_width(scale),
-                   style_.colors.wire.with_alpha(0.75));
+                   key_note_row_, style_.colors.wire.with_alpha(0.75));
   canvas.record_into(nullptr);
   static_outline_ = std::move(record.outline);
 }

@@ -92,6 +92,7 @@ class SystemScene final : public Scene {
   /// The comparison's legend sits above the drawing instead of in a column
   /// beside it, when that draws the diagram larger (a wide drawing).
   bool legend_on_top_ = false;
+  bool key_note_row_ = false;  ///< the force key's note on a row of its own (decided with the layout)
   RunLegend legend_;
   std::vector<std::unique_ptr<ScenePanel>> panels_;
   size_t time_labels_panel_ = 0;  ///< the lowest panel against time labels the time axis

@@ -34,18 +34,6 @@ std::vector<NameSpot> name_spots(render::Canvas& canvas, const ForceKey& key, do
   return spots;
 }
 
-/// Whether the note takes a row of its own above the scale's line: beside
-/// the longest arrow and a long value it would run past `width` (into the
-/// energy bars' labels at 640x360). Decided without the value, so that the
-/// layout's room and the drawing agree.
-bool note_on_own_row(render::Canvas& canvas, const ForceKey& key, double width) {
-  if (key.note.empty()) return false;
-  const render::TextStyle style{kTextSize};
-  const double line = render::text_size(canvas, "force scale", style).x() + (8 + kLongest + 6) * canvas.scale() +
-                      render::text_size(canvas, "= 0.05 " + key.unit + "   (" + key.note + ")", style).x();
-  return line > width;
-}
-
 std::string value_text(double f) {
   char text[48];
   std::snprintf(text, sizeof text, "%g", f);
@@ -74,19 +62,30 @@ double force_key_value(const ForceKey& key, double pixels_per_world, double scal
   return power;
 }
 
-double force_key_rows_height(render::Canvas& canvas, const ForceKey& key, double width) {
+bool force_note_fits(render::Canvas& canvas, const ForceKey& key, double pixels_per_world, double width) {
+  if (key.note.empty()) return true;
+  // The longest arrow and a character more: the diagram's final zoom (after
+  // the rows are taken) may round the force to another value.
+  const double scale = canvas.scale(), f = force_key_value(key, pixels_per_world, scale);
+  const render::TextStyle style{kTextSize};
+  const std::string text = "= " + value_text(f) + (key.unit.empty() ? "" : " " + key.unit) + "   (" + key.note + ")";
+  const double line = render::text_size(canvas, "force scale", style).x() + (8 + kLongest + 6 + 10) * scale +
+                      render::text_size(canvas, text, style).x();
+  return line <= width;
+}
+
+double force_key_rows_height(render::Canvas& canvas, const ForceKey& key, double width, bool note_row) {
   const int names = key.names.empty() ? 0 : name_spots(canvas, key, width).back().row + 1;
-  return (names + note_on_own_row(canvas, key, width)) * kNameRow * canvas.scale();
+  return (names + note_row) * kNameRow * canvas.scale();
 }
 
 double draw_force_key(render::Canvas& canvas, const ForceKey& key, double pixels_per_world,
-                      const render::Point& bottom_left, double width, const render::Color& ink) {
+                      const render::Point& bottom_left, double width, bool note_row, const render::Color& ink) {
   const double scale = canvas.scale();
   const double f = force_key_value(key, pixels_per_world, scale);
   if (f <= 0) return 0;
   const render::TextStyle style{kTextSize, ink};
   std::string text = "= " + value_text(f) + (key.unit.empty() ? "" : " " + key.unit);
-  const bool note_row = note_on_own_row(canvas, key, width);
   if (!key.note.empty() && !note_row) text += "   (" + key.note + ")";
   const render::Point size = render::text_size(canvas, "force scale " + text, style);
   const double y = bottom_left.y() - 0.5 * size.y();
@@ -97,7 +96,7 @@ double draw_force_key(render::Canvas& canvas, const ForceKey& key, double pixels
   x += length + 6 * scale;
   render::draw_text(canvas, {x, y}, text, style, render::Anchor::left);
   // The note in a row of its own above the scale's line where it does not fit beside it.
-  const double rows = force_key_rows_height(canvas, key, width);
+  const double rows = force_key_rows_height(canvas, key, width, note_row);
   if (note_row)
     render::draw_text(canvas, {bottom_left.x(), bottom_left.y() - size.y() - 0.5 * kNameRow * scale}, "(" + key.note + ")",
                       style, render::Anchor::left);

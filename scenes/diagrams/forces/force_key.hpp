@@ -29,17 +29,21 @@ struct ForceKey {
 /// at `pixels_per_world`. 0 when the scale is not positive and finite.
 double force_key_value(const ForceKey&, double pixels_per_world, double scale);
 
+/// Whether the note fits on the scale's line within `width` pixels at this
+/// zoom, with room for the longest arrow (true without a note). Where it
+/// does not (a 640x360 frame beside energy bars), it takes a row of its own.
+bool force_note_fits(render::Canvas&, const ForceKey&, double pixels_per_world, double width);
+
 /// The height of the key's rows above its scale's line, at the canvas's
 /// scale: the names (coloured arrows and names, in as many rows as `width`
-/// pixels need) and the note, where it does not fit beside the scale; 0
-/// without either.
-double force_key_rows_height(render::Canvas&, const ForceKey&, double width);
+/// pixels need) and the note's own row with `note_row`; 0 without either.
+double force_key_rows_height(render::Canvas&, const ForceKey&, double width, bool note_row);
 
 /// Draws the key with its bottom-left corner at `bottom_left` (pixels): the
 /// names in rows within `width`, then a line with the scale's arrow, "= 2 N"
-/// and the note (on a row of its own above where it would run past
-/// `width`). Returns its height (0 when nothing is drawn).
+/// and the note (with `note_row`, on a row of its own above that line).
+/// Returns its height (0 when nothing is drawn).
 double draw_force_key(render::Canvas&, const ForceKey&, double pixels_per_world, const render::Point& bottom_left,
-                      double width, const render::Color& ink);
+                      double width, bool note_row, const render::Color& ink);
 
 }  // namespace vibra::scenes
