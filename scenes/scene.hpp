@@ -1,6 +1,7 @@
 // Scene: a picture of a solution at one instant, fed solution rows (record, observe, draw).
 #pragma once
 #include <span>
+#include <vector>
 
 #include "render/draw/canvas.hpp"
 #include "render/labels/drawing_record.hpp"
@@ -25,11 +26,11 @@ class Scene {
   /// The time between rows that the scene's curves resolve (a pixel
   /// column's worth, halved); 0 when solver steps are enough.
   virtual double sample_interval() const { return 0; }
-  /// Before draw() or skip() of a frame between two samples of a run that is
-  /// straight between them (a fixed-step run): the solver's next sample
-  /// (empty otherwise), so that a quantity of the rows is drawn on the line
-  /// between its values at the samples (SampleBracket).
-  virtual void look_ahead(std::span<const double> next_sample) { (void)next_sample; }
+  /// Before draw() or skip() of a frame: the next sample of each run that is
+  /// straight between its samples (Trajectory::straight_samples_ahead), so
+  /// that a quantity of the rows is drawn on the line between its values at
+  /// the samples around the frame, where its curve runs (SampleBracket).
+  virtual void look_ahead(std::span<const std::vector<double>> next_samples) { (void)next_samples; }
   virtual void draw(render::Canvas&, std::span<const double> row) = 0;
   /// A frame not drawn: keeps up what drawing it would have changed for the
   /// frames after it (the whole-run curves drawn so far), without drawing on

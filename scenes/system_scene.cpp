@@ -93,9 +93,9 @@ void SystemScene::observe_between(std::span<const double> row) {
   for (auto& panel : panels_) panel->observe_between(row);
 }
 
-void SystemScene::look_ahead(std::span<const double> next_sample) {
-  for (auto& panel : panels_) panel->look_ahead(next_sample);
-  if (bars_) bars_->look_ahead(next_sample);
+void SystemScene::look_ahead(std::span<const std::vector<double>> next_samples) {
+  for (auto& panel : panels_) panel->look_ahead(next_samples);
+  if (bars_) bars_->look_ahead(next_samples);
 }
 
 double SystemScene::sample_interval() const {

@@ -38,7 +38,7 @@ class SystemScene final : public Scene {
   void observe(std::span<const double> row) override;
   void record_between(std::span<const double> row) override;
   void observe_between(std::span<const double> row) override;
-  void look_ahead(std::span<const double> next_sample) override;
+  void look_ahead(std::span<const std::vector<double>> next_samples) override;
   double sample_interval() const override;
   void draw(render::Canvas&, std::span<const double> row) override;
   void skip(const render::Canvas&, std::span<const double> row) override;

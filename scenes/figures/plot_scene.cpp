@@ -73,8 +73,8 @@ void PlotScene::observe_between(std::span<const double> row) {
   for (auto& panel : panels_) panel.observe_between(row);
 }
 
-void PlotScene::look_ahead(std::span<const double> next_sample) {
-  for (auto& panel : panels_) panel.look_ahead(next_sample);
+void PlotScene::look_ahead(std::span<const std::vector<double>> next_samples) {
+  for (auto& panel : panels_) panel.look_ahead(next_samples);
 }
 
 double PlotScene::sample_interval() const {

@@ -43,11 +43,16 @@ void RunLegend::drop_formulas() {
 }
 
 void RunLegend::record(std::span<const double> row) {
-  for (size_t i = 0; i < entries_.size(); ++i)
-    if (ends_[i] == EarlyEnd::none && entries_[i].probe && !std::isfinite(entries_[i].probe(row))) {
-      blow_up_times_[i] = row[0];
-      ends_[i] = entries_[i].early_end ? entries_[i].early_end() : EarlyEnd::blew_up;
-    }
+  for (size_t i = 0; i < entries_.size(); ++i) {
+    const LegendEntry& e = entries_[i];
+    if (ends_[i] != EarlyEnd::none || !e.probe || std::isfinite(e.probe(row))) continue;
+    // A run between its own samples reads NaN too (Trajectory::hide_runs_between_their_samples):
+    // where the run says how it ended, only an early end counts.
+    const EarlyEnd end = e.early_end ? e.early_end() : EarlyEnd::blew_up;
+    if (end == EarlyEnd::none) continue;
+    blow_up_times_[i] = row[0];
+    ends_[i] = end;
+  }
 }
 
 double RunLegend::row_top(size_t i, double scale) const {

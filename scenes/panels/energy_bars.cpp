@@ -91,17 +91,24 @@ void EnergyBars::record(std::span<const double> row) {
 }
 
 void EnergyBars::observe(std::span<const double> row) {
-  bracket_.observe(row);
   if (power_) work_.add(row[0], power_(row));
+  const std::array<double, 4> parts = values(budget(row, work_));
+  for (size_t k = 0; k < parts.size(); ++k) brackets_[k].observe(row[0], parts[k]);
+}
+
+void EnergyBars::look_ahead(std::span<const std::vector<double>> next_samples) {
+  // The bars are of one run (a comparison has none): its next sample, if any.
+  const std::array<double, 4> parts =
+      next_samples.size() == 1 ? values(budget(next_samples[0], work_)) : std::array<double, 4>{NAN, NAN, NAN, NAN};
+  const double t = next_samples.size() == 1 ? next_samples[0][0] : NAN;
+  for (size_t k = 0; k < parts.size(); ++k) brackets_[k].look_ahead(t, parts[k]);
 }
 
 EnergyBudget EnergyBars::at(std::span<const double> row) const {
-  const std::optional<double> s = bracket_.fraction(row[0]);
-  if (!s) return budget(row, work_);
-  const std::array<double, 4> from = values(budget(bracket_.before(), work_)), to = values(budget(bracket_.after(), work_));
-  std::array<double, 4> v;
-  for (size_t k = 0; k < v.size(); ++k) v[k] = from[k] + *s * (to[k] - from[k]);
-  return {v[0], v[1], v[2], v[3]};
+  std::array<double, 4> parts = values(budget(row, work_));
+  for (size_t k = 0; k < parts.size(); ++k)
+    if (const std::optional<double> on_chord = brackets_[k].on_chord(row[0])) parts[k] = *on_chord;
+  return {parts[0], parts[1], parts[2], parts[3]};
 }
 
 void EnergyBars::place(const render::PixelRect& area, double scale) { area_ = area, scale_ = scale; }

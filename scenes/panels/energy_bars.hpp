@@ -63,8 +63,8 @@ class EnergyBars {
   void record(std::span<const double> row);
   /// Every solver step of the render pass: the forcing's work.
   void observe(std::span<const double> row);
-  /// The solver's next sample after the frame's time, or empty (Scene::look_ahead).
-  void look_ahead(std::span<const double> next_sample) { bracket_.look_ahead(next_sample); }
+  /// The run's next sample, where it is straight between its samples (Scene::look_ahead).
+  void look_ahead(std::span<const std::vector<double>> next_samples);
   /// The budget at a frame's row (at or before the newest step observed);
   /// between two samples of a fixed-step run, each part on the straight line
   /// between its values at them, so the parts still add up to E(0) + W.
@@ -99,7 +99,7 @@ class EnergyBars {
   std::string unit_;
   double E0_ = NAN;
   ForcingWork pre_pass_work_, work_;
-  SampleBracket bracket_;  ///< the render pass's samples around the frame
+  std::array<SampleBracket, 4> brackets_;  ///< each part at the samples around the frame, in bar order
   double lo_ = 0, hi_ = 0;
   render::PixelRect area_;
   double scale_ = 1;

@@ -19,8 +19,7 @@ HistoryFeed::HistoryFeed(Trajectory& trajectory, Scene& scene, double interval)
                     : 0),
       previous_t_(trajectory.t()),
       row_(trajectory.width()),
-      between_(trajectory.width()),
-      ahead_(trajectory.width()) {
+      between_(trajectory.width()) {
   if (!std::isfinite(interval_)) interval_ = 0;
 }
 
@@ -40,6 +39,7 @@ void HistoryFeed::feed_between(bool observe, double limit) {
   for (double g; (g = next_grid_ * interval_) < end && g <= limit; ++next_grid_) {
     if (g <= previous_t_) continue;
     trajectory_.row_at(g, between_);
+    trajectory_.hide_runs_between_their_samples(between_);
     if (observe) scene_.observe_between(between_);
     else scene_.record_between(between_);
     poll_stop();
@@ -51,6 +51,7 @@ std::span<const double> HistoryFeed::row_at(double t) {
     feed_between(true, t);
     if (!step_observed_ && trajectory_.t() <= t) {
       trajectory_.row(row_);
+      trajectory_.hide_runs_between_their_samples(row_);
       scene_.observe(row_);
       step_observed_ = true;
     }
@@ -61,16 +62,12 @@ std::span<const double> HistoryFeed::row_at(double t) {
     step_observed_ = false;
     poll_stop();
   }
+  // The next sample of each run that is straight between its samples: the
+  // scene's panels draw a quantity of the rows at t on the line between the
+  // values at the samples around t, where their curves run.
+  trajectory_.straight_samples_ahead(ahead_);
+  scene_.look_ahead(ahead_);
   trajectory_.row_at(t, row_);
-  // Between two samples of a run that is straight between them, the scene
-  // gets the next one too: its panels draw a quantity of the rows on the
-  // line between the samples' values, where their curves run.
-  if (!trajectory_.bends_between_samples() && t < trajectory_.t()) {
-    trajectory_.row(ahead_);
-    scene_.look_ahead(ahead_);
-  } else {
-    scene_.look_ahead({});
-  }
   return row_;
 }
 

@@ -36,7 +36,9 @@ class HistoryFeed {
     do {
       trajectory_.row(row);
       if (trajectory_.index() > 0) feed_between(false, trajectory_.t());
-      scene_.record(row);
+      sample_.assign(row.begin(), row.end());  // each_step gets every run, the scene each at its own samples
+      trajectory_.hide_runs_between_their_samples(sample_);
+      scene_.record(sample_);
       each_step(row);
       poll_stop();
       previous_t_ = trajectory_.t();
@@ -44,7 +46,7 @@ class HistoryFeed {
   }
 
   /// The render pass: observes everything up to t, then returns the row at t
-  /// (and gives the scene the next sample, Scene::look_ahead).
+  /// (and gives the scene each run's next sample, Scene::look_ahead).
   std::span<const double> row_at(double t);
 
  private:
@@ -59,7 +61,8 @@ class HistoryFeed {
   long long next_grid_ = 1;      ///< the next grid time to feed is next_grid_ * interval_
   bool step_observed_ = false;   ///< the current step's row was observed
   long long polls_ = 0;
-  std::vector<double> row_, between_, ahead_;
+  std::vector<double> row_, between_, sample_;
+  std::vector<std::vector<double>> ahead_;
 };
 
 }  // namespace vibra::scenes

@@ -11,7 +11,9 @@ PeriodTrack::PeriodTrack(int value_column, int velocity_column)
 
 double PeriodTrack::at(std::span<const double> row) {
   const double t = row[0];
-  if (t > newest_t_) {
+  // A row where the run has no sample of its own (NaN, a comparison's
+  // member between its samples) adds no crossing.
+  if (t > newest_t_ && std::isfinite(row[value_column_]) && std::isfinite(row[velocity_column_])) {
     meter_.add(t, row[value_column_], row[velocity_column_]);
     newest_t_ = t;
   }

@@ -1,8 +1,7 @@
-// The two solver samples around a frame of a fixed-step run, so a quantity of the rows is drawn on its chord.
+// A value at the two samples around a frame of a straight run, so a quantity of the rows is drawn on its chord.
 #pragma once
+#include <cmath>
 #include <optional>
-#include <span>
-#include <vector>
 
 namespace vibra::scenes {
 
@@ -15,35 +14,28 @@ namespace vibra::scenes {
 /// curve (a circular orbit's chord lies inside the circle, so r dips by
 /// 1 - cos(pi/N) at N steps a period, where PEFRL's r drifts by 2e-8).
 ///
-/// Fed the last sample observed at or before a frame (observe) and the
-/// solver's next sample after it (look_ahead, empty when the run curves
-/// between its samples or t is a sample), it gives a quantity's value on
-/// that straight line.
+/// Fed the quantity at each sample of its run as the render pass observes
+/// it, and at the run's next sample before a frame (Scene::look_ahead), it
+/// gives the value on that straight line.
 class SampleBracket {
  public:
-  void observe(std::span<const double> sample) { before_.assign(sample.begin(), sample.end()); }
-  void look_ahead(std::span<const double> next_sample) { after_.assign(next_sample.begin(), next_sample.end()); }
-
-  /// s = (t - t_n) / (t_n+1 - t_n) when t lies strictly between the two samples; none otherwise.
-  std::optional<double> fraction(double t) const {
-    if (before_.empty() || after_.empty() || !(before_[0] < t && t < after_[0])) return std::nullopt;
-    return (t - before_[0]) / (after_[0] - before_[0]);
+  /// The value at a sample observed (NaN where the run has no sample: kept out).
+  void observe(double t, double value) {
+    if (std::isfinite(value)) t0_ = t, v0_ = value;
   }
-  std::span<const double> before() const { return before_; }
-  std::span<const double> after() const { return after_; }
+  /// The value at the run's next sample, or none (NaN).
+  void look_ahead(double t, double value) { t1_ = std::isfinite(value) ? t : NAN, v1_ = value; }
 
-  /// value(y_n) + s (value(y_n+1) - value(y_n)) when t lies strictly between
-  /// the two samples; none otherwise.
-  template <class Value>
-  std::optional<double> on_chord(double t, const Value& value) const {
-    const std::optional<double> s = fraction(t);
-    if (!s) return std::nullopt;
-    const double from = value(before()), to = value(after());
-    return from + *s * (to - from);
+  /// v_n + s (v_n+1 - v_n), s = (t - t_n) / (t_n+1 - t_n), when t lies
+  /// strictly between the two samples; none otherwise.
+  std::optional<double> on_chord(double t) const {
+    if (!(t0_ < t && t < t1_)) return std::nullopt;
+    const double s = (t - t0_) / (t1_ - t0_);
+    return v0_ + s * (v1_ - v0_);
   }
 
  private:
-  std::vector<double> before_, after_;
+  double t0_ = NAN, v0_ = NAN, t1_ = NAN, v1_ = NAN;
 };
 
 }  // namespace vibra::scenes

@@ -1,6 +1,7 @@
 // ScenePanel: one panel beside a diagram, curves against time or the phase plane.
 #pragma once
 #include <span>
+#include <vector>
 
 #include "render/draw/canvas.hpp"
 #include "render/plot/plot_panel.hpp"
@@ -24,8 +25,8 @@ class ScenePanel {
   /// by an impact): curves pass through them, but they are no mesh points.
   virtual void record_between(std::span<const double> row) { record(row); }
   virtual void observe_between(std::span<const double> row) { observe(row); }
-  /// The solver's next sample after the frame's time, or empty (Scene::look_ahead).
-  virtual void look_ahead(std::span<const double> next_sample) { (void)next_sample; }
+  /// Each straight run's next sample (Scene::look_ahead).
+  virtual void look_ahead(std::span<const std::vector<double>> next_samples) { (void)next_samples; }
   /// Simulated time per pixel column of its curves; 0 when not against time.
   virtual double time_per_column() const { return 0; }
   /// After the pre-pass: fixes the ranges.

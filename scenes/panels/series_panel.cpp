@@ -33,6 +33,7 @@ SeriesPanel::SeriesPanel(const render::PixelRect& outer, double scale, std::stri
   }
   panel_.set_x_range(0, window_);
   marks_.resize(series_.size());
+  brackets_.resize(series_.size());
   // The runs' curves, the first (measured) last so that it is on top; then
   // the dashed references over them.
   for (size_t i = series_.size(); i-- > 0;)
@@ -44,8 +45,23 @@ SeriesPanel::SeriesPanel(const render::PixelRect& outer, double scale, std::stri
 void SeriesPanel::record(std::span<const double> row) { add_row(row, true); }
 void SeriesPanel::record_between(std::span<const double> row) { add_row(row, false); }
 void SeriesPanel::observe(std::span<const double> row) {
-  bracket_.observe(row);
+  for (size_t i = 0; i < series_.size(); ++i)
+    if (series_[i].mesh_values && !series_[i].of_time) brackets_[i].observe(row[0], series_[i].value(row));
   add_recent(row, true);
+}
+
+void SeriesPanel::look_ahead(std::span<const std::vector<double>> next_samples) {
+  // Each run's next sample holds its own columns only: a series takes the
+  // first in which it has a value.
+  for (size_t i = 0; i < series_.size(); ++i) {
+    if (!series_[i].mesh_values || series_[i].of_time) continue;
+    brackets_[i].look_ahead(NAN, NAN);
+    for (const auto& next : next_samples)
+      if (const double v = series_[i].value(next); std::isfinite(v)) {
+        brackets_[i].look_ahead(next[0], v);
+        break;
+      }
+  }
 }
 void SeriesPanel::observe_between(std::span<const double> row) { add_recent(row, false); }
 
@@ -53,7 +69,7 @@ double SeriesPanel::value_drawn(size_t i, double t, std::span<const double> row)
   const SeriesSpec& s = series_[i];
   if (s.of_time) return s.of_time(t);
   if (!s.mesh_values) return s.value(row);
-  if (const std::optional<double> on_chord = bracket_.on_chord(t, s.value)) return *on_chord;
+  if (const std::optional<double> on_chord = brackets_[i].on_chord(t)) return *on_chord;
   return s.value(row);
 }
 

@@ -61,7 +61,7 @@ class SeriesPanel final : public ScenePanel {
   /// Rows between steps: on the curves, but not marked as mesh points.
   void record_between(std::span<const double> row) override;
   void observe_between(std::span<const double> row) override;
-  void look_ahead(std::span<const double> next_sample) override { bracket_.look_ahead(next_sample); }
+  void look_ahead(std::span<const std::vector<double>> next_samples) override;
   /// Fixes the y range after the pre-pass.
   void finish_recording() override;
   double time_per_column() const override { return window_ / std::max(1, panel_.columns()); }
@@ -131,7 +131,7 @@ class SeriesPanel final : public ScenePanel {
   bool first_curve_seen_ = false;
   mutable std::vector<render::GrowingPolyline> whole_curves_;
   double mesh_dt_ = 0;
-  SampleBracket bracket_;  ///< the render pass's samples around the frame
+  std::vector<SampleBracket> brackets_;  ///< per series: its values at the samples around the frame
   std::vector<std::vector<std::pair<double, double>>> marks_;  ///< per series: (t, value) of mesh rows
   /// Series indices in drawing order: the runs' curves, the first (measured)
   /// last of them so that it is on top; then the dashed references (exact

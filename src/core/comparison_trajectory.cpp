@@ -102,6 +102,31 @@ bool ComparisonTrajectory::bends_between_samples() const {
   return false;
 }
 
+void ComparisonTrajectory::hide_runs_between_their_samples(std::span<double> row) const {
+  for (size_t i = 0; i < members_.size(); ++i) {
+    const Trajectory& run = comparison_.trajectory(i);
+    if (run.bends_between_samples() || row[0] == run.t()) continue;
+    const auto columns = row.subspan(offsets_[i], run.width() - 1);
+    std::fill(columns.begin(), columns.end(), NAN);
+  }
+}
+
+void ComparisonTrajectory::straight_samples_ahead(std::vector<std::vector<double>>& out) const {
+  size_t n = 0;
+  for (size_t i = 0; i < members_.size(); ++i) {
+    const Trajectory& run = comparison_.trajectory(i);
+    if (run.bends_between_samples() || !(run.t() < members_[i].blow_up_time)) continue;
+    if (out.size() <= n) out.emplace_back();
+    std::vector<double>& ahead = out[n++];
+    ahead.assign(width(), NAN);
+    const std::span<double> member(scratch_.data(), run.width());
+    run.row(member);
+    ahead[0] = member[0];
+    std::copy(member.begin() + 1, member.end(), ahead.begin() + offsets_[i]);
+  }
+  out.resize(n);
+}
+
 void ComparisonTrajectory::row_at(double t, std::span<double> out) const {
   out[0] = t;
   for (size_t i = 0; i < members_.size(); ++i) {

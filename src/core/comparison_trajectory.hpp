@@ -42,6 +42,8 @@ class ComparisonTrajectory final : public Trajectory {
   void row_at(double t, std::span<double> out) const override;
   /// Whether any member's rows between its samples follow a curve.
   bool bends_between_samples() const override;
+  void hide_runs_between_their_samples(std::span<double> row) const override;
+  void straight_samples_ahead(std::vector<std::vector<double>>& out) const override;
 
  private:
   struct MemberState {

@@ -98,6 +98,24 @@ class Trajectory {
   /// does a drawing need rows between samples to show the run.
   virtual bool bends_between_samples() const { return info_.mesh.adaptive(); }
 
+  /// A row of several runs side by side (a comparison's members) holds each
+  /// at the row's time, between its own samples or not. Sets to NaN the
+  /// columns of every run that is straight between its samples and has none
+  /// at row[0], so that a reader of samples (a curve, a sum) sees each such
+  /// run at its own samples only, as it is drawn: joined by straight lines.
+  /// A single run's rows are its own samples: nothing to hide.
+  virtual void hide_runs_between_their_samples(std::span<double> row) const { (void)row; }
+  /// For each run straight between its samples, its next sample at or after
+  /// the current time: a row with t = that sample's time and the run's
+  /// columns (the other runs' NaN). A single fixed-step run's is its current
+  /// sample; a run that bends between its samples has none.
+  virtual void straight_samples_ahead(std::vector<std::vector<double>>& out) const {
+    out.resize(bends_between_samples() ? 0 : 1);
+    if (out.empty()) return;
+    out[0].resize(width());
+    row(out[0]);
+  }
+
  protected:
   explicit Trajectory(TrajectoryInfo info) : info_(std::move(info)) {}
   TrajectoryInfo info_;

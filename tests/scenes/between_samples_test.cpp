@@ -10,6 +10,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/comparison_trajectory.hpp"
 #include "render/draw/canvas.hpp"
 #include "scenes/config/scene_config.hpp"
 #include "scenes/panels/energy_bars.hpp"
@@ -59,12 +60,15 @@ bool inside_plot(const render::PlotPanel& plot, double t, double value) {
   return plot.area().y <= y && y <= plot.area().y + plot.area().h;
 }
 
-/// A scene that keeps the next samples it is given.
+/// The next samples of one run: `row` alone.
+std::vector<std::vector<double>> next_of(const std::vector<double>& row) { return {row}; }
+
+/// A scene that keeps the next samples it is given before each frame.
 struct LookAheadScene final : scenes::Scene {
-  std::vector<std::vector<double>> ahead;
+  std::vector<std::vector<std::vector<double>>> ahead;
   void record(std::span<const double>) override {}
   void observe(std::span<const double>) override {}
-  void look_ahead(std::span<const double> next) override { ahead.emplace_back(next.begin(), next.end()); }
+  void look_ahead(std::span<const std::vector<double>> next) override { ahead.emplace_back(next.begin(), next.end()); }
   void draw(render::Canvas&, std::span<const double>) override {}
   void skip(const render::Canvas&, std::span<const double>) override {}
 };
@@ -76,7 +80,7 @@ TEST_CASE("between two samples a panel draws a quantity on the line between its 
   scenes::SeriesPanel panel = recorded_panel(rows, 2);
   // The render pass has observed sample 1 (a quarter period) and knows sample 2.
   panel.observe(rows[1]);
-  panel.look_ahead(rows[2]);
+  panel.look_ahead(next_of(rows[2]));
   for (double s : {0.1, 0.5, 0.9}) {
     INFO("s = " << s);
     const double t = (1 + s) / 4;
@@ -95,7 +99,12 @@ TEST_CASE("between two samples a panel draws a quantity on the line between its 
   const std::vector<double> state = chord(rows[1], rows[2], 0.5);
   panel.look_ahead({});
   CHECK(panel.value_drawn(0, 0.375, state) == Approx(0.5).margin(1e-12));
-  panel.look_ahead(rows[2]);
+  // A next sample without a value of the series (another run's): none either.
+  std::vector<double> other_run = rows[2];
+  other_run[1] = other_run[2] = NAN;
+  panel.look_ahead(next_of(other_run));
+  CHECK(panel.value_drawn(0, 0.375, state) == Approx(0.5).margin(1e-12));
+  panel.look_ahead(next_of(rows[2]));
   CHECK(panel.value_drawn(0, rows[1][0], rows[1]) == Approx(1).margin(1e-12));
   CHECK(panel.value_drawn(1, rows[2][0], rows[2]) == Approx(1).margin(1e-12));
 }
@@ -107,14 +116,13 @@ TEST_CASE("the render pass gives a scene the next sample of a fixed-step run bet
   const double P = samples[4][0];  // one period
   LookAheadScene scene;
   scenes::HistoryFeed feed(*run, scene, 0);
-  feed.row_at(0);
-  REQUIRE(scene.ahead.size() == 1);
-  CHECK(scene.ahead.back().empty());  // t = 0 is a sample
-  feed.row_at(0.4 * P);               // between samples 1 and 2
-  REQUIRE(scene.ahead.back().size() == samples[2].size());
-  for (size_t c = 0; c < samples[2].size(); ++c) CHECK(scene.ahead.back()[c] == samples[2][c]);
-  feed.row_at(samples[3][0]);  // a sample
-  CHECK(scene.ahead.back().empty());
+  // Before each frame, the run's sample at or after the frame's time.
+  for (const auto& [t, n] : {std::pair{0.0, 0}, std::pair{0.4 * P, 2}, std::pair{0.75 * P, 3}}) {
+    INFO("t = " << t);
+    feed.row_at(t);
+    REQUIRE(scene.ahead.back().size() == 1);
+    CHECK(scene.ahead.back()[0] == samples[n]);
+  }
   // An adaptive run is drawn from its dense output between steps: no chord.
   auto adaptive = test::trajectory("undamped", {"scheme=dopri5", "periods=1"});
   LookAheadScene dense;
@@ -134,7 +142,7 @@ TEST_CASE("energy bars between two samples hold each part on its line between th
   const EnergyFunction& energy = run->info().energy;
   const double E0 = energy(rows[0]).total();
   for (size_t n = 0; n <= 1; ++n) bars.observe(rows[n]);
-  bars.look_ahead(rows[2]);
+  bars.look_ahead(next_of(rows[2]));
   const double s = 0.3, t = rows[1][0] + s * (rows[2][0] - rows[1][0]);
   std::vector<double> state = chord(rows[1], rows[2], s);
   state[0] = t;
@@ -175,4 +183,79 @@ TEST_CASE("the orbit's r - r(0) panel at a frame between steps shows PEFRL's dri
   const double drawn = drift.value_drawn(0, t, at);
   CHECK(std::abs(drawn) < 1e-7);
   CHECK(inside_plot(drift.plot(), t, drawn));
+}
+
+TEST_CASE("a comparison's coarse run is read at its own samples only, and drawn between them on its chord",
+          "[discrete-curve][comparison]") {
+  // dt = 0.2 against dt = 0.05: the union of the meshes holds the coarse run
+  // between its samples three times out of four. Its energy there, of the
+  // chord's state, dipped below its samples' energies: a sawtooth the scheme
+  // never computed. It is read at its own samples and joined by lines.
+  scenes::SceneConfig config = scenes::load_scene("spring");
+  for (const auto& [k, v] : {std::pair{"compare", "dt=0.2,0.05"}, {"scheme", "centered"}, {"panels", "energy"}})
+    scenes::apply_setting(config, {k, v, "test"});
+  auto runs = scenes::build_scene_runs(config);
+  const auto& comparison = dynamic_cast<const ComparisonTrajectory&>(*runs);
+  const size_t u_coarse = comparison.offset(0), u_fine = comparison.offset(1);
+  std::vector<double> row(runs->width());
+  int hidden = 0, shown = 0;
+  do {
+    runs->row(row);
+    runs->hide_runs_between_their_samples(row);
+    const bool own = std::abs(row[0] / 0.2 - std::round(row[0] / 0.2)) < 1e-9;
+    INFO("t = " << row[0]);
+    CHECK(std::isfinite(row[u_coarse]) == own);
+    CHECK(std::isfinite(row[u_fine]));
+    (own ? shown : hidden) += 1;
+  } while (runs->advance());
+  CHECK(shown > 90);  // 3 periods at dt = 0.2
+  CHECK(hidden > 2 * shown);
+
+  // The drawn energy of the coarse run at a frame between its samples: on
+  // the line between its energies there, from its own run.
+  auto pre_pass = scenes::build_scene_runs(config);
+  auto scene = scenes::make_scene_for(config, *pre_pass, "test");
+  scenes::HistoryFeed(*pre_pass, *scene, scene->sample_interval()).record_all([](std::span<const double>) {});
+  auto live = scenes::build_scene_runs(config);
+  scenes::HistoryFeed feed(*live, *scene, scene->sample_interval());
+  const double t = 2.35;  // between the coarse samples 2.2 and 2.4, on the fine mesh
+  const std::span<const double> at = feed.row_at(t);
+  render::Canvas canvas = render::Canvas::image(config.width, config.height);
+  scene->draw(canvas, at);
+  const auto& energy = dynamic_cast<const scenes::SeriesPanel&>(dynamic_cast<const scenes::SystemScene&>(*scene).panel(0));
+  auto coarse = test::trajectory("vibration", {"scheme=centered", "dt=0.2", "m=1", "k=1", "I=1", "V=0", "T=20"});
+  const auto samples = test::rows(*coarse);
+  const EnergyFunction& E = coarse->info().energy;
+  const double E0 = E(samples[0]).total();
+  auto relative = [&](size_t n) { return (E(samples[n]).total() - E0) / std::abs(E0); };
+  REQUIRE(samples[11][0] == Approx(2.2));
+  const double s = (t - samples[11][0]) / (samples[12][0] - samples[11][0]);
+  CHECK(energy.value_drawn(0, t, at) == Approx(relative(11) + s * (relative(12) - relative(11))).margin(1e-12));
+}
+
+TEST_CASE("a comparison's legend takes a run between its samples for a run still going, not one that blew up",
+          "[comparison]") {
+  // Reading NaN between its samples, the coarse run was taken for one that
+  // blew up: its legend entry got a note's row, empty, under it.
+  scenes::SceneConfig config = scenes::load_scene("spring");
+  for (const auto& [k, v] : {std::pair{"compare", "dt=0.2,0.05"}, {"scheme", "centered"}})
+    scenes::apply_setting(config, {k, v, "test"});
+  auto pre_pass = scenes::build_scene_runs(config);
+  auto scene = scenes::make_scene_for(config, *pre_pass, "test");
+  scenes::HistoryFeed(*pre_pass, *scene, scene->sample_interval()).record_all([](std::span<const double>) {});
+  auto live = scenes::build_scene_runs(config);
+  scenes::HistoryFeed feed(*live, *scene, scene->sample_interval());
+  render::Canvas canvas = render::Canvas::image(config.width, config.height);
+  scene->draw(canvas, feed.row_at(1));
+  std::vector<double> rows;  // the legend's text rows, top to bottom
+  for (const auto& shape : scene->last_layout()->outline.shapes())
+    if (shape.kind == render::OutlineKind::text && shape.name.find("<i>t</i> = 0.") != std::string::npos)
+      rows.push_back(shape.bounds.y + shape.bounds.h / 2);
+  REQUIRE(rows.size() == 2);
+  // The next row (the exact solution's) is as far below the second as the second below the first.
+  double exact = NAN;
+  for (const auto& shape : scene->last_layout()->outline.shapes())
+    if (shape.kind == render::OutlineKind::text && shape.name == "exact") exact = shape.bounds.y + shape.bounds.h / 2;
+  REQUIRE(std::isfinite(exact));
+  CHECK(rows[1] - rows[0] == Approx(exact - rows[1]).margin(1));
 }
