@@ -114,3 +114,39 @@ TEST_CASE("a panel's axes get as many ticks as their labels leave room for: up t
   const std::set<std::string> narrow = labels_drawn(180, 600);
   CHECK(narrow.count("2") == 0);  // too little room for a tick every 2
 }
+
+TEST_CASE("a panel's tick labels sit beside their ticks: y labels end 6 px left of the frame, x labels 4 px under it",
+          "[axis]") {
+  using namespace vibra::render;
+  for (const double scale : {0.5, 1.0, 1.5}) {
+    INFO("scale " << scale);
+    const PixelRect outer{0, 0, 1280 * scale, 600 * scale};
+    PlotPanel panel(outer, scale);
+    panel.set_x_range(0, 12);
+    panel.set_y_range(-1 / 1.1, 1 / 1.1);  // -1..1 with set_y_range's margin
+    Canvas canvas = Canvas::image(int(outer.w), int(outer.h));
+    DrawingRecord record;
+    canvas.record_into(&record);
+    panel.draw_axes(canvas, "<i>u</i>", "<i>t</i>");
+    canvas.record_into(nullptr);
+    const PixelRect& area = panel.area();
+    int y_labels = 0, x_labels = 0;
+    for (const auto& shape : record.outline.shapes()) {
+      if (shape.kind != OutlineKind::text) continue;
+      INFO("'" << shape.name << "' at " << shape.bounds.x << "," << shape.bounds.y << " " << shape.bounds.w << "x"
+               << shape.bounds.h);
+      const Point centre = shape.bounds.center();
+      if (shape.name.find('.') != std::string::npos) {  // -1.0 ... 1.0 up the left
+        ++y_labels;
+        CHECK(shape.bounds.x + shape.bounds.w == Approx(area.x - 6 * scale).margin(2));
+        CHECK(centre.y() == Approx(panel.to_pixel(0, value_of(shape.name, {})).y()).margin(2));
+      } else if (shape.name.find_first_not_of("0123456789") == std::string::npos) {  // 0 ... 12 along the bottom
+        ++x_labels;
+        CHECK(shape.bounds.y == Approx(area.y + area.h + 4 * scale).margin(2));
+        CHECK(centre.x() == Approx(panel.to_pixel(number(shape.name), 0).x()).margin(2));
+      }
+    }
+    CHECK(y_labels == 5);
+    CHECK(x_labels == 7);
+  }
+}

@@ -203,6 +203,12 @@ TEST_CASE("bumpy road diagram: the wheel on the road, the body at L + u over the
     const Arrow& f = forces[1].arrow;
     const double spring = s.to.y() - s.from.y(), damper = f.to.y() - f.from.y();
     if (std::abs(row[1]) > 1e-3 && std::abs(row[2]) > 1e-2) CHECK(damper / spring == Approx((b * row[2]) / (k * row[1])).epsilon(1e-9));
+    // Both vertical, as the forces are: the spring's left of the body's
+    // centre line, the damper's right of it, as the struts stand.
+    CHECK(s.to.x() == s.from.x());
+    CHECK(f.to.x() == f.from.x());
+    CHECK(s.from.x() < row[3]);
+    CHECK(f.from.x() > row[3]);
     // The view follows the vehicle.
     const auto view = d.view_at(row);
     REQUIRE(view);
