@@ -6,7 +6,10 @@ failure; only a mutant that survives them runs the rest of the fast suite.
 A test file is a target of a source file when, in this order:
   1. it is named after it (shapes.cpp: shapes_test.cpp),
   2. it includes the source's own header (shapes.hpp) by name,
-  3. it sits in the test folder that mirrors the source's folder
+  3. a test case's name there names the source's subject: the file's name
+     without the words that say its kind (bounces_experiment.cpp: "bounces",
+     bumpy_road_diagram.cpp: "bumpy road" or "bumpy_road"), five letters at least,
+  4. it sits in the test folder that mirrors the source's folder
      (render/draw/elements/ -> tests/render/draw/elements/, or the
      nearest mirrored parent that exists; src/jobs is tested in tests/cli).
 Catch2 selects a test file's cases by the tag [#FILENAME] that -# gives
@@ -19,6 +22,10 @@ from pathlib import Path
 TEST_FOLDER_OF = {"src/core": "tests/core", "src/cli": "tests/cli", "src/jobs": "tests/cli",
                   "render": "tests/render", "scenes": "tests/scenes"}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+TEST_CASE_NAME = re.compile(r'TEST_CASE\(\s*"((?:[^"\\]|\\.)*)"')
+# Words of a source file's name that say what kind of thing it is, not what it is about.
+KIND_WORDS = {"experiment", "experiments", "diagram", "diagrams", "panel", "panels", "command", "job", "scene",
+              "figure", "analysis", "analyze"}
 
 
 def mirrored_folder(tree, source):
@@ -29,6 +36,19 @@ def mirrored_folder(tree, source):
             candidates = [Path(tests) / rest, *(Path(tests) / p for p in rest.parents)]
             return next((c for c in candidates if (tree / c).is_dir()), None)
     return None
+
+
+def subject(source):
+    """The words a test uses for what a source file is about (see KIND_WORDS), or None when too short to mean it."""
+    words = [w for w in Path(source).stem.split("_") if w not in KIND_WORDS]
+    text = " ".join(words)
+    return text if len(text) >= 5 else None
+
+
+def names_subject(test_file, about):
+    """Whether a test case of the file names `about` (with spaces or underscores), in any case."""
+    names = " | ".join(TEST_CASE_NAME.findall(test_file.read_text())).lower()
+    return about in names or about.replace(" ", "_") in names
 
 
 def test_files(tree):
@@ -46,8 +66,10 @@ def targets(tree, source, files=None):
     including = [f for f in files if any(Path(i).name == header for i in INCLUDE.findall((tree / f).read_text()))]
     folder = mirrored_folder(tree, source)
     mirrored = [f for f in files if folder is not None and Path(f).parent == folder]
+    about = subject(source)
+    naming = [] if about is None else [f for f in files if names_subject(tree / f, about)]
     ordered = []
-    for f in named + including + mirrored:
+    for f in named + including + naming + mirrored:
         if f not in ordered:
             ordered.append(f)
     return ordered

@@ -48,6 +48,20 @@ class Targets(unittest.TestCase):
             tree = make_tree(Path(d), {"tests/core/schemes_test.cpp": ""})
             self.assertEqual(mutant_targets.targets(tree, "web/app.cpp"), [])
 
+    def test_then_the_files_whose_test_names_name_the_sources_subject(self):
+        with tempfile.TemporaryDirectory() as d:
+            tree = make_tree(Path(d), {
+                "tests/cli/analyze_test.cpp": 'TEST_CASE("vibra analyze Bounces lists every impact")\n',
+                "tests/scenes/diagrams_test.cpp": 'TEST_CASE("bumpy_road: the wheel")\nload_scene("bounces")\n',
+                "tests/scenes/free_body_test.cpp": 'TEST_CASE("the bumpy road\'s arrows")\n',
+                "tests/core/schemes_test.cpp": 'TEST_CASE("road and bumps")\n'})
+            self.assertEqual(mutant_targets.targets(tree, "src/jobs/experiments/bounces_experiment.cpp"),
+                             ["tests/cli/analyze_test.cpp"])
+            self.assertEqual(mutant_targets.targets(tree, "scenes/diagrams/bumpy_road_diagram.cpp"),
+                             ["tests/scenes/diagrams_test.cpp", "tests/scenes/free_body_test.cpp"])
+            # A subject too short to mean anything (text.cpp: "text") adds nothing.
+            self.assertIsNone(mutant_targets.subject("render/draw/text.cpp"))
+
     def test_the_specs_select_the_targets_and_then_everything_else(self):
         files = ["tests/render/draw/shapes_test.cpp", "tests/scenes/pendulum_test.cpp"]
         self.assertEqual(mutant_targets.targeted_spec("~[heavy]", files),
