@@ -63,6 +63,7 @@ void SeriesPanel::look_ahead(std::span<const std::vector<double>> next_samples) 
       }
   }
 }
+
 void SeriesPanel::observe_between(std::span<const double> row) { add_recent(row, false); }
 
 double SeriesPanel::value_drawn(size_t i, double t, std::span<const double> row) const {

@@ -98,8 +98,8 @@ double draw_force_key(render::Canvas& canvas, const ForceKey& key, double pixels
   // The note in a row of its own above the scale's line where it does not fit beside it.
   const double rows = force_key_rows_height(canvas, key, width, note_row);
   if (note_row)
-    render::draw_text(canvas, {bottom_left.x(), bottom_left.y() - size.y() - 0.5 * kNameRow * scale}, "(" + key.note + ")",
-                      style, render::Anchor::left);
+    render::draw_text(canvas, {bottom_left.x(), bottom_left.y() - size.y() - 0.5 * kNameRow * scale},
+                      "(" + key.note + ")", style, render::Anchor::left);
   // The names in rows above those, each after an arrow in its colour.
   const std::vector<NameSpot> spots = name_spots(canvas, key, width);
   const double top = bottom_left.y() - size.y() - rows;
