@@ -34,6 +34,9 @@ TEST_CASE("every exact solution satisfies its ODE and its initial values, masses
        [](double t, double u, double up, double upp) { return upp + 0.3 * up + u - std::sin(1.7 * t); }},
       {"resonance", {"beta=0", "gamma=1", "I=0.4", "V=-0.2"}, 0.4, -0.2,
        [](double t, double u, double, double upp) { return upp + u - std::sin(t); }},
+      // gamma = 0: the drum stands still, sin(0 t) = 0, the free damped machine.
+      {"resonance", {"beta=0.3", "gamma=0", "I=0.4", "V=-0.2"}, 0.4, -0.2,
+       [](double, double u, double up, double upp) { return upp + 0.3 * up + u; }},
       {"rlc", {"L=2", "R=0.5", "C=0.25", "q0=1", "I0=0.3"}, 1, 0.3,
        [](double, double q, double qp, double qpp) { return 2 * qpp + 0.5 * qp + q / 0.25; }},
   };
