@@ -47,6 +47,13 @@ std::string value_text(double f) {
   if (power < 0) exponent = "\u2212" + exponent;
   return (mantissa == "1" ? std::string() : mantissa + "·") + "10<sup>" + exponent + "</sup>";
 }
+
+/// What follows the scale's arrow: "= 2 mg", and "   (note)" when the note goes on that line.
+std::string scale_text(const ForceKey& key, double f, bool with_note) {
+  std::string text = "= " + value_text(f) + (key.unit.empty() ? "" : " " + key.unit);
+  if (with_note && !key.note.empty()) text += "   (" + key.note + ")";
+  return text;
+}
 }  // namespace
 
 double force_key_value(const ForceKey& key, double pixels_per_world, double scale) {
@@ -68,9 +75,8 @@ bool force_note_fits(render::Canvas& canvas, const ForceKey& key, double pixels_
   // the rows are taken) may round the force to another value.
   const double scale = canvas.scale(), f = force_key_value(key, pixels_per_world, scale);
   const render::TextStyle style{kTextSize};
-  const std::string text = "= " + value_text(f) + (key.unit.empty() ? "" : " " + key.unit) + "   (" + key.note + ")";
   const double line = render::text_size(canvas, "force scale", style).x() + (8 + kLongest + 6 + 10) * scale +
-                      render::text_size(canvas, text, style).x();
+                      render::text_size(canvas, scale_text(key, f, true), style).x();
   return line <= width;
 }
 
@@ -85,8 +91,7 @@ double draw_force_key(render::Canvas& canvas, const ForceKey& key, double pixels
   const double f = force_key_value(key, pixels_per_world, scale);
   if (f <= 0) return 0;
   const render::TextStyle style{kTextSize, ink};
-  std::string text = "= " + value_text(f) + (key.unit.empty() ? "" : " " + key.unit);
-  if (!key.note.empty() && !note_row) text += "   (" + key.note + ")";
+  const std::string text = scale_text(key, f, !note_row);
   const render::Point size = render::text_size(canvas, "force scale " + text, style);
   const double y = bottom_left.y() - 0.5 * size.y();
   const double length = f * key.world_per_force * pixels_per_world;
