@@ -160,6 +160,7 @@ void SystemScene::draw_static(render::Canvas& canvas) {
                    key_note_row_, style_.colors.wire.with_alpha(0.75));
   canvas.record_into(nullptr);
   static_outline_ = std::move(record.outline);
+  static_marks_.reset(static_outline_.shapes().size());
 }
 
 void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
@@ -202,7 +203,8 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   if (notes_)
     for (auto& request : notes_->body_requests(row[0], view_area_.center())) last_frame_.labels.push_back(std::move(request));
   last_frame_.placed =
-      render::place_labels(canvas, last_frame_.labels, last_frame_.outline, label_area(canvas.scale()), &label_memory_);
+      render::place_labels(canvas, last_frame_.labels, last_frame_.outline, label_area(canvas.scale()), &label_memory_,
+                          &static_marks_);
   render::draw_placed_labels(canvas, last_frame_.placed);
   if (notes_)
     notes_->draw_panel_notes(canvas, row[0], [this](size_t i) { return i < panels_.size() ? panels_[i]->time_plot() : nullptr; });

@@ -107,6 +107,7 @@ class SystemScene final : public Scene {
   /// The last frame's diagram part: its outline and labels.
   render::DrawingRecord last_frame_;
   render::LabelMemory label_memory_;  ///< where the labels of the last frame drawn went
+  render::StaticMarks static_marks_;  ///< static_outline_ marked into the label placer's grid
   long long label_chain_ = -1;
 };
 

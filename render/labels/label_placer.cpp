@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "render/draw/contrast.hpp"
 #include "render/draw/elements/shapes.hpp"
@@ -133,10 +134,11 @@ void draw_pointer(Canvas& canvas, const PlacedLabel& label) {
 }  // namespace
 
 std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelRequest>& requests, Outline& outline,
-                                      const PixelRect& bounds, LabelMemory* memory) {
+                                      const PixelRect& bounds, LabelMemory* memory, StaticMarks* static_marks) {
   const double scale = canvas.scale();
   OccupancyGrid grid(bounds, 2 * scale, 1.5 * scale);
-  for (const OutlineShape& shape : outline.shapes()) grid.add(shape);
+  const auto& shapes = outline.shapes();
+  for (size_t i = static_marks ? static_marks->mark_into(grid, outline) : 0; i < shapes.size(); ++i) grid.add(shapes[i]);
   std::vector<PlacedLabel> placed;
   LabelMemory spots;
   std::map<std::string, int> seen;  // occurrences of each text so far
@@ -152,18 +154,19 @@ std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelReq
                     -std::sin(angle) * preferred.x() + std::cos(angle) * preferred.y());
       return box_at(label_beyond(request.anchor, d, size, request.gap + c.steps * kStep * scale), size);
     };
+    // The first free spot, cheapest first; where none is, the least covered.
     const Candidate* chosen = nullptr;
-    const Candidate* least_covered = nullptr;
-    long long least = -1;
-    for (const Candidate& c : candidates()) {
-      const PixelRect box = box_for(c);
-      if (!within(box, bounds)) continue;
-      const long long taken = grid.taken(box);
-      if (taken == 0) {
+    for (const Candidate& c : candidates())
+      if (const PixelRect box = box_for(c); within(box, bounds) && grid.free(box)) {
         chosen = &c;
         break;
       }
-      if (least < 0 || taken < least) least = taken, least_covered = &c;
+    const Candidate* least_covered = nullptr;
+    long long least = -1;
+    for (const Candidate& c : chosen ? std::span<const Candidate>() : std::span(candidates())) {
+      const PixelRect box = box_for(c);
+      if (!within(box, bounds)) continue;
+      if (const long long taken = grid.taken(box); least < 0 || taken < least) least = taken, least_covered = &c;
     }
     Candidate c = chosen ? *chosen : least_covered ? *least_covered : candidates().front();
     if (memory && chosen) {
@@ -173,7 +176,7 @@ std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelReq
         const LabelSpot& s = kept->second;
         const Candidate before{s.turn, s.steps, s.steps * kStep + std::abs(s.turn) * kTurnCost};
         const PixelRect box = box_for(before);
-        if (before.cost <= c.cost + kKeep && within(box, bounds) && grid.taken(box) == 0) c = before;
+        if (before.cost <= c.cost + kKeep && within(box, bounds) && grid.free(box)) c = before;
       }
     }
     spots[key] = {c.turn, c.steps};

@@ -6,6 +6,7 @@
 
 #include "render/labels/label_request.hpp"
 #include "render/labels/outline.hpp"
+#include "render/labels/static_marks.hpp"
 
 namespace vibra::render {
 
@@ -41,9 +42,11 @@ struct PlacedLabel {
 /// the best, and `memory` then holds this frame's spots. A pure function of
 /// the picture and the memory, so that a frame is the still at its time when
 /// the still replays the frames since the memory began. The placed boxes
-/// join `outline` as labels.
+/// join `outline` as labels. With `static_marks`, the outline's leading
+/// static shapes are taken as marked there (the same spots, less work).
 std::vector<PlacedLabel> place_labels(Canvas&, const std::vector<LabelRequest>&, Outline& outline,
-                                      const PixelRect& bounds, LabelMemory* memory = nullptr);
+                                      const PixelRect& bounds, LabelMemory* memory = nullptr,
+                                      StaticMarks* static_marks = nullptr);
 
 /// Draws placed labels with their halos, and leader lines where they moved away.
 void draw_placed_labels(Canvas&, const std::vector<PlacedLabel>&);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <stdexcept>
 
 namespace vibra::render {
 
@@ -51,6 +52,16 @@ void OccupancyGrid::mark(int row, int first, int last) {
     words[word] |= bits_between(column % 64, end - word * 64);
     column = end;
   }
+}
+
+bool OccupancyGrid::any(int row, int first, int last) const {
+  const std::uint64_t* words = bits_.data() + static_cast<size_t>(row) * words_per_row_;
+  for (int column = first; column < last;) {
+    const int word = column / 64, end = std::min(last, (word + 1) * 64);
+    if (words[word] & bits_between(column % 64, end - word * 64)) return true;
+    column = end;
+  }
+  return false;
 }
 
 #if defined(__x86_64__)
@@ -162,20 +173,49 @@ void OccupancyGrid::add_box(const PixelRect& r) {
   if (range.c0 <= range.c1 && range.r0 <= range.r1) boxes_.push_back(range);
 }
 
+OccupancyGrid::CellRange OccupancyGrid::query_cells(const PixelRect& r) const {
+  return {clamped_floor((r.x - area_.x) / cell_, 0, columns_), clamped_floor((r.x + r.w - area_.x) / cell_ + 1, 0, columns_),
+          clamped_floor((r.y - area_.y) / cell_, 0, rows_), clamped_floor((r.y + r.h - area_.y) / cell_ + 1, 0, rows_)};
+}
+
+namespace {
+/// Cells of a placed box inside a query's (exclusive ends c1, r1).
+long long overlap_cells(int c0, int c1, int r0, int r1, int b_c0, int b_c1, int b_r0, int b_r1) {
+  const long long across = std::min(c1 - 1, b_c1) - std::max(c0, b_c0) + 1;
+  const long long down = std::min(r1 - 1, b_r1) - std::max(r0, b_r0) + 1;
+  return across > 0 && down > 0 ? across * down : 0;
+}
+}  // namespace
+
 long long OccupancyGrid::taken(const PixelRect& r) const {
-  const int c0 = clamped_floor((r.x - area_.x) / cell_, 0, columns_);
-  const int c1 = clamped_floor((r.x + r.w - area_.x) / cell_ + 1, 0, columns_);
-  const int r0 = clamped_floor((r.y - area_.y) / cell_, 0, rows_);
-  const int r1 = clamped_floor((r.y + r.h - area_.y) / cell_ + 1, 0, rows_);
+  const auto [c0, c1, r0, r1] = query_cells(r);
   long long cells = 0;
   for (int row = r0; row < r1; ++row) cells += count(row, c0, c1);
-  // The query covers columns c0 .. c1 - 1 and rows r0 .. r1 - 1.
-  for (const CellRange& b : boxes_) {
-    const long long across = std::min(c1 - 1, b.c1) - std::max(c0, b.c0) + 1;
-    const long long down = std::min(r1 - 1, b.r1) - std::max(r0, b.r0) + 1;
-    if (across > 0 && down > 0) cells += across * down;
-  }
+  for (const CellRange& b : boxes_) cells += overlap_cells(c0, c1, r0, r1, b.c0, b.c1, b.r0, b.r1);
   return cells;
+}
+
+bool OccupancyGrid::free(const PixelRect& r) const {
+  const auto [c0, c1, r0, r1] = query_cells(r);
+  for (const CellRange& b : boxes_)
+    if (overlap_cells(c0, c1, r0, r1, b.c0, b.c1, b.r0, b.r1) > 0) return false;
+  for (int row = r0; row < r1; ++row)
+    if (any(row, c0, c1)) return false;
+  return true;
+}
+
+bool OccupancyGrid::same_cells(const OccupancyGrid& other) const {
+  return area_.x == other.area_.x && area_.y == other.area_.y && area_.w == other.area_.w && area_.h == other.area_.h &&
+         cell_ == other.cell_ && clearance_ == other.clearance_;
+}
+
+std::unique_ptr<OccupancyGrid> OccupancyGrid::empty_like() const {
+  return std::make_unique<OccupancyGrid>(area_, cell_, clearance_);
+}
+
+void OccupancyGrid::copy_marks(const OccupancyGrid& other) {
+  if (!same_cells(other) || !boxes_.empty()) throw std::logic_error("OccupancyGrid::copy_marks: another grid's cells");
+  bits_ = other.bits_;
 }
 
 }  // namespace vibra::render

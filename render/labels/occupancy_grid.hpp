@@ -1,6 +1,7 @@
 // OccupancyGrid: a drawing's outline rasterized into cells, one bit each, to test whether a box is free.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "render/labels/outline.hpp"
@@ -21,11 +22,20 @@ class OccupancyGrid {
   OccupancyGrid& operator=(const OccupancyGrid&) = delete;
 
   void add(const OutlineShape&);
+  /// An empty grid with this one's area, cells and clearance.
+  std::unique_ptr<OccupancyGrid> empty_like() const;
+  /// Whether both grids cover the same area with the same cells and clearance.
+  bool same_cells(const OccupancyGrid&) const;
+  /// Takes `other`'s marked cells as this grid's (same_cells, no boxes yet):
+  /// a copy of its bits instead of marking its shapes again.
+  void copy_marks(const OccupancyGrid& other);
   /// A placed label: the cells it covers, with the clearance, count as
   /// taken. Kept beside the table, so placing a label does not rebuild it.
   void add_box(const PixelRect&);
   /// How many taken cells the box touches (0: free).
   long long taken(const PixelRect&) const;
+  /// Whether the box touches no taken cell: taken(box) == 0, stopping at the first taken cell.
+  bool free(const PixelRect&) const;
 
  private:
   struct CellRange {
@@ -39,6 +49,10 @@ class OccupancyGrid {
   void mark(int row, int first, int last);
   /// Taken cells among [first, last) of `row`.
   long long count(int row, int first, int last) const;
+  /// Whether any cell among [first, last) of `row` is taken.
+  bool any(int row, int first, int last) const;
+  /// The cells a query box touches: columns c0 .. c1 - 1, rows r0 .. r1 - 1 (exclusive ends, unlike CellRange).
+  CellRange query_cells(const PixelRect&) const;
 
   /// A frame places labels in several grids of the same size one after
   /// another: the storage is handed on from grid to grid within a thread,
