@@ -2,6 +2,8 @@
 #pragma once
 #include <cairo.h>
 
+#include <cstdint>
+
 namespace vibra::render {
 
 /// Strokes the current path of `cr` in software, and clears the path, when
@@ -30,5 +32,14 @@ bool raster_stroke(cairo_t* cr);
 /// whole 256ths of a pixel. A part of a dashed path, stroked with the dash
 /// offset summed from these, has its dashes where the whole path has them.
 double stroked_distance(double ax, double ay, double bx, double by);
+
+/// The stroke's last step on one row: pixels[first .. last] = source IN
+/// masks OVER pixels (premultiplied ARGB32, each channel times a / 255
+/// rounded as pixman rounds), then masks[first .. last] = 0. `masks` has 7
+/// bytes of room past `last` (read, written back unchanged). Eight pixels at
+/// a time where the processor has AVX2, the same bytes as one at a time
+/// (`one_at_a_time`).
+void blend_span(std::uint32_t* pixels, std::uint8_t* masks, int first, int last, std::uint32_t source,
+                bool one_at_a_time = false);
 
 }  // namespace vibra::render

@@ -404,3 +404,43 @@ TEST_CASE("a software stroke of 300 random pieces, every angle, cap and width, i
   std::snprintf(held, sizeof held, "0x%016llx", static_cast<unsigned long long>(random_strokes_hash(s)));
   CHECK(std::string(held) == "0x9e8ce426a08b3a3b");
 }
+
+TEST_CASE("a stroke's mask is blended as source IN mask OVER the pixels, eight at a time as one at a time",
+          "[render][stroke_raster]") {
+  // pixman's rounding of x * a / 255 is round to nearest (x * a / 255 is never a half).
+  auto times = [](std::uint32_t x, std::uint32_t a) { return (2 * x * a + 255) / 510; };
+  std::mt19937 random(11);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const int width = 1 + int(random() % 40), first = int(random() % width), last = first + int(random() % (width - first));
+    // A premultiplied source: each colour channel at most its alpha.
+    const std::uint32_t alpha = random() % 256;
+    std::uint32_t source = alpha << 24;
+    for (int c = 0; c < 3; ++c) source |= std::uint32_t(alpha ? random() % (alpha + 1) : 0) << (8 * c);
+    std::vector<std::uint32_t> pixels(width), expected;
+    std::vector<std::uint8_t> masks(width + 7);
+    for (auto& p : pixels) {
+      const std::uint32_t a = random() % 256;
+      p = a << 24;
+      for (int c = 0; c < 3; ++c) p |= std::uint32_t(random() % (a + 1)) << (8 * c);
+    }
+    for (auto& m : masks) m = trial % 3 == 0 && random() % 3 == 0 ? 0 : std::uint8_t(random());
+    expected = pixels;
+    for (int x = first; x <= last; ++x) {
+      std::uint32_t out = 0;
+      const std::uint32_t in_alpha = times(alpha, masks[x]);
+      for (int c = 0; c < 4; ++c) {
+        const std::uint32_t s = times((source >> (8 * c)) & 0xff, masks[x]), d = (pixels[x] >> (8 * c)) & 0xff;
+        out |= (s + times(d, 255 - in_alpha)) << (8 * c);
+      }
+      expected[x] = out;
+    }
+    for (const bool one_at_a_time : {true, false}) {
+      std::vector<std::uint32_t> got = pixels;
+      std::vector<std::uint8_t> left = masks;
+      vibra::render::blend_span(got.data(), left.data(), first, last, source, one_at_a_time);
+      INFO("trial " << trial << ", one at a time " << one_at_a_time << ", columns " << first << ".." << last);
+      REQUIRE(got == expected);
+      for (int x = 0; x < width + 7; ++x) REQUIRE(int(left[x]) == (x >= first && x <= last ? 0 : int(masks[x])));
+    }
+  }
+}
