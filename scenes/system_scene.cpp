@@ -134,7 +134,8 @@ void SystemScene::prepare() {
 
 render::WorldView SystemScene::view_at(std::span<const double> row) {
   prepare();
-  if (std::optional<WorldBox> moving = diagram_->view_at(row)) return render::WorldView(*moving, view_area_);
+  if (std::optional<FollowingView> moving = diagram_->view_at(row))
+    return render::WorldView(moving->centre, moving->sizes, view_area_);
   return *view_;
 }
 
@@ -167,8 +168,8 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   prepare();
   background_.paint(canvas, progress_to(row));
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i]->draw(canvas, row[0], row, i == time_labels_panel_);
-  const std::optional<WorldBox> moving = diagram_->view_at(row);
-  const render::WorldView view = moving ? render::WorldView(*moving, view_area_) : *view_;
+  const std::optional<FollowingView> moving = diagram_->view_at(row);
+  const render::WorldView view = moving ? render::WorldView(moving->centre, moving->sizes, view_area_) : *view_;
   // Everything in the diagram's part is recorded, so that its labels,
   // placed last, keep off all of it.
   last_frame_ = {};

@@ -165,10 +165,12 @@ Damage Canvas::changed() const {
   return changed;
 }
 
-WorldView::WorldView(const Eigen::AlignedBox2d& world, const PixelRect& pixels) {
-  const Point size = world.sizes();
+WorldView::WorldView(const Eigen::AlignedBox2d& world, const PixelRect& pixels)
+    : WorldView(world.center(), world.sizes(), pixels) {}
+
+WorldView::WorldView(const Point& c, const Point& size, const PixelRect& pixels) {
   zoom_ = std::min(pixels.w / size.x(), pixels.h / size.y());
-  const Point c = world.center(), p = pixels.center();
+  const Point p = pixels.center();
   // x' = p.x + zoom (x - c.x), y' = p.y - zoom (y - c.y): y flips to point down.
   transform_.matrix() << zoom_, 0, p.x() - zoom_ * c.x(), 0, -zoom_, p.y() + zoom_ * c.y(), 0, 0, 1;
 }

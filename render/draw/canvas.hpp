@@ -135,6 +135,10 @@ void clip_to_pixels(cairo_t* cr, const PixelRect& r);
 class WorldView {
  public:
   WorldView(const Eigen::AlignedBox2d& world, const PixelRect& pixels);
+  /// The world `sizes` around `centre`: a view that follows a body keeps its
+  /// sizes exact, where a box's max - min would vary in its last bits as it
+  /// moves (and with it the zoom and every row of the picture).
+  WorldView(const Point& centre, const Point& sizes, const PixelRect& pixels);
   Point to_pixel(const Point& world) const { return transform_ * world; }
   /// Pixels per world unit.
   double zoom() const { return zoom_; }

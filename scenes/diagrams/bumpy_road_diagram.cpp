@@ -65,8 +65,8 @@ void BumpyRoadDiagram::finish_recording(WorldBox& world) {
                   render::Stroke{colors_.wire, 2.2});
 }
 
-std::optional<WorldBox> BumpyRoadDiagram::view_at(std::span<const double> row) const {
-  return WorldBox(Point(row[3] - half_width_, low_), Point(row[3] + half_width_, high_));
+std::optional<FollowingView> BumpyRoadDiagram::view_at(std::span<const double> row) const {
+  return FollowingView{Point(row[3], 0.5 * (low_ + high_)), Point(2 * half_width_, high_ - low_)};
 }
 
 std::vector<DrawnForce> BumpyRoadDiagram::forces(std::span<const double> row) const {

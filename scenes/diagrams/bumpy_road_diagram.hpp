@@ -33,7 +33,7 @@ class BumpyRoadDiagram final : public Diagram {
 
   void record(std::span<const double> row, WorldBox& world) override;
   void finish_recording(WorldBox& world) override;
-  std::optional<WorldBox> view_at(std::span<const double> row) const override;
+  std::optional<FollowingView> view_at(std::span<const double> row) const override;
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   std::vector<PanelSpec> panels() const override;
   std::optional<ForceKey> force_key() const override;

@@ -92,7 +92,7 @@ void ComparisonDiagram::finish_recording(WorldBox& world) {
   for (Member& m : members_) m.diagram->finish_recording(world);
 }
 
-std::optional<WorldBox> ComparisonDiagram::view_at(std::span<const double> row) const {
+std::optional<FollowingView> ComparisonDiagram::view_at(std::span<const double> row) const {
   // A following view follows the first member still running.
   for (const Member& m : members_) {
     const auto member = m.columns.slice(row, slice_);

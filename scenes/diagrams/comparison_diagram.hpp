@@ -26,7 +26,7 @@ class ComparisonDiagram final : public Diagram {
 
   void record(std::span<const double> row, WorldBox&) override;
   void finish_recording(WorldBox&) override;
-  std::optional<WorldBox> view_at(std::span<const double> row) const override;
+  std::optional<FollowingView> view_at(std::span<const double> row) const override;
   void draw_static(render::Canvas&, const render::WorldView&) const override;
   void draw(render::Canvas&, const render::WorldView&, std::span<const double> row) override;
   /// Each panel of the first member's diagram, with one curve per member in

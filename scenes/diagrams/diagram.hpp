@@ -41,6 +41,16 @@ struct LegendEntry {
 /// Widens `world` to be symmetric about the vertical line at `x`, so that a
 /// pendulum's pivot sits on the frame's centre line whichever way it swings
 /// further (the view centres the world box).
+/// A view that follows a body: the world point at its centre and the world
+/// size it shows. The size is given, not taken from a moving box's corners,
+/// so that it stays the same to the last bit from frame to frame: the road's
+/// tiles are drawn again whenever the view's rows move.
+struct FollowingView {
+  Point centre;
+  Point sizes;
+  WorldBox box() const { return WorldBox(centre - 0.5 * sizes, centre + 0.5 * sizes); }
+};
+
 inline void center_horizontally_on(WorldBox& world, double x) {
   const double half = std::max(x - world.min().x(), world.max().x() - x);
   world.extend(Point(x - half, world.min().y()));
@@ -75,9 +85,9 @@ class Diagram {
   /// After the pre-pass: the fixed parts (walls, floor) and any balancing of
   /// the box (e.g. symmetric about a pivot).
   virtual void finish_recording(WorldBox& world) { (void)world; }
-  /// A view that follows the body (a vehicle on a long road): the world box
-  /// to show at this row. Empty for a fixed view over the whole run.
-  virtual std::optional<WorldBox> view_at(std::span<const double> row) const {
+  /// A view that follows the body (a vehicle on a long road): what to show
+  /// at this row. Empty for a fixed view over the whole run.
+  virtual std::optional<FollowingView> view_at(std::span<const double> row) const {
     (void)row;
     return std::nullopt;
   }
