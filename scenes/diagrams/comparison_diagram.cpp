@@ -16,6 +16,9 @@ namespace {
 constexpr double kGhostAlpha = 0.5;
 /// 720p pixels of a dash in a ghost's outline.
 constexpr double kGhostDash = 7;
+/// 720p pixels the ghosts may move from one frame to the next and still be
+/// drawn in a group the size of where they were.
+constexpr double kGhostMargin = 48;
 
 /// The filled bodies a drawing recorded (a bob, a box, a wheel's rim), as
 /// polygons in pixels; small ones (a wheel's hub) are left out.
@@ -106,39 +109,68 @@ void ComparisonDiagram::draw_static(render::Canvas& canvas, const render::WorldV
 }
 
 void ComparisonDiagram::draw(render::Canvas& canvas, const render::WorldView& view, std::span<const double> row) {
-  auto draw_member = [&](Member& m) {
-    const auto member = m.columns.slice(row, slice_);
-    if (std::isfinite(member[1])) m.diagram->draw(canvas, view, member);
-  };
-  std::vector<std::vector<std::vector<render::Point>>> ghost_bodies(members_.size());
+  std::vector<Bodies> ghost_bodies(members_.size());
   if (members_.size() > 1) {
-    // All ghosts in one group, made faint together (one layer per frame),
-    // under the first run, which stays clear with its forces. Each ghost is
-    // recorded on its own to find its bodies, then into the frame's record.
-    render::DrawingRecord* frame = canvas.record();
-    Eigen::AlignedBox2d drawn;  // empty
-    Eigen::AlignedBox2d* outer = canvas.extent_into(&drawn);
-    cairo_push_group(canvas.cr());
-    for (size_t i = 1; i < members_.size(); ++i) {
-      render::DrawingRecord ghost;
-      canvas.record_into(&ghost);
-      draw_member(members_[i]);
-      canvas.record_into(frame);
-      ghost_bodies[i] = body_polygons(ghost.outline, 8 * canvas.scale());
-      if (frame) {
-        frame->outline.append(ghost.outline);
-        frame->labels.insert(frame->labels.end(), ghost.labels.begin(), ghost.labels.end());
-      }
+    // The group under the ghosts is cleared for every frame: as large as the
+    // diagram's part, that was a twentieth of a comparison frame's drawing.
+    // Where they drew last frame, with a margin, is room enough unless they
+    // jumped; then they are drawn again in a group of the whole part.
+    std::optional<std::vector<Bodies>> drawn;
+    if (!ghosts_drawn_.isEmpty()) {
+      const double margin = kGhostMargin * canvas.scale();
+      const Eigen::AlignedBox2d& b = ghosts_drawn_;
+      drawn = draw_ghosts(canvas, view, row,
+                          render::PixelRect{b.min().x() - margin, b.min().y() - margin, b.sizes().x() + 2 * margin,
+                                            b.sizes().y() + 2 * margin});
     }
-    canvas.extent_into(outer);
-    if (outer && !drawn.isEmpty()) outer->extend(drawn);
-    cairo_pop_group_to_source(canvas.cr());
-    if (!drawn.isEmpty()) paint_within(canvas.cr(), drawn, kGhostAlpha);
-    cairo_set_source_rgb(canvas.cr(), 0, 0, 0);  // lets the group go
+    if (!drawn) drawn = draw_ghosts(canvas, view, row, std::nullopt);
+    ghost_bodies = std::move(*drawn);
   }
-  draw_member(members_.front());
+  const auto first = members_.front().columns.slice(row, slice_);
+  if (std::isfinite(first[1])) members_.front().diagram->draw(canvas, view, first);
   for (size_t i = 1; i < members_.size(); ++i)
     outline_ghost(canvas, ghost_bodies[i], i - 1, members_.size() - 1, members_[i].entry.color);
+}
+
+std::optional<std::vector<ComparisonDiagram::Bodies>> ComparisonDiagram::draw_ghosts(
+    render::Canvas& canvas, const render::WorldView& view, std::span<const double> row,
+    const std::optional<render::PixelRect>& room) {
+  // Each ghost is recorded on its own to find its bodies, then into the frame's record.
+  cairo_t* cr = canvas.cr();
+  render::DrawingRecord* frame = canvas.record();
+  std::vector<render::DrawingRecord> ghosts(members_.size());
+  Eigen::AlignedBox2d drawn;  // empty
+  Eigen::AlignedBox2d* outer = canvas.extent_into(&drawn);
+  cairo_save(cr);
+  if (room) render::clip_to_pixels(cr, *room);
+  cairo_push_group(cr);
+  for (size_t i = 1; i < members_.size(); ++i) {
+    canvas.record_into(&ghosts[i]);
+    const auto member = members_[i].columns.slice(row, slice_);
+    if (std::isfinite(member[1])) members_[i].diagram->draw(canvas, view, member);
+  }
+  canvas.record_into(frame);
+  canvas.extent_into(outer);
+  cairo_pop_group_to_source(cr);
+  // paint_within takes a pixel more on each side: the room must hold that too.
+  const bool fits = !room || drawn.isEmpty() ||
+                    (drawn.min().x() - 2 >= room->x && drawn.min().y() - 2 >= room->y &&
+                     drawn.max().x() + 2 <= room->x + room->w && drawn.max().y() + 2 <= room->y + room->h);
+  if (fits && !drawn.isEmpty()) paint_within(cr, drawn, kGhostAlpha);
+  cairo_set_source_rgb(cr, 0, 0, 0);  // lets the group go
+  cairo_restore(cr);
+  if (!fits) return std::nullopt;
+  ghosts_drawn_ = drawn;
+  if (outer && !drawn.isEmpty()) outer->extend(drawn);
+  std::vector<Bodies> bodies(members_.size());
+  for (size_t i = 1; i < members_.size(); ++i) {
+    bodies[i] = body_polygons(ghosts[i].outline, 8 * canvas.scale());
+    if (frame) {
+      frame->outline.append(ghosts[i].outline);
+      frame->labels.insert(frame->labels.end(), ghosts[i].labels.begin(), ghosts[i].labels.end());
+    }
+  }
+  return bodies;
 }
 
 std::vector<PanelSpec> ComparisonDiagram::panels() const {

@@ -36,7 +36,19 @@ class ComparisonDiagram final : public Diagram {
   std::optional<ForceKey> force_key() const override;
 
  private:
+  using Bodies = std::vector<std::vector<render::Point>>;
+  /// Draws every member but the first into one group, made faint together,
+  /// and returns each one's bodies; with `room`, the group covers only that
+  /// much of the canvas, and when the ghosts reach beyond it nothing is
+  /// drawn or recorded and the result is empty.
+  std::optional<std::vector<Bodies>> draw_ghosts(render::Canvas&, const render::WorldView&, std::span<const double> row,
+                                                 const std::optional<render::PixelRect>& room);
+
   std::vector<Member> members_;
+  /// Where the ghosts drew in the frame before (pixels; empty: unknown): the
+  /// next frame's group need not be larger than this with a margin. Only the
+  /// group's size depends on it, never a pixel.
+  Eigen::AlignedBox2d ghosts_drawn_;
   bool shared_exact_;
   std::string exact_label_;
   mutable std::vector<double> slice_;

@@ -6,6 +6,7 @@
 #include <cairo.h>
 
 #include <cmath>
+#include <cstring>
 #include <iterator>
 #include <fstream>
 #include <map>
@@ -219,6 +220,42 @@ TEST_CASE("each member's ghost is drawn at its own state", "[comparison]") {
   CHECK(ghost[0] > ghost[2] + 60);  // the ghost's bob: faint orange
   CHECK(ghost[0] < 250);
   CHECK(nothing == std::array<int, 3>{255, 255, 255});
+}
+
+TEST_CASE("ghosts that moved far since the frame before are drawn whole, as on a canvas that drew nothing before",
+          "[comparison]") {
+  // The ghosts' group covers where they were in the frame before, with a
+  // margin: a ghost beyond it is drawn again in a group of the whole diagram.
+  const std::vector<std::pair<std::string, std::string>> settings = {
+      {"compare", "scheme=forward-euler,backward-euler,rk4"}, {"layout", "fbd"}, {"size", "640x360"}};
+  DrawnScene moved = drawn_at_start("spring", settings);  // drew t = 0
+  DrawnScene fresh = drawn_at_start("spring", settings);
+  scenes::SceneConfig config = scenes::load_scene("spring");
+  for (const auto& [k, v] : settings) scenes::apply_setting(config, {k, v, "test"});
+  auto runs = scenes::build_scene_runs(config);
+  std::vector<double> row(runs->width()), half_period;
+  do {
+    runs->row(row);
+    if (half_period.empty() && row[0] >= M_PI - 1e-9) half_period = row;  // u from 1 to about -1
+  } while (row[0] < 2 * M_PI - 1e-9 && runs->advance());  // and back
+  REQUIRE(!half_period.empty());
+  // The ghosts' box runs from the wall to the bodies: it shrinks by half a
+  // period, and grows back beyond the margin (24 px at 360p) by a period.
+  REQUIRE(std::abs(row[1] - half_period[1]) * moved.view().zoom() > 60);
+  // The same frame drawn after the others and drawn first (new label chains: no spots remembered).
+  moved.scene->draw(moved.canvas, half_period);
+  moved.scene->set_label_chain(1);
+  moved.scene->draw(moved.canvas, row);
+  moved.canvas.flush();
+  render::Canvas first = render::Canvas::image(config.width, config.height);
+  fresh.scene->set_label_chain(1);
+  fresh.scene->draw(first, row);
+  first.flush();
+  int differ = 0;
+  for (int y = 0; y < config.height; ++y)
+    differ += std::memcmp(moved.canvas.data() + y * moved.canvas.stride(), first.data() + y * first.stride(),
+                          4 * size_t(config.width)) != 0;
+  CHECK(differ == 0);
 }
 
 TEST_CASE("in a comparison the first run's forces are charcoal: a hue names a run", "[comparison]") {
