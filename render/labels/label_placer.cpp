@@ -137,8 +137,7 @@ std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelReq
                                       const PixelRect& bounds, LabelMemory* memory, StaticMarks* static_marks) {
   const double scale = canvas.scale();
   OccupancyGrid grid(bounds, 2 * scale, 1.5 * scale);
-  const auto& shapes = outline.shapes();
-  for (size_t i = static_marks ? static_marks->mark_into(grid, outline) : 0; i < shapes.size(); ++i) grid.add(shapes[i]);
+  grid.add_shapes(outline.shapes(), static_marks ? static_marks->mark_into(grid, outline) : 0);
   std::vector<PlacedLabel> placed;
   LabelMemory spots;
   std::map<std::string, int> seen;  // occurrences of each text so far

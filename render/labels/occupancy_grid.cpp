@@ -157,15 +157,33 @@ void OccupancyGrid::mark_polygon(const std::vector<Point>& polygon) {
   }
 }
 
-void OccupancyGrid::add(const OutlineShape& shape) {
+void OccupancyGrid::add(const OutlineShape& shape, bool edges) {
   // Skipped when out of every cell's reach (mark_segment's: the clearance and half a cell's diagonal).
   const PixelRect& b = shape.bounds;
   const double reach = clearance_ + 0.7072 * cell_;
   if (b.x > area_.x + area_.w + reach || b.x + b.w < area_.x - reach || b.y > area_.y + area_.h + reach ||
       b.y + b.h < area_.y - reach)
     return;
-  for (const auto& [a, c] : shape.segments) mark_segment(a, c, shape.half_width + clearance_);
+  if (edges)
+    for (const auto& [a, c] : shape.segments) mark_segment(a, c, shape.half_width + clearance_);
   for (const auto& polygon : shape.polygons) mark_polygon(polygon);
+}
+
+namespace {
+/// Whether `wider` marks every cell `shape`'s segments mark: the same path, at least as wide.
+bool edges_covered_by(const OutlineShape& shape, const OutlineShape& wider) {
+  return wider.half_width >= shape.half_width && wider.segments == shape.segments;
+}
+}  // namespace
+
+void OccupancyGrid::add_shapes(const std::vector<OutlineShape>& shapes, size_t first) {
+  for (size_t i = first; i < shapes.size(); ++i) {
+    // Of two equally wide, the later one marks the path; no two leave it to each other.
+    const bool covered = (i + 1 < shapes.size() && edges_covered_by(shapes[i], shapes[i + 1])) ||
+                         (i > first && shapes[i - 1].half_width > shapes[i].half_width &&
+                          edges_covered_by(shapes[i], shapes[i - 1]));
+    add(shapes[i], !covered);
+  }
 }
 
 void OccupancyGrid::add_box(const PixelRect& r) {

@@ -21,7 +21,14 @@ class OccupancyGrid {
   OccupancyGrid(const OccupancyGrid&) = delete;
   OccupancyGrid& operator=(const OccupancyGrid&) = delete;
 
-  void add(const OutlineShape&);
+  /// Marks the shape: its segments' reach and its polygons' insides. Without
+  /// `edges`, the polygons alone (another shape marks the same segments at
+  /// least as wide: a fill's outline stroked, an arrow on its casing).
+  void add(const OutlineShape&, bool edges = true);
+  /// Marks shapes[first ..]: the same cells as add() of each, but a path two
+  /// neighbours share (a fill and the stroke of its outline, an arrow's
+  /// shaft on its casing) is marked once, at the larger width.
+  void add_shapes(const std::vector<OutlineShape>& shapes, size_t first = 0);
   /// An empty grid with this one's area, cells and clearance.
   std::unique_ptr<OccupancyGrid> empty_like() const;
   /// Whether both grids cover the same area with the same cells and clearance.

@@ -124,3 +124,42 @@ TEST_CASE("label placer: with the static shapes' marks, the labels take the same
     }
   }
 }
+
+TEST_CASE("occupancy grid: shapes sharing a path are marked once, the same cells as each marked alone", "[labels]") {
+  // A filled triangle and the stroke of its outline, an arrow's shaft on its
+  // casing, equal widths twice over, a narrower stroke after a wider one, and
+  // a path that differs by a bit from its neighbour's.
+  std::mt19937 random(12);
+  std::uniform_real_distribution<double> x(0, 320), y(0, 180);
+  std::vector<OutlineShape> shapes;
+  auto path = [&](double half_width, const std::vector<Point>& points, bool filled) {
+    OutlineShape s;
+    for (size_t i = 0; i + 1 < points.size(); ++i) s.segments.push_back({points[i], points[i + 1]});
+    s.half_width = half_width;
+    if (filled) s.polygons = {points};
+    s.bounds = {-10, -10, 340, 200};
+    shapes.push_back(s);
+  };
+  for (int trial = 0; trial < 40; ++trial) {
+    const Point a(x(random), y(random)), b(x(random), y(random)), c(x(random), y(random));
+    const std::vector<Point> p = {a, b, c, a};
+    switch (trial % 5) {
+      case 0: path(0, p, true), path(1.2, p, false); break;                 // fill, then its outline
+      case 1: path(2.5, {a, b}, false), path(1, {a, b}, false); break;      // casing, then shaft
+      case 2: path(1, {a, b}, false), path(1, {a, b}, false), path(1, {a, b}, false); break;
+      case 3: path(1, {a, c}, false), path(3, {a, c}, false), path(2, {a, c}, false); break;
+      default: path(2, {a, b}, false), path(1, {a, Point(b.x() + 1e-12, b.y())}, false); break;
+    }
+  }
+  OccupancyGrid together(kArea, kCell, kClearance), alone(kArea, kCell, kClearance);
+  together.add_shapes(shapes, 3);
+  for (size_t i = 3; i < shapes.size(); ++i) alone.add(shapes[i]);
+  CHECK(same_cells_taken(together, alone));
+  // Without its edges a lone shape marks only its inside.
+  OccupancyGrid inside(kArea, kCell, kClearance);
+  inside.add(shapes[0], false);
+  OccupancyGrid whole(kArea, kCell, kClearance);
+  whole.add(shapes[0]);
+  CHECK(inside.taken(kArea) > 0);
+  CHECK(inside.taken(kArea) < whole.taken(kArea));
+}
