@@ -200,13 +200,17 @@ Point draw_text(Canvas& canvas, const Point& at, const std::string& markup, cons
 
 double halo_reach(const TextStyle& style, double scale) { return style.halo ? 2.5 * scale : 0; }
 
-Point label_beyond(const Point& tip, const Point& direction, const Point& size, double gap) {
+LabelRay label_ray(const Point& direction, const Point& size) {
   const double n = direction.norm();
   const Point d = n > 1e-12 ? Point(direction / n) : Point(1, 0);
   // Distance from the box centre to its edge along d, so any direction clears the box.
   const double reach = std::min(std::abs(d.x()) > 1e-12 ? 0.5 * size.x() / std::abs(d.x()) : 1e300,
                                 std::abs(d.y()) > 1e-12 ? 0.5 * size.y() / std::abs(d.y()) : 1e300);
-  return tip + (gap + reach) * d;
+  return {d, reach};
+}
+
+Point label_beyond(const Point& tip, const Point& direction, const Point& size, double gap) {
+  return label_beyond(tip, label_ray(direction, size), gap);
 }
 
 std::string markup_plain_text(const std::string& markup) {

@@ -43,5 +43,17 @@ double halo_reach(const TextStyle&, double scale);
 /// Where to centre a label of `size` pixels so that it sits just beyond
 /// `tip` in direction `direction` (pixel space), `gap` pixels away.
 Point label_beyond(const Point& tip, const Point& direction, const Point& size, double gap);
+/// What label_beyond works out from the direction and the box's size alone:
+/// the unit direction and the distance from the box's centre to its edge
+/// along it, for placing one box at many gaps (the label placer's spots).
+struct LabelRay {
+  Point direction;
+  double reach;
+};
+LabelRay label_ray(const Point& direction, const Point& size);
+/// label_beyond(tip, direction, size, gap), the same to the bit, with ray = label_ray(direction, size).
+inline Point label_beyond(const Point& tip, const LabelRay& ray, double gap) {
+  return tip + (gap + ray.reach) * ray.direction;
+}
 
 }  // namespace vibra::render

@@ -2,6 +2,8 @@
 #include "render/labels/label_placer.hpp"
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cmath>
 #include <span>
 
@@ -147,11 +149,18 @@ std::vector<PlacedLabel> place_labels(Canvas& canvas, const std::vector<LabelReq
     const Point size = label_size(canvas, request);
     const double n = request.direction.norm();
     const Point preferred = n > 1e-12 ? Point(request.direction / n) : Point(1, 0);
+    // Each turn's direction and reach worked out once, not for each of its
+    // distances: the same numbers, as the sines and cosines were a twentieth of a frame.
+    std::array<std::optional<LabelRay>, 2 * kTurns> rays;
     auto box_for = [&](const Candidate& c) {
-      const double angle = c.turn * M_PI / kTurns;
-      const Point d(std::cos(angle) * preferred.x() + std::sin(angle) * preferred.y(),
-                    -std::sin(angle) * preferred.x() + std::cos(angle) * preferred.y());
-      return box_at(label_beyond(request.anchor, d, size, request.gap + c.steps * kStep * scale), size);
+      std::optional<LabelRay>& ray = rays.at(size_t(c.turn + kTurns - 1));
+      if (!ray) {
+        const double angle = c.turn * M_PI / kTurns;
+        const Point d(std::cos(angle) * preferred.x() + std::sin(angle) * preferred.y(),
+                      -std::sin(angle) * preferred.x() + std::cos(angle) * preferred.y());
+        ray = label_ray(d, size);
+      }
+      return box_at(label_beyond(request.anchor, *ray, request.gap + c.steps * kStep * scale), size);
     };
     // The first free spot, cheapest first; where none is, the least covered.
     const Candidate* chosen = nullptr;

@@ -13,8 +13,8 @@
 using namespace vibra::render;
 
 namespace {
-constexpr double kCell = 2, kClearance = 1.5;
-const PixelRect kArea{0, 0, 320, 180};
+constexpr double kMarksCell = 2, kMarksClearance = 1.5;
+const PixelRect kMarksArea{0, 0, 320, 180};
 
 /// An outline of `count` random strokes and boxes, the same for a seed.
 Outline random_outline(unsigned seed, int count) {
@@ -34,8 +34,8 @@ Outline random_outline(unsigned seed, int count) {
 
 /// Whether two grids have the same taken cells, cell by cell.
 bool same_cells_taken(const OccupancyGrid& a, const OccupancyGrid& b) {
-  for (double y = kArea.y + 0.5; y < kArea.y + kArea.h; y += kCell)
-    for (double x = kArea.x + 0.5; x < kArea.x + kArea.w; x += kCell)
+  for (double y = kMarksArea.y + 0.5; y < kMarksArea.y + kMarksArea.h; y += kMarksCell)
+    for (double x = kMarksArea.x + 0.5; x < kMarksArea.x + kMarksArea.w; x += kMarksCell)
       if (a.taken({x, y, 0.5, 0.5}) != b.taken({x, y, 0.5, 0.5})) return false;
   return true;
 }
@@ -45,20 +45,20 @@ TEST_CASE("static marks: a grid of the static shapes copied, the rest marked, is
   Outline outline = random_outline(3, 30);
   const Outline moving = random_outline(4, 12);
   outline.append(moving);
-  OccupancyGrid every(kArea, kCell, kClearance);
+  OccupancyGrid every(kMarksArea, kMarksCell, kMarksClearance);
   for (const OutlineShape& shape : outline.shapes()) every.add(shape);
 
   StaticMarks marks;
   marks.reset(30);
   for (int frame = 0; frame < 2; ++frame) {  // marked at the first frame, copied at the second
-    OccupancyGrid grid(kArea, kCell, kClearance);
+    OccupancyGrid grid(kMarksArea, kMarksCell, kMarksClearance);
     const size_t first = marks.mark_into(grid, outline);
     REQUIRE(first == 30);
     for (size_t i = first; i < outline.shapes().size(); ++i) grid.add(outline.shapes()[i]);
     CHECK(same_cells_taken(grid, every));
   }
   // Only the static shapes came from the marks: without the moving ones, cells are missing.
-  OccupancyGrid static_only(kArea, kCell, kClearance);
+  OccupancyGrid static_only(kMarksArea, kMarksCell, kMarksClearance);
   marks.mark_into(static_only, outline);
   CHECK_FALSE(same_cells_taken(static_only, every));
 }
@@ -68,24 +68,24 @@ TEST_CASE("static marks: another area or scale is marked afresh, an outline shor
   const Outline outline = random_outline(5, 20);
   StaticMarks marks;
   marks.reset(20);
-  OccupancyGrid small(kArea, kCell, kClearance);
+  OccupancyGrid small(kMarksArea, kMarksCell, kMarksClearance);
   REQUIRE(marks.mark_into(small, outline) == 20);
   const PixelRect wider{0, 0, 640, 360};
-  OccupancyGrid large(wider, 2 * kCell, 2 * kClearance), expected(wider, 2 * kCell, 2 * kClearance);
+  OccupancyGrid large(wider, 2 * kMarksCell, 2 * kMarksClearance), expected(wider, 2 * kMarksCell, 2 * kMarksClearance);
   REQUIRE(marks.mark_into(large, outline) == 20);
   for (const OutlineShape& shape : outline.shapes()) expected.add(shape);
-  for (double y = 1; y < wider.h; y += 2 * kCell)
-    for (double x = 1; x < wider.w; x += 2 * kCell) REQUIRE(large.taken({x, y, 1, 1}) == expected.taken({x, y, 1, 1}));
+  for (double y = 1; y < wider.h; y += 2 * kMarksCell)
+    for (double x = 1; x < wider.w; x += 2 * kMarksCell) REQUIRE(large.taken({x, y, 1, 1}) == expected.taken({x, y, 1, 1}));
 
-  OccupancyGrid untouched(kArea, kCell, kClearance);
+  OccupancyGrid untouched(kMarksArea, kMarksCell, kMarksClearance);
   CHECK(marks.mark_into(untouched, random_outline(5, 10)) == 0);
-  CHECK(untouched.taken(kArea) == 0);
+  CHECK(untouched.taken(kMarksArea) == 0);
   marks.reset(0);
   CHECK(marks.mark_into(untouched, outline) == 0);
 }
 
 TEST_CASE("occupancy grid: free() says taken() == 0, for placed boxes and marked cells alike", "[labels]") {
-  OccupancyGrid grid(kArea, kCell, kClearance);
+  OccupancyGrid grid(kMarksArea, kMarksCell, kMarksClearance);
   const Outline outline = random_outline(6, 15);
   for (const OutlineShape& shape : outline.shapes()) grid.add(shape);
   grid.add_box({100, 60, 30, 12});
@@ -151,15 +151,15 @@ TEST_CASE("occupancy grid: shapes sharing a path are marked once, the same cells
       default: path(2, {a, b}, false), path(1, {a, Point(b.x() + 1e-12, b.y())}, false); break;
     }
   }
-  OccupancyGrid together(kArea, kCell, kClearance), alone(kArea, kCell, kClearance);
+  OccupancyGrid together(kMarksArea, kMarksCell, kMarksClearance), alone(kMarksArea, kMarksCell, kMarksClearance);
   together.add_shapes(shapes, 3);
   for (size_t i = 3; i < shapes.size(); ++i) alone.add(shapes[i]);
   CHECK(same_cells_taken(together, alone));
   // Without its edges a lone shape marks only its inside.
-  OccupancyGrid inside(kArea, kCell, kClearance);
+  OccupancyGrid inside(kMarksArea, kMarksCell, kMarksClearance);
   inside.add(shapes[0], false);
-  OccupancyGrid whole(kArea, kCell, kClearance);
+  OccupancyGrid whole(kMarksArea, kMarksCell, kMarksClearance);
   whole.add(shapes[0]);
-  CHECK(inside.taken(kArea) > 0);
-  CHECK(inside.taken(kArea) < whole.taken(kArea));
+  CHECK(inside.taken(kMarksArea) > 0);
+  CHECK(inside.taken(kMarksArea) < whole.taken(kMarksArea));
 }
