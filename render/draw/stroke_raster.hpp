@@ -25,7 +25,9 @@ namespace vibra::render {
 /// starts afresh at each subpath, and a closed outline's last dash runs on
 /// into its first. A pixel's coverage depends only on the segments near it,
 /// never on the clip, so a curve stroked strip by strip is the whole curve.
-bool raster_stroke(cairo_t* cr);
+/// `scalar`: every pixel one at a time, as on a processor without AVX2 (the
+/// vector loops' check: the same bytes).
+bool raster_stroke(cairo_t* cr, bool scalar = false);
 
 /// The length of a path's segment from (ax, ay) to (bx, by) as a stroke
 /// measures it for its dashes: between the points as Cairo keeps them, at

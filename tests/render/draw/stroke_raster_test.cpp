@@ -444,3 +444,36 @@ TEST_CASE("a stroke's mask is blended as source IN mask OVER the pixels, eight a
     }
   }
 }
+
+TEST_CASE("a software stroke's vector loops draw the bytes its one-pixel-at-a-time loops draw", "[render][stroke_raster]") {
+  // Every cap, dashes (pieces with cut ends), closed outlines, translucent
+  // colours over what the strokes before drew, thin and wide lines.
+  std::mt19937 random(20261128);
+  std::uniform_real_distribution<double> x(-20, kSurfaceWidth + 20), y(-20, kSurfaceHeight + 20), unit(0, 1);
+  Surface vector, scalar;
+  int cut = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<std::pair<double, double>> points(2 + random() % 10);
+    for (auto& p : points) p = {x(random), y(random)};
+    const double width = 0.6 + 8 * unit(random), alpha = trial % 3 ? 0.15 + 0.85 * unit(random) : 1;
+    const auto cap = static_cast<cairo_line_cap_t>(random() % 3);
+    const bool closed = random() % 4 == 0, dashed = random() % 2 == 0;
+    const double dashes[] = {1 + 9 * unit(random), 1 + 9 * unit(random)}, offset = 20 * unit(random);
+    const double colour[] = {unit(random), unit(random), unit(random)};
+    cut += dashed || cap != CAIRO_LINE_CAP_ROUND;
+    for (Surface* s : {&vector, &scalar}) {
+      polyline(s->cr, points);
+      if (closed) cairo_close_path(s->cr);
+      cairo_set_line_width(s->cr, width);
+      cairo_set_line_cap(s->cr, cap);
+      cairo_set_dash(s->cr, dashes, dashed ? 2 : 0, offset);
+      cairo_set_source_rgba(s->cr, colour[0], colour[1], colour[2], alpha);
+      REQUIRE(vibra::render::raster_stroke(s->cr, s == &scalar));
+    }
+  }
+  CHECK(cut > 200);
+  int differ = 0;
+  for (int row = 0; row < kSurfaceHeight; ++row)
+    for (int column = 0; column < kSurfaceWidth; ++column) differ += vector.at(column, row) != scalar.at(column, row);
+  CHECK(differ == 0);
+}
