@@ -136,17 +136,36 @@ void OccupancyGrid::mark_segment(const Point& a, const Point& b, double reach) {
 
 void OccupancyGrid::mark_polygon(const std::vector<Point>& polygon) {
   // Even-odd scanlines through the cells' centres; the edges are marked as
-  // segments, so a cell the polygon only grazes is taken too.
+  // segments, so a cell the polygon only grazes is taken too. An edge (q, p)
+  // crosses the line y when exactly one end is above it: y in [low, high) of
+  // its ends. The edges are swept in order of their low ends, so a row looks
+  // only at those crossing it (a road's outline has an edge a pixel column).
+  struct Edge {
+    double low, high;
+    size_t p, q;  ///< polygon[i] and the point before it, as the crossing's formula takes them
+  };
+  std::vector<Edge> edges;
+  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const double a = polygon[i].y(), b = polygon[j].y();
+    if (std::isfinite(a) && std::isfinite(b) && a != b) edges.push_back({std::min(a, b), std::max(a, b), i, j});
+  }
+  if (edges.empty()) return;
+  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.low < b.low; });
   double top = 1e300, bottom = -1e300;
   for (const Point& p : polygon) top = std::min(top, p.y()), bottom = std::max(bottom, p.y());
   const int first = clamped_floor((top - area_.y) / cell_, 0, rows_);
   const int last = clamped_floor((bottom - area_.y) / cell_, -1, rows_ - 1);
+  std::vector<size_t> active;  // indices into edges whose low end is at or above the row
+  std::vector<double> xs;
+  size_t next = 0;
   for (int row = first; row <= last; ++row) {
     const double y = area_.y + (row + 0.5) * cell_;
-    std::vector<double> xs;
-    for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-      const Point &p = polygon[i], &q = polygon[j];
-      if ((p.y() > y) != (q.y() > y)) xs.push_back(p.x() + (y - p.y()) * (q.x() - p.x()) / (q.y() - p.y()));
+    for (; next < edges.size() && edges[next].low <= y; ++next) active.push_back(next);
+    std::erase_if(active, [&](size_t e) { return edges[e].high <= y; });  // y below the edge: never again
+    xs.clear();
+    for (size_t e : active) {
+      const Point &p = polygon[edges[e].p], &q = polygon[edges[e].q];
+      xs.push_back(p.x() + (y - p.y()) * (q.x() - p.x()) / (q.y() - p.y()));
     }
     std::sort(xs.begin(), xs.end());
     for (size_t k = 0; k + 1 < xs.size(); k += 2) {

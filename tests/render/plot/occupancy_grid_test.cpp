@@ -2,6 +2,7 @@
 // which cells a stroke takes, against the definition cell by cell, and
 // placed labels' boxes counted, and a box's count the sum of its cells'.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -94,4 +95,51 @@ TEST_CASE("occupancy grid: a box's count is the sum of its cells', across every 
       INFO("columns " << first << " to " << last);
       CHECK(grid.taken(box) == expected);
     }
+}
+
+TEST_CASE("occupancy grid: a polygon's inside takes, on each row, the cells from each odd crossing to the next",
+          "[labels]") {
+  // Even-odd along each row's centre line: an edge crosses it when one end is
+  // above and the other not; the cells holding the crossings are taken, and
+  // all between. Concave, crossing themselves, with level edges, and a road
+  // (a point a column, down to a flat bottom), partly outside the grid.
+  const int columns = int(std::ceil(kArea.w / kCell)), rows = int(std::ceil(kArea.h / kCell));
+  std::mt19937 random(21);
+  std::uniform_real_distribution<double> x(-30, 340), y(0, 240), unit(0, 1);
+  for (int trial = 0; trial < 120; ++trial) {
+    std::vector<Point> polygon;
+    if (trial % 4 == 3) {
+      for (double px = -20; px <= 330; px += 1 + 2 * unit(random)) polygon.emplace_back(px, 120 + 30 * std::sin(px / 17));
+      polygon.emplace_back(polygon.back().x(), 230), polygon.emplace_back(polygon.front().x(), 230);
+    } else {
+      // Half the corners on a row's centre line, where an edge starts or ends exactly on the row.
+      auto on_a_row = [&](double v) { return kArea.y + (std::floor((v - kArea.y) / kCell) + 0.5) * kCell; };
+      for (int k = 3 + int(random() % 9); k > 0; --k)
+        polygon.emplace_back(x(random), trial % 4 == 2 && k % 2 ? on_a_row(150) : k % 2 ? on_a_row(y(random)) : y(random));
+    }
+    OutlineShape shape;
+    shape.polygons = {polygon};
+    shape.bounds = {-40, -10, 400, 270};
+    OccupancyGrid grid(kArea, kCell, kClearance);
+    grid.add(shape, false);
+    int mismatched = 0;
+    for (int row = 0; row < rows; ++row) {
+      const double cy = kArea.y + (row + 0.5) * kCell;
+      std::vector<double> crossings;
+      for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+        const Point &p = polygon[i], &q = polygon[j];
+        if ((p.y() > cy) != (q.y() > cy)) crossings.push_back(p.x() + (cy - p.y()) * (q.x() - p.x()) / (q.y() - p.y()));
+      }
+      std::sort(crossings.begin(), crossings.end());
+      for (int column = 0; column < columns; ++column) {
+        bool expected = false;
+        for (size_t k = 0; k + 1 < crossings.size(); k += 2)
+          expected |= std::floor((crossings[k] - kArea.x) / kCell) <= column &&
+                      column <= std::floor((crossings[k + 1] - kArea.x) / kCell);
+        mismatched += expected != (grid.taken(inside_cell(column, row)) > 0);
+      }
+    }
+    INFO("trial " << trial << ", " << polygon.size() << " points");
+    CHECK(mismatched == 0);
+  }
 }
