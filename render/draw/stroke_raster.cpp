@@ -10,6 +10,9 @@
 #include <vector>
 #if defined(__x86_64__)
 #include <immintrin.h>
+#define AVX2_OR_NULL(loop) loop
+#else
+#define AVX2_OR_NULL(loop) nullptr  // no such loop off x86-64
 #endif
 
 namespace vibra::render {
@@ -407,6 +410,23 @@ void cover_plain_row_scalar(const Piece& p, const PieceGeometry& g, int row, int
 }
 
 #if defined(__x86_64__)
+/// Cells [column, column + 4) raised to the masks of four coverages
+/// (mask_of's float rounding), those past `last` (at most 3, which Coverage
+/// keeps room for) left as they were.
+[[gnu::target("avx2")]] inline void raise_cells(std::uint8_t* cells, int column, int last, __m256d coverage) {
+  const __m128 scaled = _mm_mul_ps(_mm256_cvtpd_ps(coverage), _mm_set1_ps(255));
+  const __m128i masks = _mm_cvttps_epi32(_mm_add_ps(scaled, _mm_set1_ps(0.5f)));
+  const __m128i bytes = _mm_packus_epi16(_mm_packus_epi32(masks, masks), _mm_setzero_si128());
+  const int valid = std::min(4, last - column + 1);
+  const std::uint32_t keep = valid == 4 ? 0xffffffffu : (std::uint32_t(1) << (8 * valid)) - 1;
+  std::uint32_t old_cells;
+  std::memcpy(&old_cells, cells + column, 4);
+  const __m128i ours = _mm_and_si128(bytes, _mm_cvtsi32_si128(int(keep)));
+  const __m128i raised = _mm_max_epu8(ours, _mm_cvtsi32_si128(int(old_cells)));
+  const auto merged = static_cast<std::uint32_t>(_mm_cvtsi128_si32(raised));
+  std::memcpy(cells + column, &merged, 4);
+}
+
 /// The same, four pixels at a time (the last group masked: most rows of a
 /// curve's piece are a few pixels), with the same operations in the same
 /// order (IEEE arithmetic, no fused multiply-add), so the same masks to the
@@ -419,7 +439,6 @@ void cover_plain_row_scalar(const Piece& p, const PieceGeometry& g, int row, int
                 zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1), length = _mm256_set1_pd(g.length),
                 round_end = _mm256_set1_pd(g.round_end), edge = _mm256_set1_pd(g.h + 0.5),
                 sign = _mm256_set1_pd(-0.0);
-  const __m128 scale = _mm_set1_ps(255), rounding = _mm_set1_ps(0.5f);
   for (int column = first; column <= last; column += 4) {
     const __m256d px = _mm256_sub_pd(_mm256_add_pd(_mm256_cvtepi32_pd(_mm_setr_epi32(column, column + 1, column + 2, column + 3)), half), ax);
     const __m256d along = _mm256_add_pd(_mm256_mul_pd(px, ux), py_uy);
@@ -429,28 +448,21 @@ void cover_plain_row_scalar(const Piece& p, const PieceGeometry& g, int row, int
         _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(beyond, beyond), _mm256_mul_pd(across, across))), round_end);
     const __m256d distance = _mm256_blendv_pd(_mm256_andnot_pd(sign, across), round, _mm256_cmp_pd(beyond, zero, _CMP_GT_OQ));
     const __m256d coverage = _mm256_min_pd(_mm256_max_pd(_mm256_sub_pd(edge, distance), zero), one);
-    const __m128i masks = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(_mm256_cvtpd_ps(coverage), scale), rounding));
-    const __m128i bytes = _mm_packus_epi16(_mm_packus_epi32(masks, masks), _mm_setzero_si128());
-    // Past `last` (at most 3 cells, which Coverage keeps room for) each cell keeps its value.
-    const int valid = std::min(4, last - column + 1);
-    const std::uint32_t keep = valid == 4 ? 0xffffffffu : (std::uint32_t(1) << (8 * valid)) - 1;
-    std::uint32_t old_cells;
-    std::memcpy(&old_cells, cells + column, 4);
-    const __m128i ours = _mm_and_si128(bytes, _mm_cvtsi32_si128(int(keep)));
-    const std::uint32_t merged = static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_max_epu8(ours, _mm_cvtsi32_si128(int(old_cells)))));
-    std::memcpy(cells + column, &merged, 4);
+    raise_cells(cells, column, last, coverage);
   }
 }
 #endif
 
 using CoverRow = void (*)(const Piece&, const PieceGeometry&, int, int, int, std::uint8_t*);
 
-CoverRow fastest_cover_plain_row() {
+/// The AVX2 loop where the processor has it, else the scalar one (the same bytes either way).
+template <class Loop>
+Loop fastest([[maybe_unused]] Loop avx2, Loop scalar) {
 #if defined(__x86_64__)
   __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx2")) return cover_plain_row_avx2;
+  if (__builtin_cpu_supports("avx2")) return avx2;
 #endif
-  return cover_plain_row_scalar;
+  return scalar;
 }
 
 void cover_plain_row(const Piece& p, const PieceGeometry& g, int row, int first, int last, std::uint8_t* cells);
@@ -510,9 +522,9 @@ void cover_cut_row_scalar(const Piece& p, const PieceGeometry& g, int row, int f
                 zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1), length = _mm256_set1_pd(g.length),
                 round_end = _mm256_set1_pd(g.round_end), edge = _mm256_set1_pd(g.h + 0.5),
                 sign = _mm256_set1_pd(-0.0), length_less_half = _mm256_set1_pd(g.length - 0.5);
-  const __m128 scale = _mm_set1_ps(255), rounding = _mm_set1_ps(0.5f);
   for (int column = first; column <= last; column += 4) {
-    const __m256d centre = _mm256_add_pd(_mm256_cvtepi32_pd(_mm_setr_epi32(column, column + 1, column + 2, column + 3)), half);
+    const __m128i columns = _mm_setr_epi32(column, column + 1, column + 2, column + 3);
+    const __m256d centre = _mm256_add_pd(_mm256_cvtepi32_pd(columns), half);
     const __m256d px = _mm256_sub_pd(centre, ax);
     const __m256d along = _mm256_add_pd(_mm256_mul_pd(px, ux), py_uy);
     const __m256d across = _mm256_sub_pd(_mm256_mul_pd(px, uy), py_ux);
@@ -524,7 +536,8 @@ void cover_cut_row_scalar(const Piece& p, const PieceGeometry& g, int row, int f
     if (p.cut_a) {
       end = _mm256_blendv_pd(end, _mm256_add_pd(along, half), before);
     } else {
-      const __m256d round = _mm256_add_pd(_mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(along, along), across2)), round_end);
+      const __m256d squared = _mm256_add_pd(_mm256_mul_pd(along, along), across2);
+      const __m256d round = _mm256_add_pd(_mm256_sqrt_pd(squared), round_end);
       distance = _mm256_blendv_pd(distance, round, before);
       end = _mm256_blendv_pd(end, fences, before);
     }
@@ -537,42 +550,28 @@ void cover_cut_row_scalar(const Piece& p, const PieceGeometry& g, int row, int f
       end = _mm256_blendv_pd(end, fences, beyond);
     }
     if (p.cut_a)
-      end = _mm256_blendv_pd(end, _mm256_min_pd(_mm256_add_pd(along, half), end), _mm256_cmp_pd(along, half, _CMP_LT_OQ));
+      end = _mm256_blendv_pd(end, _mm256_min_pd(_mm256_add_pd(along, half), end),
+                             _mm256_cmp_pd(along, half, _CMP_LT_OQ));
     if (p.cut_b)
       end = _mm256_blendv_pd(end, _mm256_min_pd(_mm256_add_pd(_mm256_sub_pd(length, along), half), end),
                              _mm256_cmp_pd(along, length_less_half, _CMP_GT_OQ));
     const __m256d value = _mm256_mul_pd(clamp01(_mm256_sub_pd(edge, distance)), clamp01(end));
-    const __m128i masks = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(_mm256_cvtpd_ps(value), scale), rounding));
-    const __m128i bytes = _mm_packus_epi16(_mm_packus_epi32(masks, masks), _mm_setzero_si128());
-    const int valid = std::min(4, last - column + 1);
-    const std::uint32_t keep = valid == 4 ? 0xffffffffu : (std::uint32_t(1) << (8 * valid)) - 1;
-    std::uint32_t old_cells;
-    std::memcpy(&old_cells, cells + column, 4);
-    const __m128i ours = _mm_and_si128(bytes, _mm_cvtsi32_si128(int(keep)));
-    const std::uint32_t merged = static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_max_epu8(ours, _mm_cvtsi32_si128(int(old_cells)))));
-    std::memcpy(cells + column, &merged, 4);
+    raise_cells(cells, column, last, value);
   }
 }
 #endif
 
-CoverRow fastest_cover_cut_row() {
-#if defined(__x86_64__)
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx2")) return cover_cut_row_avx2;
-#endif
-  return cover_cut_row_scalar;
-}
 
 /// Whether the scalar loops draw (raster_stroke's check of the vector ones).
 thread_local bool one_pixel_at_a_time = false;
 
 void cover_plain_row(const Piece& p, const PieceGeometry& g, int row, int first, int last, std::uint8_t* cells) {
-  static const CoverRow cover_row = fastest_cover_plain_row();
+  static const CoverRow cover_row = fastest<CoverRow>(AVX2_OR_NULL(cover_plain_row_avx2), cover_plain_row_scalar);
   (one_pixel_at_a_time ? cover_plain_row_scalar : cover_row)(p, g, row, first, last, cells);
 }
 
 void cover_cut_row(const Piece& p, const PieceGeometry& g, int row, int first, int last, std::uint8_t* cells) {
-  static const CoverRow cover_row = fastest_cover_cut_row();
+  static const CoverRow cover_row = fastest<CoverRow>(AVX2_OR_NULL(cover_cut_row_avx2), cover_cut_row_scalar);
   (one_pixel_at_a_time ? cover_cut_row_scalar : cover_row)(p, g, row, first, last, cells);
 }
 
@@ -632,7 +631,8 @@ void blend_span_scalar(std::uint32_t* pixels, std::uint8_t* masks, int first, in
 [[gnu::target("avx2")]] inline __m256i times_alpha8(__m256i x, __m256i a) {
   const __m256i low = _mm256_set1_epi32(0xff00ff), bias = _mm256_set1_epi32(0x800080);
   __m256i rb = _mm256_add_epi32(_mm256_mullo_epi32(_mm256_and_si256(x, low), a), bias);
-  rb = _mm256_and_si256(_mm256_srli_epi32(_mm256_add_epi32(rb, _mm256_and_si256(_mm256_srli_epi32(rb, 8), low)), 8), low);
+  rb = _mm256_add_epi32(rb, _mm256_and_si256(_mm256_srli_epi32(rb, 8), low));
+  rb = _mm256_and_si256(_mm256_srli_epi32(rb, 8), low);
   __m256i ag = _mm256_add_epi32(_mm256_mullo_epi32(_mm256_and_si256(_mm256_srli_epi32(x, 8), low), a), bias);
   ag = _mm256_and_si256(_mm256_add_epi32(ag, _mm256_and_si256(_mm256_srli_epi32(ag, 8), low)),
                         _mm256_set1_epi32(int(0xff00ff00u)));
@@ -664,19 +664,12 @@ void blend_span_scalar(std::uint32_t* pixels, std::uint8_t* masks, int first, in
 
 using BlendSpan = void (*)(std::uint32_t*, std::uint8_t*, int, int, std::uint32_t);
 
-BlendSpan fastest_blend_span() {
-#if defined(__x86_64__)
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx2")) return blend_span_avx2;
-#endif
-  return blend_span_scalar;
-}
 }  // namespace
 
 void blend_span(std::uint32_t* pixels, std::uint8_t* masks, int first, int last, std::uint32_t source,
                 bool one_at_a_time) {
-  static const BlendSpan fastest = fastest_blend_span();
-  (one_at_a_time ? blend_span_scalar : fastest)(pixels, masks, first, last, source);
+  static const BlendSpan loop = fastest<BlendSpan>(AVX2_OR_NULL(blend_span_avx2), blend_span_scalar);
+  (one_at_a_time ? blend_span_scalar : loop)(pixels, masks, first, last, source);
 }
 
 double stroked_distance(double ax, double ay, double bx, double by) {
