@@ -1,6 +1,7 @@
 // The bouncing ball (section 1.12.9, Exercise 1.24): impacts located inside
 // the step against the closed-form impact times, speeds and apex heights.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -109,6 +110,21 @@ TEST_CASE("bouncing ball: a start on the ground", "[models][bouncing-ball]") {
   CHECK(r.rows[0][2] == Approx(1));
   REQUIRE(r.impacts.size() >= 1);
   CHECK(r.impacts[0].t == Approx(0.2).epsilon(1e-9));
+}
+
+TEST_CASE("bouncing ball thrown up: its height bound is the apex h0 + V^2/(2g), its period the fall and rise from it",
+          "[models][bouncing-ball]") {
+  // Thrown up at 3 m/s from 1 m with g = 10: the apex is 1 + 9/20 = 1.45 m,
+  // reached at t = 0.3; a fall from there and the rise back take
+  // 2 sqrt(2 * 1.45 / 10), and the run's default length is 6 of them.
+  const double apex = 1.45, period = 2 * std::sqrt(2 * apex / 10);
+  auto run = trajectory("bouncing-ball", {"h0=1", "V=3", "g=10", "dt=0.001"});
+  CHECK(run->info().amplitude_bound == Approx(apex).epsilon(1e-12));
+  CHECK(run->info().mesh.T == Approx(6 * period).margin(0.001));  // within a step: T is a whole number of them
+  double highest = 0;
+  for (const auto& row : rows(*run)) highest = std::max(highest, row[1]);
+  CHECK(highest == Approx(apex).epsilon(1e-6));  // the rows reach the bound and no higher
+  CHECK(highest <= apex + 1e-12);
 }
 
 TEST_CASE("bouncing ball: first-order schemes and bad keys are refused", "[models][bouncing-ball]") {

@@ -185,3 +185,18 @@ TEST_CASE("runs compared on one page: a curve per run in each panel, a legend ke
   CHECK(count(json, "\"key\":\"euler-cromer\"") == 3);
   CHECK(count(json, "\"key\":\"dopri5\"") == 3);
 }
+
+TEST_CASE("the page's time axis runs from the earliest start to the latest end of its series", "[page]") {
+  // Two panels whose series cover different spans: the page's plots share
+  // one time axis, from 0.5 (the second panel's start) to 5 (the first's end).
+  std::vector<PagePanel> panels(2);
+  PageSeriesData late(1, 5, 0.5, 9), early(0.5, 3, 0.25, 11);
+  for (int i = 0; i < 9; ++i) late.add(i);
+  for (int i = 0; i < 11; ++i) early.add(-i);
+  panels[0].series.push_back({"u", "run", render::palette::blue, false, std::move(late)});
+  panels[1].series.push_back({"v", "run", render::palette::blue, false, std::move(early)});
+  const std::string json = render::page_plots_json(panels, render::kPagePlotBudgetBytes);
+  CHECK(json.rfind("{\"t0\":0.5,\"t1\":5,", 0) == 0);
+  // No series: the axis is [0, 1], not an empty or inverted one.
+  CHECK(render::page_plots_json({}, render::kPagePlotBudgetBytes).rfind("{\"t0\":0,\"t1\":1,", 0) == 0);
+}
