@@ -134,6 +134,29 @@ TEST_CASE("the period track shows the last period completed by each time, the cr
   CHECK(std::isnan(track.at(std::array<double, 3>{0.99, -0.06, w1})));
 }
 
+TEST_CASE("the period panel of a compared run reads its own samples: the NaN rows between them add no crossing",
+          "[panels]") {
+  // A coarse member of a comparison is NaN at the fine run's times between
+  // its own samples. Its periods must be those of its samples alone: a NaN
+  // taken as a sample would hide the sign change across it, and the crossing.
+  // u = sin(t), v = cos(t) every 0.1, a NaN row between each two.
+  scenes::PeriodTrack with_gaps(1, 2), samples_only(1, 2);
+  double last = NAN;
+  for (int k = 0; k <= 2 * 260; ++k) {
+    const double t = 0.05 * k;
+    const std::array<double, 3> row = k % 2 ? std::array<double, 3>{t, NAN, NAN}
+                                            : std::array<double, 3>{t, std::sin(t), std::cos(t)};
+    const double P = with_gaps.at(row);
+    if (k % 2) continue;
+    const double expected = samples_only.at(row);
+    INFO("t = " << t);
+    if (std::isnan(expected)) CHECK(std::isnan(P));
+    else CHECK(P == expected);
+    last = P;
+  }
+  CHECK(last == Approx(2 * M_PI).epsilon(1e-3));  // 13 time units: crossings at 2 pi and 4 pi
+}
+
 TEST_CASE("an unknown panel is refused with the closest name, on the command line too", "[panels]") {
   const auto info = test::trajectory("undamped", {"periods=1"})->info();
   CHECK_THROWS_WITH(quantity_panel("enrgy", info, kBlue, "", kRed),
