@@ -134,9 +134,11 @@ void SystemScene::prepare() {
 
 render::WorldView SystemScene::view_at(std::span<const double> row) {
   prepare();
-  if (std::optional<FollowingView> moving = diagram_->view_at(row))
-    return render::WorldView(moving->centre, moving->sizes, view_area_);
-  return *view_;
+  return view_for(diagram_->view_at(row));
+}
+
+render::WorldView SystemScene::view_for(const std::optional<FollowingView>& moving) const {
+  return moving ? render::WorldView(moving->centre, moving->sizes, view_area_) : *view_;
 }
 
 void SystemScene::draw_static(render::Canvas& canvas) {
@@ -169,7 +171,7 @@ void SystemScene::draw(render::Canvas& canvas, std::span<const double> row) {
   background_.paint(canvas, progress_to(row));
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i]->draw(canvas, row[0], row, i == time_labels_panel_);
   const std::optional<FollowingView> moving = diagram_->view_at(row);
-  const render::WorldView view = moving ? render::WorldView(moving->centre, moving->sizes, view_area_) : *view_;
+  const render::WorldView view = view_for(moving);
   // Everything in the diagram's part is recorded, so that its labels,
   // placed last, keep off all of it.
   last_frame_ = {};

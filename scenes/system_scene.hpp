@@ -72,6 +72,8 @@ class SystemScene final : public Scene {
  private:
   void prepare();
   void draw_static(render::Canvas&);
+  /// The view through `moving` when the diagram follows its body, else the fixed one.
+  render::WorldView view_for(const std::optional<FollowingView>& moving) const;
   /// The curves drawn so far, for the layer under frame time t.
   StaticLayer::Grow progress_to(std::span<const double> row);
 

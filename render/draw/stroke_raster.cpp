@@ -65,6 +65,7 @@ struct Plan {
   double half_width = 0;
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< the clip in target pixels, [x0, x1) x [y0, y1)
   std::uint32_t source = 0;  ///< the colour as an ARGB32 pixel, premultiplied
+  bool scalar = false;       ///< one pixel at a time (the check of the vector loops)
 };
 
 struct PathDeleter {
@@ -465,9 +466,7 @@ Loop fastest([[maybe_unused]] Loop avx2, Loop scalar) {
   return scalar;
 }
 
-void cover_plain_row(const Piece& p, const PieceGeometry& g, int row, int first, int last, std::uint8_t* cells);
-
-/// One row's pixels of a piece with a cut end or a fence (see cover_plain_row).
+/// One row's pixels of a piece with a cut end or a fence (see cover_plain_row_scalar).
 void cover_cut_row_scalar(const Piece& p, const PieceGeometry& g, int row, int first, int last, std::uint8_t* cells) {
   const double cy = row + 0.5, py = cy - p.a.y;
   auto fence_at = [&](const Fence& f, double px) {
@@ -561,18 +560,12 @@ void cover_cut_row_scalar(const Piece& p, const PieceGeometry& g, int row, int f
 }
 #endif
 
-
-/// Whether the scalar loops draw (raster_stroke's check of the vector ones).
-thread_local bool one_pixel_at_a_time = false;
-
-void cover_plain_row(const Piece& p, const PieceGeometry& g, int row, int first, int last, std::uint8_t* cells) {
-  static const CoverRow cover_row = fastest<CoverRow>(AVX2_OR_NULL(cover_plain_row_avx2), cover_plain_row_scalar);
-  (one_pixel_at_a_time ? cover_plain_row_scalar : cover_row)(p, g, row, first, last, cells);
-}
-
-void cover_cut_row(const Piece& p, const PieceGeometry& g, int row, int first, int last, std::uint8_t* cells) {
-  static const CoverRow cover_row = fastest<CoverRow>(AVX2_OR_NULL(cover_cut_row_avx2), cover_cut_row_scalar);
-  (one_pixel_at_a_time ? cover_cut_row_scalar : cover_row)(p, g, row, first, last, cells);
+/// The row loop for a piece: plain or cut, vector or scalar.
+CoverRow cover_row_for(bool plain, bool scalar) {
+  static const CoverRow plain_row = fastest<CoverRow>(AVX2_OR_NULL(cover_plain_row_avx2), cover_plain_row_scalar);
+  static const CoverRow cut_row = fastest<CoverRow>(AVX2_OR_NULL(cover_cut_row_avx2), cover_cut_row_scalar);
+  if (scalar) return plain ? cover_plain_row_scalar : cover_cut_row_scalar;
+  return plain ? plain_row : cut_row;
 }
 
 /// Raises each pixel's coverage to the piece's: one minus how far the pixel's
@@ -582,6 +575,7 @@ void cover(const Piece& p, const Plan& plan, Coverage& coverage) {
   const int width = plan.x1 - plan.x0;
   const PieceGeometry g(p, plan.half_width);
   const bool plain = !p.cut_a && !p.cut_b && !p.start.up && !p.end.up;
+  const CoverRow cover_row = cover_row_for(plain, plan.scalar);
   // Pixel centres (row + 0.5) within reach of the segment's rows; none when it is beyond the clip.
   const int row_first = ceil_within(std::min(p.a.y, p.b.y) - g.reach - 0.5, plan.y0, plan.y1);
   const int row_last = floor_within(std::max(p.a.y, p.b.y) + g.reach - 0.5, plan.y0 - 1, plan.y1 - 1);
@@ -597,8 +591,7 @@ void cover(const Piece& p, const Plan& plan, Coverage& coverage) {
     const int r = row - plan.y0;
     std::uint8_t* cells = coverage.cells.data() + std::size_t(r) * width - plan.x0;
     coverage.touch(r, first, last);
-    if (plain) cover_plain_row(p, g, row, first, last, cells);
-    else cover_cut_row(p, g, row, first, last, cells);
+    cover_row(p, g, row, first, last, cells);
   }
 }
 
@@ -609,7 +602,7 @@ void blend(const Plan& plan, Coverage& coverage, cairo_surface_t* target) {
     if (coverage.lo[r] > coverage.hi[r]) continue;
     std::uint8_t* cells = coverage.cells.data() + std::size_t(r) * width - plan.x0;
     auto* row = reinterpret_cast<std::uint32_t*>(data + std::ptrdiff_t(r + plan.y0) * stride);
-    blend_span(row, cells, coverage.lo[r], coverage.hi[r], plan.source, one_pixel_at_a_time);
+    blend_span(row, cells, coverage.lo[r], coverage.hi[r], plan.source, plan.scalar);
     coverage.lo[r] = INT_MAX, coverage.hi[r] = INT_MIN;
   }
   coverage.first_row = INT_MAX, coverage.last_row = INT_MIN;
@@ -678,10 +671,10 @@ double stroked_distance(double ax, double ay, double bx, double by) {
 }
 
 bool raster_stroke(cairo_t* cr, bool scalar) {
-  one_pixel_at_a_time = scalar;
   cairo_surface_t* target = cairo_get_group_target(cr);
   Plan plan;
   if (!plan_stroke(cr, target, plan)) return false;
+  plan.scalar = scalar;
   cairo_new_path(cr);
   if (plan.x1 <= plan.x0 || plan.y1 <= plan.y0 || plan.pieces.empty()) return true;
   thread_local Coverage coverage;

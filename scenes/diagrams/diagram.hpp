@@ -38,9 +38,6 @@ struct LegendEntry {
   std::string formula = {};
 };
 
-/// Widens `world` to be symmetric about the vertical line at `x`, so that a
-/// pendulum's pivot sits on the frame's centre line whichever way it swings
-/// further (the view centres the world box).
 /// A view that follows a body: the world point at its centre and the world
 /// size it shows. The size is given, not taken from a moving box's corners,
 /// so that it stays the same to the last bit from frame to frame: the road's
@@ -51,6 +48,9 @@ struct FollowingView {
   WorldBox box() const { return WorldBox(centre - 0.5 * sizes, centre + 0.5 * sizes); }
 };
 
+/// Widens `world` to be symmetric about the vertical line at `x`, so that a
+/// pendulum's pivot sits on the frame's centre line whichever way it swings
+/// further (the view centres the world box).
 inline void center_horizontally_on(WorldBox& world, double x) {
   const double half = std::max(x - world.min().x(), world.max().x() - x);
   world.extend(Point(x - half, world.min().y()));
