@@ -26,7 +26,7 @@ std::vector<PanelSpec> BumpyRoadDiagram::panels() const {
   forces.series.push_back({"spring −<i>ku</i>", colors_.gravity, [k = vehicle_.k](std::span<const double> r) { return -k * r[1]; }});
   if (vehicle_.b > 0)
     forces.series.push_back({"damper −<i>bu</i>′", colors_.drag, [b = vehicle_.b](std::span<const double> r) { return -b * r[2]; }});
-  return {{"<i>u</i> (m)  body over its rest height", {{"", colors_.bob, column(1)}}},
+  return {{"<i>u</i> (m)  body over the axle, from rest", {{"", colors_.bob, column(1)}}},
           {"road <i>h</i>(<i>st</i>) (m)", {{"", colors_.wire, column(4)}}},
           std::move(forces)};
 }
