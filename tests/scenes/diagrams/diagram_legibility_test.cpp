@@ -140,6 +140,32 @@ TEST_CASE("a diagram with force arrows shows its force key, saying what is drawn
   CHECK(key_texts("rlc", {}).empty());  // a circuit has no force arrows
 }
 
+TEST_CASE("the pendulum's drag arrow says how much longer it is drawn than to scale: D, D ×2, D ×2.5",
+          "[legibility][forces]") {
+  struct Expected {
+    const char* magnification;
+    std::string label, note;  ///< the arrow's label, and what the force key says of it ("" for nothing)
+  };
+  const Expected cases[] = {{"1", "<i>D</i>", ""},
+                            {"2", "<i>D</i> \u00d72", "<i>D</i> drawn \u00d72"},
+                            {"2.5", "<i>D</i> \u00d72.5", "<i>D</i> drawn \u00d72.5"}};
+  for (const Expected& e : cases) {
+    INFO("drag_magnification = " << e.magnification);
+    // Theta = 90 degrees, moving: the drag is large enough to draw an arrow.
+    const DrawingRecord frame =
+        frame_at("pendulum", {{"drag_magnification", e.magnification, "test"}, {"Omega", "60", "test"}}, 0.1);
+    std::vector<std::string> drag_labels, keys;
+    for (const auto& request : frame.labels)
+      if (request.markup.rfind("<i>D</i>", 0) == 0) drag_labels.push_back(request.markup);
+    for (const OutlineShape& s : frame.outline.shapes())
+      if (s.kind == OutlineKind::text && s.name.rfind("= ", 0) == 0) keys.push_back(s.name);
+    CHECK(drag_labels == std::vector<std::string>{e.label});
+    REQUIRE(keys.size() == 1);
+    if (e.note.empty()) CHECK(keys[0].find("drawn") == std::string::npos);
+    else CHECK(keys[0].find(e.note) != std::string::npos);
+  }
+}
+
 TEST_CASE("the force key names each force drawn, in its arrow's colour, clear of the drawing", "[legibility][forces]") {
   auto names_in = [](const std::string& scene, const std::vector<vibra::scenes::Setting>& settings) {
     std::vector<std::string> names;
