@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/math/hermite.hpp"
+#include "core/scheme.hpp"
 #include "core/schemes/adaptive_runge_kutta.hpp"
 
 using namespace vibra;
@@ -112,6 +113,27 @@ double error_inside(double h, double s) {
             : hermite_between<1>(start, system.acceleration(start.u, start.v, 0), end, system.acceleration(end.u, end.v, h), t);
   return std::abs(middle.u[0] - std::cos(t));
 }
+
+/// The error of one step of size h of the pendulum u'' = -sin(u) from
+/// u = 1, v = 0 against the same start taken in 64 steps of h/64 (whose own
+/// error is 64^5 times smaller for a 5th-order step): the step the scheme
+/// keeps, whatever its error estimate says.
+template <class Pair>
+double step_error(double h) {
+  const auto system = SecondOrderSystem<1>::sine(1.0);
+  auto one_step = [&](const Vec<1>& u, const Vec<1>& v, double size) {
+    // Tolerances so loose that the first step is one step, cut to end at `size`.
+    AdaptiveRungeKutta<1, Pair> scheme(system, u, v, 1, StepControl{1e3, 1e3, size, false});
+    scheme.step();
+    REQUIRE(scheme.current().t == size);
+    REQUIRE((scheme.accepted() == 1 && scheme.rejected() == 0));
+    return Y(scheme.current().u[0], scheme.current().v[0]);
+  };
+  const Y coarse = one_step(Vec<1>(1.0), Vec<1>(0.0), h);
+  Y fine(1.0, 0.0);  // a start at t = 0 each time: the pendulum does not depend on t
+  for (int i = 0; i < 64; ++i) fine = one_step(Vec<1>(fine[0]), Vec<1>(fine[1]), h / 64);
+  return (coarse - fine).norm();
+}
 }  // namespace
 
 TEST_CASE("step controller: accepted at err = 1 exactly, rejected just above, the factor's clamps",
@@ -169,4 +191,24 @@ TEST_CASE("dense output inside a step: local error h^6 on u'' = -u for dopri5's 
       CHECK(rkf45 == Approx(64).epsilon(0.1));
     }
   CHECK(error_inside<DormandPrince54>(0.1, 0.25) < 1e-8);
+}
+
+TEST_CASE("the order each adaptive scheme lists is the order of the solution it keeps: a step's error falls as h^(p+1)",
+          "[schemes][adaptive]") {
+  // Both pairs keep their 5th-order solution (local extrapolation): one
+  // step's error is C h^6, so halving h divides it by 2^(p+1) = 64, on the
+  // nonlinear pendulum, where every order condition counts.
+  auto measured_order = [](auto error_of) {
+    double rate = 0;
+    for (double h : {0.4, 0.2, 0.1}) rate = std::log2(error_of(h) / error_of(h / 2)) - 1;
+    return rate;
+  };
+  const double rkf45 = measured_order([](double h) { return step_error<Fehlberg45>(h); });
+  const double dopri5 = measured_order([](double h) { return step_error<DormandPrince54>(h); });
+  INFO("measured orders: rkf45 " << rkf45 << ", dopri5 " << dopri5);
+  CHECK(rkf45 == Approx(scheme_info(Scheme::rkf45).order).margin(0.15));
+  CHECK(dopri5 == Approx(scheme_info(Scheme::dopri5).order).margin(0.15));
+  // The error estimate's lower member is one order less: the controller's exponent 1/(order + 1).
+  CHECK(Fehlberg45::order == scheme_info(Scheme::rkf45).order - 1);
+  CHECK(DormandPrince54::order == scheme_info(Scheme::dopri5).order - 1);
 }
