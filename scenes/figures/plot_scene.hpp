@@ -33,6 +33,8 @@ class PlotScene final : public Scene {
   double sample_interval() const override;
   void draw(render::Canvas&, std::span<const double> row) override;
   void skip(const render::Canvas&, std::span<const double> row) override;
+  /// The title and equation band over the panels (empty without them).
+  const FrameHeading& heading() const { return heading_; }
 
  private:
   void prepare();

@@ -18,6 +18,7 @@
 #include "scenes/overlays/note_callouts.hpp"
 #include "scenes/overlays/run_caption.hpp"
 #include "scenes/config/scene_config.hpp"
+#include "scenes/figures/plot_scene.hpp"
 #include "scenes/scene_factory.hpp"
 #include "scenes/system_scene.hpp"
 #include "test_support.hpp"
@@ -135,6 +136,32 @@ TEST_CASE("a title and the equation take a band across the top and the rest lays
   // Without them, no band.
   Run plain = prepared("pendulum", {});
   CHECK(dynamic_cast<scenes::SystemScene&>(*plain.scene).heading().height() == 0);
+}
+
+TEST_CASE("the plot layout draws its title and equation too, in the band above its panels", "[lecture]") {
+  Run r = prepared("spring", {{"size", "640x360"}, {"layout", "plot"}, {"title", "The undamped spring"},
+                              {"equation", "true"}});
+  auto* scene = dynamic_cast<scenes::PlotScene*>(r.scene.get());
+  REQUIRE(scene);
+  const scenes::FrameHeading& heading = scene->heading();
+  REQUIRE(heading.title_box());
+  REQUIRE(heading.equation_box());
+  render::Canvas canvas = render::Canvas::image(640, 360);
+  scene->draw(canvas, r.rows[r.rows.size() / 3]);
+  canvas.flush();
+  // Ink: pixels much darker than the white background, inside each box.
+  auto dark_pixels = [&](const render::PixelRect& box) {
+    int dark = 0;
+    for (int y = std::max(0, int(box.y)); y < std::min(360, int(box.y + box.h) + 1); ++y)
+      for (int x = std::max(0, int(box.x)); x < std::min(640, int(box.x + box.w) + 1); ++x) {
+        const std::uint8_t* p = canvas.data() + y * canvas.stride() + 4 * x;  // B, G, R, A
+        dark += p[0] + p[1] + p[2] < 3 * 128;
+      }
+    return dark;
+  };
+  CHECK(dark_pixels(*heading.title_box()) > 50);
+  CHECK(dark_pixels(*heading.equation_box()) > 30);
+  CHECK(heading.equation_box()->y + heading.equation_box()->h <= heading.height());
 }
 
 TEST_CASE("an equation wider than the frame shrinks to the room between the margins, down to half its size", "[lecture]") {
