@@ -264,3 +264,37 @@ TEST_CASE("the pendulum's diagram's labels: S, mg and D each read so, at their o
     CHECK(cosine(D) == Approx(0).margin(1e-4));
   }
 }
+
+TEST_CASE("the wire's pull is drawn to its length S times the scale, its room inside the wire reaching near the pivot",
+          "[scene][diagram][labels]") {
+  // No drag, released from 60 degrees: energy gives omega^2 = 2 (cos theta -
+  // cos 60), so S = omega^2 + cos theta = 3 cos theta - 1, largest (2) at the
+  // bottom, where the scale makes it exactly its room, 0.85 of the wire
+  // (PendulumDiagram::kInwardRoom): one unit of force is 0.85 / 2 wire
+  // lengths. Each frame's S arrow, from the bob's rim (where every force
+  // arrow starts) to its tip, is that long at the angle the drawn wire shows.
+  vibra::test::ScratchDirectory dir;
+  for (const char* at : {"0.3", "1.0", "1.6", "1.68"}) {
+    INFO("vibra render pendulum --set alpha=0 --set Theta=60 --at " << at);
+    const auto r = vibra::test::run_vibra(std::string("render pendulum --set alpha=0 --set Theta=60 --layout fbd -q --at ") +
+                                          at + " -o " + (dir / "x.svg"));
+    REQUIRE(r.exit_code == 0);
+    const Svg svg = parse(vibra::test::read_file(dir / "x.svg"));
+    const DrawnArrow* S = nullptr;
+    for (const auto& a : svg.arrows)
+      if (read_name(svg, a) == "S") S = &a;
+    REQUIRE(S);
+    // The wire: the 2.2-wide line that ends at the centre of the circle S starts on.
+    const auto wire = std::find_if(svg.lines.begin(), svg.lines.end(), [&](const auto& l) {
+      const Point2 along{l.first.x - l.second.x, l.first.y - l.second.y}, start{S->from.x - l.second.x, S->from.y - l.second.y};
+      const double cross = along.x * start.y - along.y * start.x;
+      return std::hypot(start.x, start.y) > 1 && std::abs(cross) < 1e-3 * std::hypot(along.x, along.y) * std::hypot(start.x, start.y);
+    });
+    REQUIRE(wire != svg.lines.end());
+    const double length = distance(wire->first, wire->second);
+    const double theta = std::atan2(wire->second.x - wire->first.x, wire->second.y - wire->first.y);  // y down
+    const double S_exact = 3 * std::cos(theta) - 1;
+    INFO("theta " << theta * 180 / M_PI << " deg, S " << S_exact);
+    CHECK(distance(S->tip, S->from) / length == Approx(0.85 / 2 * S_exact).margin(0.004));
+  }
+}
