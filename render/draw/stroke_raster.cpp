@@ -161,8 +161,10 @@ struct DashPhase {
       offset -= dashes[index];
       next();
     }
+    // A dash of no length here is still a dash: add_subpath ends it at the
+    // start, a dot with round caps, as Cairo draws it (it stops skipping
+    // dashes when the offset reaches 0 for that reason).
     remain = dashes[index] - offset;
-    while (remain < kResolution) next_dash();  // a dash that ends within the resolution of the start ends at it
   }
   void next() {
     on = !on;

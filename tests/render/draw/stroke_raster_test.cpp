@@ -123,6 +123,41 @@ TEST_CASE("a software stroke matches Cairo's within antialiasing, for every cap,
   CHECK(drawn == 300);
 }
 
+TEST_CASE("a software stroke's zero-length pieces with round caps are dots, as Cairo draws them",
+          "[render][stroke_raster]") {
+  // A dot (a path to its own start), a polyline through a repeated point and
+  // a dotted line (dashes of length 0, round caps): each zero-length piece
+  // is a disc of the line's width, not a square.
+  const std::vector<std::pair<double, double>> dot = {{40.3, 40.6}, {40.3, 40.6}};
+  const std::vector<std::pair<double, double>> repeated = {{20, 100}, {60.5, 60.5}, {60.5, 60.5}, {100, 100}};
+  for (const double width : {3.0, 8.0, 14.0}) {
+    INFO("width " << width);
+    for (const auto* points : {&dot, &repeated}) {
+      const Difference d = both_ways([&](cairo_t* cr) {
+        polyline(cr, *points);
+        cairo_set_line_width(cr, width);
+        cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+      });
+      INFO(points->size() << " points: ink " << d.ink_a << " against Cairo's " << d.ink_b);
+      CHECK(d.far_off <= 2);
+      CHECK(std::abs(d.ink_a - d.ink_b) <= 0.04 * d.ink_b + 255);
+    }
+    const Difference dotted = both_ways([&](cairo_t* cr) {
+      polyline(cr, {{10, 60}, {150, 60.5}});
+      const double dashes[] = {0, 3 * width};
+      cairo_set_dash(cr, dashes, 2, 0);
+      cairo_set_line_width(cr, width);
+      cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+      cairo_set_source_rgb(cr, 0, 0, 0);
+    });
+    INFO("dotted: ink " << dotted.ink_a << " against Cairo's " << dotted.ink_b);
+    CHECK(dotted.ink_b > 0);
+    CHECK(dotted.far_off <= 4);
+    CHECK(std::abs(dotted.ink_a - dotted.ink_b) <= 0.04 * dotted.ink_b + 255);
+  }
+}
+
 TEST_CASE("a software stroke of smooth curves, as frames have them, is within antialiasing of Cairo's everywhere",
           "[render][stroke_raster]") {
   for (const auto cap : {CAIRO_LINE_CAP_BUTT, CAIRO_LINE_CAP_ROUND, CAIRO_LINE_CAP_SQUARE})
