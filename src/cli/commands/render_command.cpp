@@ -239,7 +239,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--frames-player", o->frames_player, "With -o PAGE.html: PNG frames and a page that steps through them");
   cmd->add_option("--every", o->every, "With -o PAGE.html: the CSV beside the page keeps every K-th step (and the last)")
       ->check(ranged("--every"));
-  cmd->add_option("--at", o->at, "Render one still at this time (a number or an expression, e.g. 3.2 or pi/2): the frame the same "
+  cmd->add_option("--at", o->at,
+                  "Render one still at this time (a number or an expression, e.g. 3.2 or pi/2): the frame the same "
                   "render shows then, with the same --fps and --speed (labels keep spots over frames)");
   add_video_flags(*cmd, o->video);
   cmd->add_option("--segment", o->segment,

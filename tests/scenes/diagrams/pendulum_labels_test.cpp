@@ -276,8 +276,8 @@ TEST_CASE("the wire's pull is drawn to its length S times the scale, its room in
   vibra::test::ScratchDirectory dir;
   for (const char* at : {"0.3", "1.0", "1.6", "1.68"}) {
     INFO("vibra render pendulum --set alpha=0 --set Theta=60 --at " << at);
-    const auto r = vibra::test::run_vibra(std::string("render pendulum --set alpha=0 --set Theta=60 --layout fbd -q --at ") +
-                                          at + " -o " + (dir / "x.svg"));
+    const auto r = vibra::test::run_vibra(
+        std::string("render pendulum --set alpha=0 --set Theta=60 --layout fbd -q --at ") + at + " -o " + (dir / "x.svg"));
     REQUIRE(r.exit_code == 0);
     const Svg svg = parse(vibra::test::read_file(dir / "x.svg"));
     const DrawnArrow* S = nullptr;
@@ -286,9 +286,10 @@ TEST_CASE("the wire's pull is drawn to its length S times the scale, its room in
     REQUIRE(S);
     // The wire: the 2.2-wide line that ends at the centre of the circle S starts on.
     const auto wire = std::find_if(svg.lines.begin(), svg.lines.end(), [&](const auto& l) {
-      const Point2 along{l.first.x - l.second.x, l.first.y - l.second.y}, start{S->from.x - l.second.x, S->from.y - l.second.y};
-      const double cross = along.x * start.y - along.y * start.x;
-      return std::hypot(start.x, start.y) > 1 && std::abs(cross) < 1e-3 * std::hypot(along.x, along.y) * std::hypot(start.x, start.y);
+      const Point2 along{l.first.x - l.second.x, l.first.y - l.second.y};
+      const Point2 start{S->from.x - l.second.x, S->from.y - l.second.y};
+      const double cross = along.x * start.y - along.y * start.x, reach = std::hypot(start.x, start.y);
+      return reach > 1 && std::abs(cross) < 1e-3 * std::hypot(along.x, along.y) * reach;
     });
     REQUIRE(wire != svg.lines.end());
     const double length = distance(wire->first, wire->second);
