@@ -146,6 +146,12 @@ TEST_CASE("lecture --segment renders whole shots into shot files that the join r
   write(dir / "story.toml", changed);
   REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " -q -o " + out).exit_code == 0);
   CHECK_THAT(probe(out, kChapters), Catch::Contains("TAG:title=Fin"));
+  // Nor is a shot rendered at another size, whatever else the shot shares
+  // (the size comes first in what the shot file's tag is made from).
+  REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " --segment 0/2 -q -o " + out).exit_code == 0);
+  REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " --segment 1/2 -q -o " + out).exit_code == 0);
+  REQUIRE(run_vibra("lecture " + (dir / "story.toml") + " --size 160x90 -q -o " + out).exit_code == 0);
+  CHECK(probe(out, "-select_streams v:0 -show_entries stream=width,height") == "width=160\nheight=90\n");
 }
 
 TEST_CASE("a lecture page: the video, its chapters as links, the subtitles as a track", "[lecture][page]") {
