@@ -22,7 +22,8 @@ X264=(-c:v libx264 -preset veryfast -x264-params bframes=0:me=dia:subme=1:8x8dct
 
 source bench/wall_time.sh  # seconds, median, alone, pair
 
-ours() { "$VIBRA" lecture "$STORY" --size "$DIMS" "${OPTIONS[@]}" -q -o "$WORK/lecture.mp4"; }
+lecture() { "$VIBRA" lecture "$STORY" --size "$DIMS" -q "$@"; }  # lecture [OPTIONS...] -o OUT
+ours() { lecture "${OPTIONS[@]}" -o "$WORK/lecture.mp4"; }
 ours >/dev/null 2>&1 || { ours; exit 1; }
 w=${DIMS%x*} h=${DIMS#*x}
 frames=$(ffprobe -v error -count_packets -select_streams v:0 -show_entries stream=nb_read_packets -of csv=p=0 "$WORK/lecture.mp4")
@@ -34,7 +35,7 @@ label="vibra lecture $(basename "$STORY") $DIMS${OPTIONS[*]:+ ${OPTIONS[*]}} ($f
 real_time() { printf "  -> %s: %.1fx real time, %.1f s (median)\n" "$1" "$(echo "$2 * $length / $frames" | bc -l)" \
                  "$(echo "$frames / $2" | bc -l)"; }
 if (( ${#OPTIONS[@]} > 0 )); then  # the options against vibra's default setting, in turn
-  default() { "$VIBRA" lecture "$STORY" --size "$DIMS" -q -o "$WORK/default.mp4"; }
+  default() { lecture -o "$WORK/default.mp4"; }
   PAIR_SAYS="with ${OPTIONS[*]} / the default" pair "$frames" "$label" ours "vibra lecture, the default setting" default
   real_time "with ${OPTIONS[*]}" "$FPS_A"
   real_time "the default" "$FPS_B"
